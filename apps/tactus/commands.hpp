@@ -1,0 +1,13 @@
+// The `tactus` subcommands; each registers itself on the app.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace tactus::cli {
+
+void add_render(CLI::App& app);
+void add_analyze(CLI::App& app);
+void add_onsets(CLI::App& app);
+void add_presets(CLI::App& app);
+
+}  // namespace tactus::cli

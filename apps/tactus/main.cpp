@@ -1,0 +1,25 @@
+// tactus: music -> vibrotactile feedback. Data on stdout, messages on stderr, non-zero exit on
+// any error.
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "commands.hpp"
+
+int main(int argc, char** argv) {
+    CLI::App app{"tactus: turns music into vibrotactile feedback (Birnbaum & Wanderley's system)"};
+    app.require_subcommand(1);
+    tactus::cli::add_render(app);
+    tactus::cli::add_analyze(app);
+    tactus::cli::add_onsets(app);
+    tactus::cli::add_presets(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    } catch (const std::exception& e) {
+        std::cerr << "tactus: error: " << e.what() << '\n';
+        return 1;
+    }
+    return 0;
+}

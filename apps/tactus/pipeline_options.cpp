@@ -1,0 +1,21 @@
+#include "pipeline_options.hpp"
+
+#include "tactus/core/preset.hpp"
+
+namespace tactus::cli {
+
+void PipelineOptions::add_to(CLI::App& command) {
+    command.add_option("--preset,-p", preset, "preset name (see `tactus presets`) or FILE.toml")
+        ->capture_default_str();
+    command.add_option("--set,-s", assignments, "override a parameter: key=value (repeatable)")
+        ->take_all();
+}
+
+Settings PipelineOptions::resolve() const {
+    Settings settings;
+    apply_preset_file(settings, resolve_preset(preset));
+    for (const auto& a : assignments) apply_assignment(settings, a);
+    return settings;
+}
+
+}  // namespace tactus::cli

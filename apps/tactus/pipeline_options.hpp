@@ -1,0 +1,22 @@
+// --preset and --set, shared by every command that runs the pipeline. Resolved (and so
+// validated) before any audio is read.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "tactus/core/params.hpp"
+
+namespace tactus::cli {
+
+struct PipelineOptions {
+    std::string preset = "tfd";
+    std::vector<std::string> assignments;
+
+    void add_to(CLI::App& command);
+    Settings resolve() const;  // throws with a one-line message
+};
+
+}  // namespace tactus::cli

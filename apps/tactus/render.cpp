@@ -1,0 +1,73 @@
+// tactus render IN -o OUT.wav: audio file -> vibration file (float WAV, N identical channels).
+#include <cmath>
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "common.hpp"
+#include "pipeline_options.hpp"
+#include "progress.hpp"
+#include "tactus/io/audio_reader.hpp"
+#include "tactus/io/audio_writer.hpp"
+#include "tactus/io/run_file.hpp"
+
+namespace tactus::cli {
+namespace {
+
+struct RenderOptions {
+    std::string input, output;
+    int channels = 1;
+    PipelineOptions pipeline;
+};
+
+class OnsetCounter final : public FrameObserver {
+public:
+    void on_frame(const Features&, const ControlFrame& control) noexcept override {
+        onsets += control.trigger;
+    }
+    int onsets = 0;
+};
+
+void render(const RenderOptions& o) {
+    const Settings settings = o.pipeline.resolve();
+    refuse_overwriting_input(o.input, o.output);
+    const double sample_rate_hz = AudioReader(o.input).sample_rate_hz();
+    AudioWriter writer(o.output, sample_rate_hz, o.channels);
+    Engine engine(settings);
+    OnsetCounter counter;
+    engine.set_observer(&counter);
+    Progress progress("render");
+    float peak = 0.0f;
+    const RunSummary summary = run_file(
+        o.input, engine,
+        {[&](const float* v, int n) {
+             for (int i = 0; i < n; ++i) peak = std::max(peak, std::abs(v[i]));
+             writer.write(v, n);
+         },
+         [&](int64_t done, int64_t total) { progress.update(done, total); }});
+    writer.commit();
+    std::cerr << fmt::format("{}: {:.2f} s at {:g} Hz, {} pulses, peak {:.1f} dBFS, {} channel(s)\n",
+                             o.output, summary.frames / summary.sample_rate_hz,
+                             summary.sample_rate_hz, counter.onsets,
+                             peak > 0 ? 20 * std::log10(peak) : -INFINITY, o.channels);
+}
+
+}  // namespace
+
+void add_render(CLI::App& app) {
+    auto options = std::make_shared<RenderOptions>();
+    CLI::App* command = app.add_subcommand("render", "render the vibration for an audio file");
+    command->add_option("input", options->input, "audio file (anything libsndfile reads)")
+        ->required()
+        ->check(CLI::ExistingFile);
+    command->add_option("-o,--output", options->output, "vibration file to write (.wav)")
+        ->required();
+    command->add_option("--channels,-c", options->channels, "identical actuator channels")
+        ->check(CLI::Range(1, 64))
+        ->capture_default_str();
+    options->pipeline.add_to(*command);
+    command->callback([options] { render(*options); });
+}
+
+}  // namespace tactus::cli

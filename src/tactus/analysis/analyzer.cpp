@@ -1,0 +1,69 @@
+#include "tactus/analysis/analyzer.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tactus/analysis/brightness.hpp"
+#include "tactus/core/units.hpp"
+
+namespace tactus {
+namespace {
+constexpr double kPitchIntervalMs = 10.0;  // f0 changes slowly: update it every ~10 ms
+}
+
+void Analyzer::prepare(double sample_rate_hz, const Settings& s) {
+    hop_samples_ = std::max<int>(1, static_cast<int>(ms_to_samples(s[P::analysis_hop_ms],
+                                                                   sample_rate_hz)));
+    stft_.prepare(next_power_of_two(ms_to_samples(s[P::analysis_window_ms], sample_rate_hz)),
+                  sample_rate_hz);
+    noisiness_.prepare(stft_.bins(), stft_.bin_hz());
+    loudness_.prepare(sample_rate_hz, s[P::loudness_window_ms]);
+    pitch_.prepare(sample_rate_hz, s[P::pitch_min_hz], std::min(s[P::pitch_max_hz],
+                   0.45 * sample_rate_hz), s[P::pitch_threshold]);
+    onsets_.prepare(sample_rate_hz, hop_samples_,
+                    {s[P::onset_window_ms], s[P::onset_threshold], s[P::onset_ratio],
+                     s[P::onset_history_ms], s[P::onset_min_interval_ms]});
+    history_.prepare(std::max({stft_.window_samples(), pitch_.span_samples(),
+                               onsets_.span_samples()}));
+    pitch_every_frames_ = std::max(1, static_cast<int>(std::lround(
+                                          kPitchIntervalMs * 1e-3 * sample_rate_hz / hop_samples_)));
+    reset();
+}
+
+void Analyzer::reset() noexcept {
+    history_.reset();
+    loudness_.reset();
+    onsets_.reset();
+    features_ = {};
+    filled_ = 0;
+    frames_ = 0;
+}
+
+bool Analyzer::write(const float* samples, int count) noexcept {
+    history_.write(samples, count);
+    loudness_.write(samples, count);
+    filled_ += count;
+    return filled_ >= hop_samples_;
+}
+
+const Features& Analyzer::analyse() noexcept {
+    filled_ = 0;
+    Features& f = features_;
+    f.frame_end_sample = history_.written();
+    f.loudness_db = loudness_.loudness_db();
+    stft_.analyse(history_);
+    f.brightness_hz = spectral_centroid_hz(stft_.magnitudes(), stft_.bin_hz());
+    f.noisiness = noisiness_.compute(stft_.powers());
+    if (frames_++ % pitch_every_frames_ == 0) {
+        const Pitch pitch = pitch_.analyse(history_);
+        f.pitch_hz = pitch.f0_hz;
+        f.pitch_confidence = pitch.confidence;
+    }
+    const OnsetDecision onset = onsets_.analyse(history_);
+    f.onset_odf = onset.odf;
+    f.onset = onset.onset;
+    f.onset_sample = onset.onset ? onset.onset_sample : f.onset_sample;
+    return f;
+}
+
+}  // namespace tactus

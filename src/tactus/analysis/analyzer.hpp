@@ -1,0 +1,42 @@
+// The analysis stage: causal, block-based feature extraction on a fixed hop grid. Input is
+// written in any block size; a frame is analysed each time the input reaches a hop boundary,
+// so the features do not depend on the host's block size.
+#pragma once
+
+#include "tactus/analysis/features.hpp"
+#include "tactus/analysis/loudness.hpp"
+#include "tactus/analysis/noisiness.hpp"
+#include "tactus/analysis/onset_detector.hpp"
+#include "tactus/analysis/pitch_yin.hpp"
+#include "tactus/analysis/sample_history.hpp"
+#include "tactus/analysis/stft_frame.hpp"
+#include "tactus/core/params.hpp"
+
+namespace tactus {
+
+class Analyzer {
+public:
+    void prepare(double sample_rate_hz, const Settings& settings);  // may allocate
+    void reset() noexcept;
+
+    int hop_samples() const { return hop_samples_; }
+    // Samples that can be written before the next frame is due (1 ... hop).
+    int samples_to_next_frame() const noexcept { return hop_samples_ - filled_; }
+    // Writes at most samples_to_next_frame() samples; returns true when a frame is due.
+    bool write(const float* samples, int count) noexcept;
+    // Analyses the frame ending at the newest sample. Call when write() returned true.
+    const Features& analyse() noexcept;
+
+private:
+    SampleHistory history_;
+    StftFrame stft_;
+    Loudness loudness_;
+    Noisiness noisiness_;
+    PitchYin pitch_;
+    OnsetDetector onsets_;
+    Features features_;
+    int hop_samples_ = 0, filled_ = 0;
+    int pitch_every_frames_ = 1, frames_ = 0;
+};
+
+}  // namespace tactus

@@ -1,0 +1,99 @@
+#include "tactus/analysis/onset_detector.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tactus/core/units.hpp"
+
+namespace tactus {
+namespace {
+constexpr double kLogCompression = 1000.0;  // gamma: magnitudes 60 dB below full scale count
+constexpr double kTopHz = 16000.0;          // above this, flux is mostly noise
+constexpr double kSubBlockMs = 0.5;         // time resolution of the onset-time refinement
+}  // namespace
+
+void OnsetDetector::prepare(double sample_rate_hz, int hop_samples, const OnsetSettings& s) {
+    settings_ = s;
+    hop_samples_ = hop_samples;
+    stft_.prepare(next_power_of_two(ms_to_samples(s.window_ms, sample_rate_hz)), sample_rate_hz);
+    first_bin_ = 0;
+    end_bin_ = std::min(stft_.bins(), static_cast<int>(kTopHz / stft_.bin_hz()) + 1);
+    previous_log_.assign(static_cast<size_t>(stft_.bins()), 0.0f);
+    const auto history_frames =
+        std::max<int64_t>(1, std::llround(s.history_ms * 1e-3 * sample_rate_hz / hop_samples));
+    flux_history_.assign(static_cast<size_t>(history_frames), 0.0);
+    min_interval_samples_ = ms_to_samples(s.min_interval_ms, sample_rate_hz);
+    sub_block_samples_ = std::max<int>(1, static_cast<int>(ms_to_samples(kSubBlockMs,
+                                                                          sample_rate_hz)));
+    segment_.assign(static_cast<size_t>(span_samples()), 0.0f);
+    block_energy_.assign(static_cast<size_t>(span_samples() / sub_block_samples_), 0.0);
+    reset();
+}
+
+void OnsetDetector::reset() noexcept {
+    std::fill(previous_log_.begin(), previous_log_.end(), 0.0f);
+    std::fill(flux_history_.begin(), flux_history_.end(), 0.0);
+    history_position_ = 0;
+    history_sum_ = 0;
+    last_onset_sample_ = INT64_MIN / 2;
+    armed_ = true;
+}
+
+OnsetDecision OnsetDetector::analyse(const SampleHistory& history) noexcept {
+    stft_.analyse(history);
+    const auto& magnitudes = stft_.magnitudes();
+    double flux = 0.0;
+    for (int k = first_bin_; k < end_bin_; ++k) {
+        const float log_magnitude = std::log1p(static_cast<float>(kLogCompression) * magnitudes[k]);
+        flux += std::max(0.0f, log_magnitude - previous_log_[k]);
+        previous_log_[k] = log_magnitude;
+    }
+    flux *= 100.0 / (end_bin_ - first_bin_);  // per hundred bins: independent of window size
+
+    const double mean = history_sum_ / static_cast<double>(flux_history_.size());
+    const double threshold = settings_.threshold + settings_.ratio * mean;
+    history_sum_ += flux - flux_history_[history_position_];
+    flux_history_[history_position_] = flux;
+    history_position_ = (history_position_ + 1) % flux_history_.size();
+
+    OnsetDecision decision{flux, false, 0};
+    const int64_t now = history.written();
+    if (flux <= threshold) {
+        armed_ = true;
+    } else if (armed_ && now - last_onset_sample_ >= min_interval_samples_) {
+        armed_ = false;
+        last_onset_sample_ = now;
+        decision.onset = true;
+        decision.onset_sample = refine_onset_sample(history);
+    }
+    return decision;
+}
+
+// The sub-block with the largest energy rise over its predecessor, within the newest window and
+// hop: where the new sound begins.
+int64_t OnsetDetector::refine_onset_sample(const SampleHistory& history) noexcept {
+    const int span = span_samples();
+    history.read_latest(segment_.data(), span);
+    const int blocks = static_cast<int>(block_energy_.size());
+    const int offset = span - blocks * sub_block_samples_;
+    double loudest = 0.0;
+    for (int b = 0; b < blocks; ++b) {
+        double e = 0.0;
+        for (int i = 0; i < sub_block_samples_; ++i) {
+            const double x = segment_[offset + b * sub_block_samples_ + i];
+            e += x * x;
+        }
+        block_energy_[b] = e;
+        loudest = std::max(loudest, e);
+    }
+    const double floor = 1e-4 * loudest + 1e-20;
+    double best_ratio = 0.0;
+    int best_block = blocks - 1;
+    for (int b = 1; b < blocks; ++b) {
+        const double ratio = (block_energy_[b] + floor) / (block_energy_[b - 1] + floor);
+        if (ratio > best_ratio) best_ratio = ratio, best_block = b;
+    }
+    return history.written() - span + offset + static_cast<int64_t>(best_block) * sub_block_samples_;
+}
+
+}  // namespace tactus

@@ -1,0 +1,56 @@
+// Causal onset detection (the role of bonk~ in the paper, §6).
+// Detection function: log-compressed spectral flux of a short-window STFT, i.e. the mean over
+// bins of the half-wave rectified rise of log(1 + gamma |X|) (Klapuri 1999; Böck & Widmer 2013
+// for the log compression). Peak picking is causal: an onset is decided the first frame the flux
+// exceeds an adaptive threshold, threshold + ratio * mean of the recent flux, at least
+// min_interval after the previous onset; it re-arms when the flux falls back below the threshold.
+// The onset time is then refined in the time domain to the sub-millisecond block with the
+// largest energy rise in the newest window.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "tactus/analysis/sample_history.hpp"
+#include "tactus/analysis/stft_frame.hpp"
+
+namespace tactus {
+
+struct OnsetSettings {
+    double window_ms = 5.8;
+    double threshold = 4;
+    double ratio = 2.5;
+    double history_ms = 200;
+    double min_interval_ms = 40;
+};
+
+struct OnsetDecision {
+    double odf = 0;           // detection function value this frame
+    bool onset = false;
+    int64_t onset_sample = 0;  // estimated start of the onset (valid when onset)
+};
+
+class OnsetDetector {
+public:
+    void prepare(double sample_rate_hz, int hop_samples, const OnsetSettings& settings);
+    void reset() noexcept;
+    // Analyses the frame ending at the newest sample of `history`.
+    OnsetDecision analyse(const SampleHistory& history) noexcept;
+    int span_samples() const { return stft_.window_samples() + hop_samples_; }
+
+private:
+    int64_t refine_onset_sample(const SampleHistory& history) noexcept;
+
+    OnsetSettings settings_;
+    StftFrame stft_;
+    std::vector<float> previous_log_, segment_;
+    std::vector<double> flux_history_, block_energy_;
+    size_t history_position_ = 0;
+    double history_sum_ = 0;
+    int hop_samples_ = 0, sub_block_samples_ = 0, first_bin_ = 0, end_bin_ = 0;
+    int64_t min_interval_samples_ = 0, last_onset_sample_ = INT64_MIN / 2;
+    bool armed_ = true;
+};
+
+}  // namespace tactus

@@ -1,0 +1,35 @@
+// Fundamental frequency with confidence by YIN (de Cheveigné & Kawahara 2002, JASA 111:1917):
+// difference function via FFT autocorrelation, cumulative-mean normalisation, absolute
+// threshold, parabolic interpolation. Confidence = 1 - normalised difference at the chosen lag.
+// Unvoiced or silent input reads f0 = 0 with its (low) confidence.
+#pragma once
+
+#include <vector>
+
+#include "tactus/analysis/real_fft.hpp"
+#include "tactus/analysis/sample_history.hpp"
+
+namespace tactus {
+
+struct Pitch {
+    double f0_hz = 0;
+    double confidence = 0;
+};
+
+class PitchYin {
+public:
+    void prepare(double sample_rate_hz, double min_hz, double max_hz, double threshold);
+    Pitch analyse(const SampleHistory& history) noexcept;
+    // Samples of history analyse() reads.
+    int span_samples() const { return 2 * window_; }
+
+private:
+    double sample_rate_hz_ = 0, threshold_ = 0.15;
+    int window_ = 0, min_lag_ = 0, max_lag_ = 0;
+    RealFft fft_;
+    std::vector<float> signal_;
+    std::vector<std::complex<float>> signal_spectrum_;
+    std::vector<double> difference_;
+};
+
+}  // namespace tactus

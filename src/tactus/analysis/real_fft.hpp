@@ -1,0 +1,37 @@
+// Real-input FFT of a fixed power-of-two size on FFTW3 single precision. Plans and buffers are
+// made in prepare(); forward()/inverse() are real-time safe.
+#pragma once
+
+#include <complex>
+
+#include <fftw3.h>
+
+namespace tactus {
+
+class RealFft {
+public:
+    RealFft() = default;
+    RealFft(const RealFft&) = delete;
+    RealFft& operator=(const RealFft&) = delete;
+    ~RealFft();
+
+    void prepare(int size);  // may allocate
+    int size() const { return size_; }
+    int bins() const { return size_ / 2 + 1; }
+
+    float* time() { return time_; }
+    std::complex<float>* spectrum() { return reinterpret_cast<std::complex<float>*>(spectrum_); }
+
+    void forward() noexcept { fftwf_execute(forward_); }   // time() -> spectrum()
+    void inverse() noexcept { fftwf_execute(inverse_); }   // spectrum() -> time(), scaled by size
+
+private:
+    void release();
+    int size_ = 0;
+    float* time_ = nullptr;
+    fftwf_complex* spectrum_ = nullptr;
+    fftwf_plan forward_ = nullptr;
+    fftwf_plan inverse_ = nullptr;
+};
+
+}  // namespace tactus

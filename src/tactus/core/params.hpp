@@ -1,0 +1,99 @@
+// The one table of parameters: name, unit, range, default, curve and help for every setting of
+// the pipeline. Presets, `--set`, and every later front end (live engine, plugins, Pd, OSC)
+// read this table; nothing else declares a parameter.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace tactus {
+
+enum class ParamKind { number, choice };
+enum class ParamCurve { lin, log };  // how a front end should lay the range out on a slider
+
+struct ParamSpec {
+    std::string_view key;   // dotted name, as in presets: "mapping.frequency.out_max"
+    std::string_view unit;  // "dB", "Hz", "ms", "" ...
+    ParamKind kind;
+    double min;
+    double max;
+    double default_value;
+    ParamCurve curve;
+    std::string_view help;
+    std::span<const std::string_view> choices = {};  // for ParamKind::choice: value is the index
+};
+
+// Features a mapping can read (analysis outputs), in the order of FeatureSource.
+inline constexpr std::array<std::string_view, 7> kFeatureSourceNames = {
+    "loudness_db", "brightness_hz", "noisiness", "tonality",
+    "pitch_hz",    "pitch_confidence", "onset_odf"};
+enum class FeatureSource { loudness_db, brightness_hz, noisiness, tonality, pitch_hz,
+                           pitch_confidence, onset_odf };
+
+// lin: output linear in input. log: input and output on logarithmic scales (equal input ratios
+// give equal output ratios: a frequency scale). exp: linear input, logarithmic output (dB in,
+// amplitude out).
+inline constexpr std::array<std::string_view, 3> kCurveNames = {"lin", "log", "exp"};
+enum class MappingCurve { lin, log, exp };
+
+// Parameter identifiers, in table order.
+enum class P : int {
+    analysis_window_ms,
+    analysis_hop_ms,
+    loudness_window_ms,
+    pitch_min_hz,
+    pitch_max_hz,
+    pitch_threshold,
+    onset_window_ms,
+    onset_threshold,
+    onset_ratio,
+    onset_history_ms,
+    onset_min_interval_ms,
+    mapping_gate_db,
+#define TACTUS_MAPPING_IDS(name) \
+    name##_source, name##_in_min, name##_in_max, name##_out_min, name##_out_max, name##_curve, \
+        name##_smoothing_ms
+    TACTUS_MAPPING_IDS(amplitude),
+    TACTUS_MAPPING_IDS(frequency),
+    TACTUS_MAPPING_IDS(square_mix),
+#undef TACTUS_MAPPING_IDS
+    envelope_attack_ms,
+    envelope_decay_ms,
+    envelope_sustain,
+    post_band_low_hz,
+    post_band_high_hz,
+    post_flatten_strength,
+    post_flatten_range_db,
+    post_drive_db,
+    post_limiter_threshold_db,
+    post_ceiling_db,
+    post_lookahead_ms,
+    post_release_ms,
+    count
+};
+
+std::span<const ParamSpec> param_table();
+const ParamSpec& spec(P id);
+std::optional<P> find_param(std::string_view key);
+// The known key closest to `key` (edit distance), for "did you mean" messages.
+std::string nearest_param(std::string_view key);
+
+// A value for every parameter, starting at the table's defaults.
+class Settings {
+public:
+    Settings();
+    double operator[](P id) const { return values_[static_cast<int>(id)]; }
+    // Sets a value after checking its range; throws std::invalid_argument naming the key.
+    void set(P id, double value);
+    // Parses "value" for a key: a number for numeric parameters, a name for choices.
+    void set_from_text(P id, std::string_view text);
+    std::string text_of(P id) const;
+
+private:
+    std::array<double, static_cast<int>(P::count)> values_{};
+};
+
+}  // namespace tactus

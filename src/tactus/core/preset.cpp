@@ -1,0 +1,164 @@
+#include "tactus/core/preset.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#ifndef TACTUS_PRESET_DIR
+#define TACTUS_PRESET_DIR "presets"
+#endif
+
+namespace tactus {
+namespace fs = std::filesystem;
+namespace {
+
+std::string where(std::string_view origin, const toml::source_region& region) {
+    return fmt::format("{}:{}:{}", origin, region.begin.line, region.begin.column);
+}
+
+void apply_node(Settings& settings, const std::string& key, const toml::node& node,
+                std::string_view origin) {
+    if (const auto* table = node.as_table()) {
+        for (const auto& [name, child] : *table)
+            apply_node(settings, key.empty() ? std::string(name.str())
+                                             : key + "." + std::string(name.str()),
+                       child, origin);
+        return;
+    }
+    if (key == "description" || key == "name") {
+        if (!node.is_string())
+            throw std::runtime_error(
+                fmt::format("{}: '{}' must be a string", where(origin, node.source()), key));
+        return;
+    }
+    const auto id = find_param(key);
+    if (!id)
+        throw std::runtime_error(fmt::format("{}: unknown key '{}' (did you mean '{}'?)",
+                                             where(origin, node.source()), key,
+                                             nearest_param(key)));
+    const ParamSpec& s = spec(*id);
+    try {
+        if (s.kind == ParamKind::choice) {
+            if (!node.is_string())
+                throw std::invalid_argument(fmt::format("{} must be a name in quotes", key));
+            settings.set_from_text(*id, *node.value<std::string>());
+        } else {
+            if (!node.is_number())
+                throw std::invalid_argument(fmt::format("{} must be a number", key));
+            settings.set(*id, *node.value<double>());
+        }
+    } catch (const std::invalid_argument& e) {
+        throw std::runtime_error(fmt::format("{}: {}", where(origin, node.source()), e.what()));
+    }
+}
+
+std::string description_of(const fs::path& path) {
+    try {
+        const toml::table table = toml::parse_file(path.string());
+        return table["description"].value_or(std::string{});
+    } catch (const toml::parse_error&) {
+        return "(does not parse)";
+    }
+}
+
+}  // namespace
+
+std::vector<fs::path> preset_search_path() {
+    std::vector<fs::path> dirs;
+    if (const char* env = std::getenv("TACTUS_PRESET_PATH")) {
+        std::string_view rest = env;
+        while (!rest.empty()) {
+            const size_t colon = rest.find(':');
+            if (colon != 0) dirs.emplace_back(rest.substr(0, colon));
+            if (colon == std::string_view::npos) break;
+            rest.remove_prefix(colon + 1);
+        }
+    }
+    dirs.emplace_back(TACTUS_PRESET_DIR);
+    return dirs;
+}
+
+std::vector<PresetInfo> list_presets() {
+    std::vector<PresetInfo> presets;
+    for (const auto& dir : preset_search_path()) {
+        std::error_code ec;
+        for (const auto& entry : fs::directory_iterator(dir, ec)) {
+            if (entry.path().extension() != ".toml") continue;
+            const std::string name = entry.path().stem().string();
+            bool shadowed = false;
+            for (const auto& p : presets) shadowed |= p.name == name;
+            if (!shadowed) presets.push_back({name, entry.path(), description_of(entry.path())});
+        }
+    }
+    std::sort(presets.begin(), presets.end(),
+              [](const auto& a, const auto& b) { return a.name < b.name; });
+    return presets;
+}
+
+fs::path resolve_preset(std::string_view name_or_path) {
+    const fs::path given(name_or_path);
+    if (given.extension() == ".toml" || given.has_parent_path()) {
+        if (!fs::is_regular_file(given))
+            throw std::runtime_error(fmt::format("preset file '{}' not found", name_or_path));
+        return given;
+    }
+    for (const auto& dir : preset_search_path())
+        if (fs::is_regular_file(dir / (given.string() + ".toml")))
+            return dir / (given.string() + ".toml");
+    std::string known;
+    for (const auto& p : list_presets()) known += (known.empty() ? "" : ", ") + p.name;
+    throw std::runtime_error(
+        fmt::format("no preset named '{}' (known: {})", name_or_path, known));
+}
+
+void apply_preset_text(Settings& settings, std::string_view toml_text, std::string_view origin) {
+    toml::table table;
+    try {
+        table = toml::parse(toml_text, origin);
+    } catch (const toml::parse_error& e) {
+        throw std::runtime_error(fmt::format("{}: TOML syntax error: {}",
+                                             where(origin, e.source()), e.description()));
+    }
+    Settings candidate = settings;  // all or nothing
+    apply_node(candidate, "", table, origin);
+    settings = candidate;
+}
+
+void apply_preset_file(Settings& settings, const fs::path& path) {
+    toml::table table;
+    try {
+        table = toml::parse_file(path.string());
+    } catch (const toml::parse_error& e) {
+        const auto* description = e.description().data();
+        if (!fs::exists(path))
+            throw std::runtime_error(fmt::format("preset file '{}' not found", path.string()));
+        throw std::runtime_error(fmt::format("{}: TOML syntax error: {}",
+                                             where(path.string(), e.source()), description));
+    }
+    Settings candidate = settings;
+    apply_node(candidate, "", table, path.string());
+    settings = candidate;
+}
+
+void apply_assignment(Settings& settings, std::string_view assignment) {
+    const size_t eq = assignment.find('=');
+    if (eq == std::string_view::npos || eq == 0 || eq + 1 == assignment.size())
+        throw std::invalid_argument(
+            fmt::format("--set '{}': expected key=value, e.g. envelope.decay_ms=120", assignment));
+    const std::string_view key = assignment.substr(0, eq);
+    const std::string_view value = assignment.substr(eq + 1);
+    const auto id = find_param(key);
+    if (!id)
+        throw std::invalid_argument(fmt::format("--set: unknown key '{}' (did you mean '{}'?)",
+                                                key, nearest_param(key)));
+    try {
+        settings.set_from_text(*id, value);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(fmt::format("--set: {}", e.what()));
+    }
+}
+
+}  // namespace tactus

@@ -1,0 +1,33 @@
+// Unit conversions shared by every stage. Names carry units: _db, _hz, _ms, _s, _samples.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+
+namespace tactus {
+
+inline double db_to_gain(double db) { return std::pow(10.0, db / 20.0); }
+inline double gain_to_db(double gain) { return 20.0 * std::log10(gain); }
+inline double power_to_db(double power) { return 10.0 * std::log10(power); }
+
+inline int64_t ms_to_samples(double ms, double sample_rate_hz) {
+    return static_cast<int64_t>(std::llround(ms * 1e-3 * sample_rate_hz));
+}
+
+// One-pole smoothing coefficient for a time constant, applied once per `step_samples`.
+inline double one_pole_coefficient(double time_constant_ms, double sample_rate_hz,
+                                   double step_samples = 1.0) {
+    if (time_constant_ms <= 0.0) return 0.0;
+    return std::exp(-step_samples / (time_constant_ms * 1e-3 * sample_rate_hz));
+}
+
+// Smallest power of two >= n.
+inline int next_power_of_two(int64_t n) {
+    int p = 1;
+    while (p < n) p <<= 1;
+    return p;
+}
+
+constexpr double kPi = 3.14159265358979323846;
+
+}  // namespace tactus

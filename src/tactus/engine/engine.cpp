@@ -1,0 +1,59 @@
+#include "tactus/engine/engine.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "tactus/engine/denormals.hpp"
+
+namespace tactus {
+
+void Engine::prepare(double sample_rate_hz, int max_block) {
+    if (!(sample_rate_hz >= kMinSampleRateHz && sample_rate_hz <= kMaxSampleRateHz))
+        throw std::invalid_argument(fmt::format(
+            "sample rate {} Hz is outside the supported {}-{} Hz", sample_rate_hz,
+            kMinSampleRateHz, kMaxSampleRateHz));
+    if (max_block < 1 || max_block > kMaxBlock)
+        throw std::invalid_argument(
+            fmt::format("block size {} is outside the supported 1-{}", max_block, kMaxBlock));
+    sample_rate_hz_ = sample_rate_hz;
+    analyzer_.prepare(sample_rate_hz, settings_);
+    mapper_.prepare(settings_, sample_rate_hz / analyzer_.hop_samples());
+    voice_.prepare(sample_rate_hz, settings_[P::post_band_high_hz]);
+    post_.prepare(sample_rate_hz, settings_);
+    clean_.assign(static_cast<size_t>(max_block), 0.0f);
+    reset();
+}
+
+void Engine::reset() noexcept {
+    analyzer_.reset();
+    mapper_.reset();
+    voice_.reset();
+    post_.reset();
+}
+
+void Engine::process(const float* in, float* out, int count) noexcept {
+    const ScopedFlushDenormals no_denormals;
+    // Non-finite and denormal input never reaches the analysis.
+    for (int i = 0; i < count; ++i)
+        clean_[i] = std::isnormal(in[i]) ? in[i] : 0.0f;
+
+    int done = 0;
+    while (done < count) {
+        const int chunk = std::min(count - done, analyzer_.samples_to_next_frame());
+        const bool frame_due = analyzer_.write(clean_.data() + done, chunk);
+        voice_.render(out + done, chunk);
+        if (frame_due) {
+            const Features& features = analyzer_.analyse();
+            const ControlFrame control = mapper_.map(features);
+            voice_.apply(control);
+            if (observer_) observer_->on_frame(features, control);
+        }
+        done += chunk;
+    }
+    post_.process(out, count);
+}
+
+}  // namespace tactus

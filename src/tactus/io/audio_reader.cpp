@@ -1,0 +1,49 @@
+#include "tactus/io/audio_reader.hpp"
+
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace tactus {
+
+AudioReader::AudioReader(const std::filesystem::path& path) : path_(path) {
+    file_ = sf_open(path.c_str(), SFM_READ, &info_);
+    if (!file_)
+        throw std::runtime_error(fmt::format("{}: cannot read audio: {}", path.string(),
+                                             sf_strerror(nullptr)));
+    if (info_.channels < 1 || info_.samplerate < 1) {
+        sf_close(file_);
+        throw std::runtime_error(fmt::format("{}: no audio channels", path.string()));
+    }
+    // Scale integer formats to [-1, 1) and do not clip floats.
+    sf_command(file_, SFC_SET_NORM_FLOAT, nullptr, SF_TRUE);
+}
+
+AudioReader::~AudioReader() {
+    if (file_) sf_close(file_);
+}
+
+int AudioReader::read(float* mono, int max_frames) {
+    const int channels = info_.channels;
+    if (channels == 1) {
+        const sf_count_t got = sf_readf_float(file_, mono, max_frames);
+        if (got < 0 || (got == 0 && sf_error(file_) != SF_ERR_NO_ERROR))
+            throw std::runtime_error(
+                fmt::format("{}: read error: {}", path_.string(), sf_strerror(file_)));
+        return static_cast<int>(got);
+    }
+    interleaved_.resize(static_cast<size_t>(max_frames) * channels);
+    const sf_count_t got = sf_readf_float(file_, interleaved_.data(), max_frames);
+    if (got < 0 || (got == 0 && sf_error(file_) != SF_ERR_NO_ERROR))
+        throw std::runtime_error(
+            fmt::format("{}: read error: {}", path_.string(), sf_strerror(file_)));
+    const float scale = 1.0f / static_cast<float>(channels);
+    for (sf_count_t i = 0; i < got; ++i) {
+        float sum = 0.0f;
+        for (int c = 0; c < channels; ++c) sum += interleaved_[i * channels + c];
+        mono[i] = sum * scale;
+    }
+    return static_cast<int>(got);
+}
+
+}  // namespace tactus

@@ -1,0 +1,30 @@
+// Streams one audio file through an Engine in fixed blocks: the offline driver every command
+// shares. Memory is constant in the file's length.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+
+#include "tactus/engine/engine.hpp"
+
+namespace tactus {
+
+struct RunCallbacks {
+    // Each block of vibration as it is produced (may be empty).
+    std::function<void(const float* vibration, int frames)> on_output;
+    // Frames done and the total (total <= 0 when unknown), about every 1 % of the file.
+    std::function<void(int64_t done, int64_t total)> on_progress;
+};
+
+struct RunSummary {
+    double sample_rate_hz = 0;
+    int input_channels = 0;
+    int64_t frames = 0;
+};
+
+// Opens `input`, prepares `engine` at the file's sample rate, runs it to the end.
+RunSummary run_file(const std::filesystem::path& input, Engine& engine,
+                    const RunCallbacks& callbacks = {});
+
+}  // namespace tactus

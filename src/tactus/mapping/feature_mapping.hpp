@@ -1,0 +1,32 @@
+// One mapping of the vibration program: a source feature, its input range, an output range, a
+// curve and one-pole smoothing; all data from the preset (paper §6: loudness -> amplitude,
+// brightness -> frequency on a log scale, tonality -> sine/square mix).
+//   lin: out linear in in.   log: equal input ratios give equal output ratios (frequency scale).
+//   exp: linear input (dB), output on a ratio scale (amplitude).
+// Inputs outside [in_min, in_max] are clamped; in_min > in_max inverts the mapping.
+#pragma once
+
+#include "tactus/analysis/features.hpp"
+#include "tactus/core/params.hpp"
+
+namespace tactus {
+
+class FeatureMapping {
+public:
+    // `first` is the mapping's *_source parameter; the others follow it in the table.
+    void prepare(const Settings& settings, P first, double frames_per_second);
+    void reset(double value) noexcept { smoothed_ = value; }
+    // Maps and smooths one frame's feature value.
+    double map(const Features& features) noexcept;
+    double current() const { return smoothed_; }
+    // The curve alone, without smoothing.
+    double shape(double input) const noexcept;
+
+private:
+    FeatureSource source_{};
+    MappingCurve curve_{};
+    double in_min_ = 0, in_max_ = 1, out_min_ = 0, out_max_ = 1;
+    double smoothing_ = 0, smoothed_ = 0;
+};
+
+}  // namespace tactus

@@ -1,0 +1,44 @@
+#include "tactus/post/band_limit.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace tactus {
+
+void BandLimit::prepare(double sample_rate_hz, double low_hz, double high_hz, int order) {
+    if (order < 2 || order > kMaxOrder || order % 2 != 0)
+        throw std::invalid_argument("band-limit order must be 2, 4, 6 or 8");
+    sample_rate_hz_ = sample_rate_hz;
+    const int per_side = order / 2;
+    count_ = 0;
+    for (int k = 0; k < per_side; ++k)
+        sections_[count_++].set(BiquadCoefficients::highpass(low_hz, butterworth_q(order, k),
+                                                             sample_rate_hz));
+    // A low-pass near Nyquist would be meaningless; the band then ends at Nyquist.
+    if (high_hz < 0.45 * sample_rate_hz)
+        for (int k = 0; k < per_side; ++k)
+            sections_[count_++].set(BiquadCoefficients::lowpass(high_hz, butterworth_q(order, k),
+                                                                sample_rate_hz));
+    reset();
+}
+
+void BandLimit::reset() noexcept {
+    for (auto& s : sections_) s.reset();
+}
+
+void BandLimit::process(float* samples, int count) noexcept {
+    for (int i = 0; i < count; ++i) {
+        double x = samples[i];
+        for (int s = 0; s < count_; ++s) x = sections_[s].process(x);
+        samples[i] = static_cast<float>(x);
+    }
+}
+
+double BandLimit::magnitude_db(double frequency_hz) const {
+    double db = 0.0;
+    for (int s = 0; s < count_; ++s)
+        db += sections_[s].coefficients().magnitude_db(frequency_hz, sample_rate_hz_);
+    return db;
+}
+
+}  // namespace tactus

@@ -1,0 +1,79 @@
+#include "tactus/post/peak_limiter.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tactus/core/units.hpp"
+
+namespace tactus {
+
+void PeakLimiter::prepare(double sample_rate_hz, double lookahead_ms, double release_ms,
+                          double drive_db, double threshold_db, double ceiling) {
+    lookahead_ = std::max<int>(1, static_cast<int>(ms_to_samples(lookahead_ms, sample_rate_hz)));
+    release_ = one_pole_coefficient(release_ms, sample_rate_hz);
+    drive_ = db_to_gain(drive_db);
+    ceiling_ = ceiling;
+    threshold_ = ceiling * db_to_gain(threshold_db);
+    delay_.assign(static_cast<size_t>(lookahead_), 0.0f);
+    held_gain_.assign(static_cast<size_t>(lookahead_), 1.0);
+    minimum_.assign(static_cast<size_t>(lookahead_ + 2), {0, 1.0});
+    reset();
+}
+
+void PeakLimiter::reset() noexcept {
+    std::fill(delay_.begin(), delay_.end(), 0.0f);
+    std::fill(held_gain_.begin(), held_gain_.end(), 1.0);
+    minimum_head_ = minimum_size_ = 0;
+    time_ = 0;
+    released_gain_ = 1.0;
+    box_sum_ = static_cast<double>(lookahead_);
+}
+
+double PeakLimiter::curve(double peak) const noexcept {
+    if (peak <= threshold_) return peak;
+    const double knee = ceiling_ - threshold_;
+    if (knee <= 0.0) return ceiling_;
+    return threshold_ + knee * (1.0 - std::exp(-(peak - threshold_) / knee));
+}
+
+void PeakLimiter::process(float* samples, int count) noexcept {
+    const size_t capacity = minimum_.size();
+    const auto length = static_cast<size_t>(lookahead_);
+    for (int i = 0; i < count; ++i) {
+        double x = samples[i];
+        if (!std::isfinite(x)) x = 0.0;
+        x *= drive_;
+        const double magnitude = std::abs(x);
+        const double wanted = magnitude > threshold_ ? curve(magnitude) / magnitude : 1.0;
+
+        // Sliding minimum of the wanted gain over the last lookahead + 1 samples: every gain
+        // averaged into a sample's output below has seen that sample's wish.
+        while (minimum_size_ > 0 &&
+               minimum_[(minimum_head_ + minimum_size_ - 1) % capacity].second >= wanted)
+            --minimum_size_;
+        minimum_[(minimum_head_ + minimum_size_) % capacity] = {time_, wanted};
+        ++minimum_size_;
+        if (minimum_[minimum_head_].first < time_ - lookahead_) {
+            minimum_head_ = (minimum_head_ + 1) % capacity;
+            --minimum_size_;
+        }
+        const double held = minimum_[minimum_head_].second;
+
+        // Instant attack, one-pole release, never above the held gain.
+        released_gain_ = std::min(held, held + release_ * (released_gain_ - held));
+
+        // Box average over the look-ahead, aligned with the delayed sample.
+        const size_t slot = static_cast<size_t>(time_) % length;
+        box_sum_ += released_gain_ - held_gain_[slot];
+        held_gain_[slot] = released_gain_;
+        const double gain = std::min(1.0, box_sum_ / static_cast<double>(length));
+
+        const double delayed = delay_[slot];
+        delay_[slot] = static_cast<float>(x);
+        const double y = std::clamp(delayed * gain, -ceiling_, ceiling_);
+        samples[i] = static_cast<float>(y);
+        ++time_;
+    }
+}
+
+}  // namespace tactus

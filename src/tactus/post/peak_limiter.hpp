@@ -1,0 +1,39 @@
+// Look-ahead peak limiter with a soft knee and a hard ceiling (the role of omx.peaklim~ in the
+// paper, §6: "dynamic range is then reduced so that quieter vibrotactile events are not lost").
+// Each sample's magnitude p asks for the output level
+//   p                                   for p <= T
+//   T + (C - T) (1 - exp(-(p - T) / (C - T)))   above: rises with p, never reaches C,
+// so louder input always gives louder output (the order of dynamics is kept). The required gain
+// is held for the look-ahead (sliding minimum) and averaged over it (box filter), which
+// guarantees the gain is fully down when the peak leaves the delay line; recovery is a one-pole
+// release. Non-finite input is treated as 0.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace tactus {
+
+class PeakLimiter {
+public:
+    void prepare(double sample_rate_hz, double lookahead_ms, double release_ms, double drive_db,
+                 double threshold_db, double ceiling);  // may allocate
+    void reset() noexcept;
+    void process(float* samples, int count) noexcept;
+    int latency_samples() const { return lookahead_; }
+    // The output level the static curve gives a sample of magnitude `peak` (after drive).
+    double curve(double peak) const noexcept;
+
+private:
+    int lookahead_ = 1;
+    double drive_ = 1, threshold_ = 0.5, ceiling_ = 1, release_ = 0;
+    std::vector<float> delay_;              // look-ahead delay line
+    std::vector<double> held_gain_;         // ring for the box average
+    std::vector<std::pair<int64_t, double>> minimum_;  // monotonic deque (ring) for sliding min
+    size_t minimum_head_ = 0, minimum_size_ = 0;
+    int64_t time_ = 0;
+    double released_gain_ = 1, box_sum_ = 0;
+};
+
+}  // namespace tactus

@@ -1,0 +1,38 @@
+// Post-processing in the paper's order (§6): band-limit to the vibrotactile range, P-channel
+// flattening, peak limiter, band-limit again. The limiter's ceiling sits 1 dB under the output
+// ceiling to leave room for the last band-limit's ringing; a final clip at the ceiling makes the
+// bound absolute and counts how often it had to act (it should not: see clipped_samples()).
+#pragma once
+
+#include <cstdint>
+
+#include "tactus/core/params.hpp"
+#include "tactus/post/band_limit.hpp"
+#include "tactus/post/flattening_filter.hpp"
+#include "tactus/post/peak_limiter.hpp"
+
+namespace tactus {
+
+class PostChain {
+public:
+    static constexpr int kFirstBandOrder = 4;
+    static constexpr int kLastBandOrder = 2;
+    static constexpr double kRingingMarginDb = 1.0;
+
+    void prepare(double sample_rate_hz, const Settings& settings);  // may allocate
+    void reset() noexcept;
+    void process(float* samples, int count) noexcept;
+    int latency_samples() const { return limiter_.latency_samples(); }
+    int64_t clipped_samples() const { return clipped_; }
+    double ceiling() const { return ceiling_; }
+    const FlatteningFilter& flattening() const { return flatten_; }
+
+private:
+    BandLimit first_band_, last_band_;
+    FlatteningFilter flatten_;
+    PeakLimiter limiter_;
+    double ceiling_ = 1.0;
+    int64_t clipped_ = 0;
+};
+
+}  // namespace tactus

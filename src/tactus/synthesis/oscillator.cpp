@@ -1,0 +1,41 @@
+#include "tactus/synthesis/oscillator.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tactus/core/units.hpp"
+
+namespace tactus {
+
+void Oscillator::prepare(double sample_rate_hz, double harmonic_limit_hz) {
+    sample_rate_hz_ = sample_rate_hz;
+    harmonic_limit_hz_ = std::min(harmonic_limit_hz, 0.45 * sample_rate_hz);
+    reset();
+}
+
+double Oscillator::next(double frequency_hz, double square_mix) noexcept {
+    const double angle = 2.0 * kPi * phase_;
+    phase_ += frequency_hz / sample_rate_hz_;
+    phase_ -= std::floor(phase_);
+
+    const double fundamental = std::sin(angle);
+    if (square_mix <= 0.0 || frequency_hz <= 0.0) return fundamental;
+
+    // Odd harmonics below the limit; weight fades linearly over the last 2 f0 below it.
+    const double two_cos = 2.0 * std::cos(2.0 * angle);
+    double previous = -fundamental, current = fundamental;  // sin(-x), sin(x)
+    double square = 0.0;
+    for (int k = 1;; k += 2) {
+        const double weight = std::clamp((harmonic_limit_hz_ - k * frequency_hz) /
+                                             (2.0 * frequency_hz), 0.0, 1.0);
+        if (weight <= 0.0) break;
+        square += weight * current / k;
+        const double next_harmonic = two_cos * current - previous;
+        previous = current;
+        current = next_harmonic;
+    }
+    square *= 4.0 / kPi;
+    return fundamental + square_mix * (square - fundamental);
+}
+
+}  // namespace tactus
