@@ -19,9 +19,11 @@ void OnsetDetector::prepare(double sample_rate_hz, int hop_samples, const OnsetS
     first_bin_ = 0;
     end_bin_ = std::min(stft_.bins(), static_cast<int>(kTopHz / stft_.bin_hz()) + 1);
     previous_log_.assign(static_cast<size_t>(stft_.bins()), 0.0f);
+    older_log_.assign(static_cast<size_t>(stft_.bins()), 0.0f);
     const auto history_frames =
         std::max<int64_t>(1, std::llround(s.history_ms * 1e-3 * sample_rate_hz / hop_samples));
     flux_history_.assign(static_cast<size_t>(history_frames), 0.0);
+    scratch_.assign(static_cast<size_t>(history_frames), 0.0);
     min_interval_samples_ = ms_to_samples(s.min_interval_ms, sample_rate_hz);
     sub_block_samples_ = std::max<int>(1, static_cast<int>(ms_to_samples(kSubBlockMs,
                                                                           sample_rate_hz)));
@@ -32,9 +34,9 @@ void OnsetDetector::prepare(double sample_rate_hz, int hop_samples, const OnsetS
 
 void OnsetDetector::reset() noexcept {
     std::fill(previous_log_.begin(), previous_log_.end(), 0.0f);
+    std::fill(older_log_.begin(), older_log_.end(), 0.0f);
     std::fill(flux_history_.begin(), flux_history_.end(), 0.0);
     history_position_ = 0;
-    history_sum_ = 0;
     last_onset_sample_ = INT64_MIN / 2;
     armed_ = true;
 }
@@ -42,17 +44,22 @@ void OnsetDetector::reset() noexcept {
 OnsetDecision OnsetDetector::analyse(const SampleHistory& history) noexcept {
     stft_.analyse(history);
     const auto& magnitudes = stft_.magnitudes();
+    // Rise over the louder of the two previous frames (SuperFlux's temporal maximum, Böck &
+    // Widmer 2013): a noise bin must beat both to count, a new sound beats both.
     double flux = 0.0;
     for (int k = first_bin_; k < end_bin_; ++k) {
         const float log_magnitude = std::log1p(static_cast<float>(kLogCompression) * magnitudes[k]);
-        flux += std::max(0.0f, log_magnitude - previous_log_[k]);
+        flux += std::max(0.0f, log_magnitude - std::max(previous_log_[k], older_log_[k]));
+        older_log_[k] = previous_log_[k];
         previous_log_[k] = log_magnitude;
     }
     flux *= 100.0 / (end_bin_ - first_bin_);  // per hundred bins: independent of window size
 
-    const double mean = history_sum_ / static_cast<double>(flux_history_.size());
-    const double threshold = settings_.threshold + settings_.ratio * mean;
-    history_sum_ += flux - flux_history_[history_position_];
+    // Median of the recent flux: the background level, not raised by the hits themselves.
+    std::copy(flux_history_.begin(), flux_history_.end(), scratch_.begin());
+    const auto middle = scratch_.begin() + static_cast<std::ptrdiff_t>(scratch_.size() / 2);
+    std::nth_element(scratch_.begin(), middle, scratch_.end());
+    const double threshold = settings_.threshold + settings_.ratio * *middle;
     flux_history_[history_position_] = flux;
     history_position_ = (history_position_ + 1) % flux_history_.size();
 

@@ -19,10 +19,10 @@ namespace tactus {
 
 struct OnsetSettings {
     double window_ms = 5.8;
-    double threshold = 4;
-    double ratio = 2.5;
-    double history_ms = 200;
-    double min_interval_ms = 40;
+    double threshold = 10;
+    double ratio = 1.25;
+    double history_ms = 60;
+    double min_interval_ms = 50;
 };
 
 struct OnsetDecision {
@@ -44,10 +44,9 @@ private:
 
     OnsetSettings settings_;
     StftFrame stft_;
-    std::vector<float> previous_log_, segment_;
-    std::vector<double> flux_history_, block_energy_;
+    std::vector<float> previous_log_, older_log_, segment_;
+    std::vector<double> flux_history_, scratch_, block_energy_;
     size_t history_position_ = 0;
-    double history_sum_ = 0;
     int hop_samples_ = 0, sub_block_samples_ = 0, first_bin_ = 0, end_bin_ = 0;
     int64_t min_interval_samples_ = 0, last_onset_sample_ = INT64_MIN / 2;
     bool armed_ = true;

@@ -1,0 +1,179 @@
+#!/usr/bin/python3
+"""Measures tactus on the drum corpus and compares its onsets with aubioonset's.
+
+usage: eval/evaluate.py BUILD_DIR [--out eval/results.md] [--work DIR]
+
+Builds the corpus with BUILD_DIR/eval/make_drum_corpus (fixed seed), runs `tactus onsets` and
+`tactus render` on it, runs aubioonset with every method (all parameters explicit), and checks:
+onset F-measure (+-50 ms, mir_eval), snare/kick vibration frequency ratio, hit gain -> output
+peak Spearman rho, share of output energy in 20-1000 Hz, output peak, silence in -> silence out,
+and the time from each hit's true onset to the output reaching half its pulse peak.
+"""
+import argparse
+import pathlib
+import statistics
+import subprocess
+import sys
+import tempfile
+
+import mir_eval
+import numpy as np
+import scipy.stats
+import soundfile
+
+AUBIO_METHODS = ["hfc", "energy", "complex", "phase", "specdiff", "kl", "mkl", "specflux"]
+# aubioonset's defaults, passed explicitly: buffer 512, hop 256, threshold 0.3, minioi 12 ms,
+# silence -90 dB.
+AUBIO_ARGS = ["-B", "512", "-H", "256", "-t", "0.3", "-M", "0.012", "-s", "-90"]
+TOLERANCE_S = 0.05
+PULSE_WINDOW_S = 0.15
+
+
+def run(cmd):
+    return subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
+
+
+def first_column(text):
+    return np.array([float(line.split()[0]) for line in text.splitlines() if line.strip()])
+
+
+def f_measure(reference, estimated):
+    f, p, r = mir_eval.onset.f_measure(reference, estimated, window=TOLERANCE_S)
+    return f, p, r
+
+
+def read_hits(path):
+    rows = [line.split(",") for line in path.read_text().splitlines()[1:]]
+    return [(float(t), instrument, float(g)) for t, instrument, g in rows]
+
+
+def pulse_frequency_hz(y, rate):
+    """Carrier frequency of a pulse from its zero crossings where it is above 10 % of its peak."""
+    peak = np.max(np.abs(y))
+    if peak == 0:
+        return 0.0
+    loud = np.nonzero(np.abs(y) > 0.1 * peak)[0]
+    segment = y[loud[0]:loud[-1] + 1]
+    crossings = np.count_nonzero(np.signbit(segment[1:]) != np.signbit(segment[:-1]))
+    return crossings / 2.0 / (len(segment) / rate)
+
+
+def half_peak_latency_s(y, rate, onset_s):
+    start = int(round(onset_s * rate))
+    window = np.abs(y[start:start + int(PULSE_WINDOW_S * rate)])
+    if len(window) == 0 or window.max() == 0:
+        return float("nan")
+    return np.argmax(window >= 0.5 * window.max()) / rate
+
+
+def in_band_share(y, rate, low_hz=20.0, high_hz=1000.0):
+    power = np.abs(np.fft.rfft(y)) ** 2
+    freqs = np.fft.rfftfreq(len(y), 1.0 / rate)
+    total = power.sum()
+    return 1.0 if total == 0 else power[(freqs >= low_hz) & (freqs <= high_hz)].sum() / total
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("build_dir", type=pathlib.Path)
+    parser.add_argument("--out", type=pathlib.Path, default=None)
+    parser.add_argument("--work", type=pathlib.Path, default=None)
+    parser.add_argument("--preset", default="tfd")
+    args = parser.parse_args()
+
+    tactus = str(args.build_dir / "apps/tactus/tactus")
+    work = args.work or pathlib.Path(tempfile.mkdtemp(prefix="tactus-eval-"))
+    corpus = work / "corpus"
+    renders = work / "renders"
+    renders.mkdir(parents=True, exist_ok=True)
+    run([str(args.build_dir / "eval/make_drum_corpus"), str(corpus)])
+
+    rows = []
+    onset_scores = {"clean": {"tactus": []}, "noise": {"tactus": []}}
+    for condition in onset_scores.values():
+        for m in AUBIO_METHODS:
+            condition["aubio " + m] = []
+    latencies_break = []
+    for wav in sorted(corpus.glob("breakbeat-*.wav")):
+        name = wav.stem
+        condition = "noise" if name.endswith("-noise") else "clean"
+        reference = np.loadtxt(corpus / f"{name}.onsets.txt", ndmin=1)
+        estimated = first_column(run([tactus, "onsets", str(wav), "--preset", args.preset]))
+        onset_scores[condition]["tactus"].append(f_measure(reference, estimated))
+        for m in AUBIO_METHODS:
+            est = first_column(run(["aubioonset", "-i", str(wav), "-O", m] + AUBIO_ARGS))
+            onset_scores[condition]["aubio " + m].append(f_measure(reference, est))
+        out = renders / f"{name}.vibration.wav"
+        run([tactus, "render", str(wav), "-o", str(out), "--preset", args.preset])
+
+    per_kit = []
+    all_latencies = []
+    worst_share, worst_peak = 1.0, 0.0
+    for kick_wav in sorted(corpus.glob("gain-*-kick.wav")):
+        kit = kick_wav.stem[len("gain-"):-len("-kick")]
+        result = {"kit": kit}
+        for instrument in ("kick", "snare"):
+            wav = corpus / f"gain-{kit}-{instrument}.wav"
+            out = renders / f"gain-{kit}-{instrument}.vibration.wav"
+            run([tactus, "render", str(wav), "-o", str(out), "--preset", args.preset])
+            y, rate = soundfile.read(out, dtype="float64")
+            hits = read_hits(corpus / f"gain-{kit}-{instrument}.hits.csv")
+            peaks, freqs = [], []
+            for t, _, gain in hits:
+                s = int(round(t * rate))
+                pulse = y[s:s + int(PULSE_WINDOW_S * rate)]
+                peaks.append(np.max(np.abs(pulse)))
+                freqs.append(pulse_frequency_hz(pulse, rate))
+                all_latencies.append(half_peak_latency_s(y, rate, t))
+            gains = [g for _, _, g in hits]
+            result[instrument + "_rho"] = scipy.stats.spearmanr(gains, peaks).correlation
+            result[instrument + "_hz"] = statistics.median(freqs)
+            worst_share = min(worst_share, in_band_share(y, rate))
+            worst_peak = max(worst_peak, float(np.max(np.abs(y))))
+        result["ratio"] = result["snare_hz"] / result["kick_hz"] if result["kick_hz"] else float("nan")
+        per_kit.append(result)
+    for out in sorted(renders.glob("breakbeat-*.vibration.wav")):
+        y, rate = soundfile.read(out, dtype="float64")
+        worst_share = min(worst_share, in_band_share(y, rate))
+        worst_peak = max(worst_peak, float(np.max(np.abs(y))))
+
+    silent = work / "silence.wav"
+    soundfile.write(silent, np.zeros(44100 * 3), 44100, subtype="FLOAT")
+    run([tactus, "render", str(silent), "-o", str(work / "silence.vibration.wav"), "--preset",
+         args.preset])
+    silence_out, _ = soundfile.read(work / "silence.vibration.wav")
+    silence_exact = bool(np.all(silence_out == 0))
+
+    lines = ["# tactus on the drum corpus", "",
+             f"Generated by `eval/evaluate.py` (preset `{args.preset}`); corpus: "
+             f"{len(per_kit)} kits of Sonic Pi drum hits, fixed seed.", "",
+             "## Onsets (F-measure, precision, recall at +-50 ms; mean over files)", "",
+             "| detector | clean F | clean P | clean R | noise -20 dB F | noise P | noise R |",
+             "|---|---|---|---|---|---|---|"]
+    for detector in onset_scores["clean"]:
+        c = np.mean(onset_scores["clean"][detector], axis=0)
+        n = np.mean(onset_scores["noise"][detector], axis=0)
+        lines.append(f"| {detector} | {c[0]:.3f} | {c[1]:.3f} | {c[2]:.3f} | "
+                     f"{n[0]:.3f} | {n[1]:.3f} | {n[2]:.3f} |")
+    lines += ["", "## Vibration per kit (isolated hits, gains 0 to -24 dB)", "",
+              "| kit | kick Hz | snare Hz | snare/kick | kick rho | snare rho |",
+              "|---|---|---|---|---|---|"]
+    for r in per_kit:
+        lines.append(f"| {r['kit']} | {r['kick_hz']:.0f} | {r['snare_hz']:.0f} | "
+                     f"{r['ratio']:.2f} | {r['kick_rho']:.3f} | {r['snare_rho']:.3f} |")
+    latency_ms = 1000 * np.nanmedian(all_latencies)
+    lines += ["", "## Whole output", "",
+              f"- output energy within 20-1000 Hz (worst file): {100 * worst_share:.3f} %",
+              f"- output peak (worst file): {worst_peak:.4f} full scale",
+              f"- digital silence in -> exact silence out: {'yes' if silence_exact else 'NO'}",
+              f"- median onset -> half pulse peak: {latency_ms:.1f} ms "
+              f"(90th percentile {1000 * np.nanpercentile(all_latencies, 90):.1f} ms)", ""]
+    report = "\n".join(lines)
+    print(report)
+    if args.out:
+        args.out.write_text(report)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
