@@ -1,5 +1,7 @@
 // tactus analyze IN [-o FILE.csv|FILE.json]: every analysis frame's features and the vibration
 // parameters mapped from them. Streams: constant memory for any length.
+#include <iostream>
+
 #include <nlohmann/json.hpp>
 
 #include <fmt/format.h>
@@ -55,22 +57,26 @@ public:
                                  c.attack_ms,
                                  c.decay_ms,
                                  c.sustain};
+        onsets_ += f.onset;
         if (json_) {
             nlohmann::ordered_json row;
             for (size_t i = 0; i < std::size(kColumns); ++i) row[kColumns[i]] = values[i];
-            out_ << (rows_++ ? ",\n" : "") << row.dump();
+            out_ << (rows_ ? ",\n" : "") << row.dump();
         } else {
             for (size_t i = 0; i < std::size(values); ++i)
                 out_ << (i ? "," : "") << fmt::format("{:.6g}", values[i]);
             out_ << '\n';
         }
+        ++rows_;
     }
+    size_t rows() const { return rows_; }
+    size_t onsets() const { return onsets_; }
 
 private:
     std::ostream& out_;
     bool json_;
     const Engine& engine_;
-    size_t rows_ = 0;
+    size_t rows_ = 0, onsets_ = 0;
 };
 
 void analyze(const AnalyzeOptions& o) {
@@ -89,6 +95,10 @@ void analyze(const AnalyzeOptions& o) {
              {nullptr, [&](int64_t done, int64_t total) { progress.update(done, total); }});
     writer.finish();
     output.commit();
+    if (!o.output.empty() && o.output != "-")
+        std::cerr << fmt::format("{}: {} frames every {:.2f} ms, {} onsets\n", o.output,
+                                 writer.rows(), 1e3 * engine.hop_samples() / engine.sample_rate_hz(),
+                                 writer.onsets());
 }
 
 }  // namespace

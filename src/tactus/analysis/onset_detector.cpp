@@ -100,7 +100,8 @@ int64_t OnsetDetector::refine_onset_sample(const SampleHistory& history) noexcep
         const double ratio = (block_energy_[b] + floor) / (block_energy_[b - 1] + floor);
         if (ratio > best_ratio) best_ratio = ratio, best_block = b;
     }
-    return history.written() - span + offset + static_cast<int64_t>(best_block) * sub_block_samples_;
+    const int64_t start = history.written() - span + offset;
+    return std::max<int64_t>(0, start + static_cast<int64_t>(best_block) * sub_block_samples_);
 }
 
 }  // namespace tactus
