@@ -14,7 +14,7 @@ constexpr double kPitchIntervalMs = 10.0;  // f0 changes slowly: update it every
 void Analyzer::prepare(double sample_rate_hz, const Settings& s) {
     hop_samples_ = std::max<int>(1, static_cast<int>(ms_to_samples(s[P::analysis_hop_ms],
                                                                    sample_rate_hz)));
-    stft_.prepare(next_power_of_two(ms_to_samples(s[P::analysis_window_ms], sample_rate_hz)),
+    stft_.prepare(nearest_power_of_two(ms_to_samples(s[P::analysis_window_ms], sample_rate_hz)),
                   sample_rate_hz);
     noisiness_.prepare(stft_.bins(), stft_.bin_hz());
     loudness_.prepare(sample_rate_hz, s[P::loudness_window_ms]);

@@ -15,7 +15,7 @@ constexpr double kSubBlockMs = 0.5;         // time resolution of the onset-time
 void OnsetDetector::prepare(double sample_rate_hz, int hop_samples, const OnsetSettings& s) {
     settings_ = s;
     hop_samples_ = hop_samples;
-    stft_.prepare(next_power_of_two(ms_to_samples(s.window_ms, sample_rate_hz)), sample_rate_hz);
+    stft_.prepare(nearest_power_of_two(ms_to_samples(s.window_ms, sample_rate_hz)), sample_rate_hz);
     first_bin_ = 0;
     end_bin_ = std::min(stft_.bins(), static_cast<int>(kTopHz / stft_.bin_hz()) + 1);
     previous_log_.assign(static_cast<size_t>(stft_.bins()), 0.0f);

@@ -24,7 +24,7 @@ constexpr double kLastCurve = kCurveNames.size() - 1;
 const ParamSpec kTable[] = {
     // Analysis (paper §6, Figure 4: feature extraction).
     {"analysis.window_ms", "ms", number, 5, 100, 23.2, log,
-     "STFT window for brightness, noisiness (rounded up to a power of two in samples)"},
+     "STFT window for brightness, noisiness (nearest power of two in samples)"},
     {"analysis.hop_ms", "ms", number, 0.5, 20, 2.9, log,
      "time between analysis frames; control rate of the vibration program"},
     {"loudness.window_ms", "ms", number, 2, 400, 10, log,
@@ -34,7 +34,7 @@ const ParamSpec kTable[] = {
     {"pitch.threshold", "", number, 0.01, 0.5, 0.15, lin,
      "YIN absolute threshold on the cumulative-mean-normalised difference"},
     {"onset.window_ms", "ms", number, 2, 50, 5.8, log,
-     "STFT window of the onset detection function (short, for low latency)"},
+     "STFT window of the onset detection function (short, for low latency; nearest power of two)"},
     {"onset.threshold", "", number, 0, 100, 10, lin,
      "fixed part of the adaptive threshold on the log spectral flux"},
     {"onset.ratio", "", number, 0, 10, 1.25, lin,

@@ -28,6 +28,15 @@ inline int next_power_of_two(int64_t n) {
     return p;
 }
 
+// The power of two nearest to n on a log scale: FFT sizes that keep a window's duration within
+// a factor sqrt(2) of what was asked at any sample rate.
+inline int nearest_power_of_two(int64_t n) {
+    const int above = next_power_of_two(n);
+    return (above > 1 && static_cast<double>(above) * above > 2.0 * static_cast<double>(n) * n)
+               ? above / 2
+               : above;
+}
+
 constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace tactus
