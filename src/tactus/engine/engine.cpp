@@ -36,9 +36,9 @@ void Engine::reset() noexcept {
 
 void Engine::process(const float* in, float* out, int count) noexcept {
     const ScopedFlushDenormals no_denormals;
-    // Non-finite and denormal input never reaches the analysis.
+    // Non-finite and denormal input never reaches the analysis; absurd levels are clipped.
     for (int i = 0; i < count; ++i)
-        clean_[i] = std::isnormal(in[i]) ? in[i] : 0.0f;
+        clean_[i] = std::isnormal(in[i]) ? std::clamp(in[i], -kMaxInput, kMaxInput) : 0.0f;
 
     int done = 0;
     while (done < count) {

@@ -27,6 +27,9 @@ public:
     static constexpr double kMinSampleRateHz = 8000;
     static constexpr double kMaxSampleRateHz = 192000;
     static constexpr int kMaxBlock = 4096;
+    // Input beyond +60 dB full scale is clipped: it can only be corrupt, and in float it would
+    // overflow the analysis' sums of squares.
+    static constexpr float kMaxInput = 1000.0f;
 
     explicit Engine(Settings settings = {}) : settings_(settings) {}
 

@@ -39,6 +39,7 @@ double FeatureMapping::shape(double input) const noexcept {
 
 double FeatureMapping::map(const Features& features) noexcept {
     const double target = shape(feature_value(features, source_));
+    if (!std::isfinite(target)) return smoothed_;  // hold rather than pass NaN to the synth
     smoothed_ = target + smoothing_ * (smoothed_ - target);
     return smoothed_;
 }

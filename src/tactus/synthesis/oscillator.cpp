@@ -19,16 +19,16 @@ double Oscillator::next(double frequency_hz, double square_mix) noexcept {
     phase_ -= std::floor(phase_);
 
     const double fundamental = std::sin(angle);
-    if (square_mix <= 0.0 || frequency_hz <= 0.0) return fundamental;
+    if (!(square_mix > 0.0 && frequency_hz > 0.0)) return fundamental;
 
     // Odd harmonics below the limit; weight fades linearly over the last 2 f0 below it.
     const double two_cos = 2.0 * std::cos(2.0 * angle);
     double previous = -fundamental, current = fundamental;  // sin(-x), sin(x)
     double square = 0.0;
-    for (int k = 1;; k += 2) {
-        const double weight = std::clamp((harmonic_limit_hz_ - k * frequency_hz) /
-                                             (2.0 * frequency_hz), 0.0, 1.0);
-        if (weight <= 0.0) break;
+    const int last_harmonic = static_cast<int>(harmonic_limit_hz_ / frequency_hz);
+    for (int k = 1; k <= last_harmonic; k += 2) {
+        const double weight = std::min(1.0, (harmonic_limit_hz_ - k * frequency_hz) /
+                                                (2.0 * frequency_hz));
         square += weight * current / k;
         const double next_harmonic = two_cos * current - previous;
         previous = current;
