@@ -181,12 +181,11 @@ TEST(DrumCorpus, VibrationOfIsolatedHits) {
         std::cout << kit.name << ": kick " << frequency_hz[0] << " Hz, snare " << frequency_hz[1]
                   << " Hz, ratio " << ratio << '\n';
         ratios.push_back(ratio);
-        // Every kit keeps kick below snare with a clear margin.
-        EXPECT_GE(ratio, 1.3) << kit.name;
+        // About two frequency-discrimination steps (Weber fraction ~0.2, perception.md).
+        EXPECT_GE(ratio, 1.5) << kit.name;
     }
     std::cout << "median snare/kick ratio " << median(ratios) << ", median onset -> half peak "
               << 1e3 * median(latencies_s) << " ms\n";
-    EXPECT_GE(median(ratios), 1.5);
     EXPECT_LE(median(latencies_s), 0.010);
 }
 

@@ -25,6 +25,7 @@ void Analyzer::prepare(double sample_rate_hz, const Settings& s) {
                      s[P::onset_history_ms], s[P::onset_min_interval_ms]});
     history_.prepare(std::max({stft_.window_samples(), pitch_.span_samples(),
                                onsets_.span_samples()}));
+    clean_.assign(static_cast<size_t>(hop_samples_), 0.0f);
     pitch_every_frames_ = std::max(1, static_cast<int>(std::lround(
                                           kPitchIntervalMs * 1e-3 * sample_rate_hz / hop_samples_)));
     reset();
@@ -40,8 +41,11 @@ void Analyzer::reset() noexcept {
 }
 
 bool Analyzer::write(const float* samples, int count) noexcept {
-    history_.write(samples, count);
-    loudness_.write(samples, count);
+    for (int i = 0; i < count; ++i)
+        clean_[i] = std::isnormal(samples[i]) ? std::clamp(samples[i], -kMaxInput, kMaxInput)
+                                              : 0.0f;
+    history_.write(clean_.data(), count);
+    loudness_.write(clean_.data(), count);
     filled_ += count;
     return filled_ >= hop_samples_;
 }

@@ -3,6 +3,8 @@
 // so the features do not depend on the host's block size.
 #pragma once
 
+#include <vector>
+
 #include "tactus/analysis/features.hpp"
 #include "tactus/analysis/loudness.hpp"
 #include "tactus/analysis/noisiness.hpp"
@@ -23,7 +25,12 @@ public:
     // Samples that can be written before the next frame is due (1 ... hop).
     int samples_to_next_frame() const noexcept { return hop_samples_ - filled_; }
     // Writes at most samples_to_next_frame() samples; returns true when a frame is due.
+    // Non-finite and denormal samples are read as 0, levels beyond +-kMaxInput are clipped.
     bool write(const float* samples, int count) noexcept;
+
+    // +60 dB over full scale: only corrupt input gets there, and it would overflow the float
+    // sums of squares of the spectra.
+    static constexpr float kMaxInput = 1000.0f;
     // Analyses the frame ending at the newest sample. Call when write() returned true.
     const Features& analyse() noexcept;
 
@@ -35,6 +42,7 @@ private:
     PitchYin pitch_;
     OnsetDetector onsets_;
     Features features_;
+    std::vector<float> clean_;  // sanitised input, one hop
     int hop_samples_ = 0, filled_ = 0;
     int pitch_every_frames_ = 1, frames_ = 0;
 };

@@ -1,7 +1,6 @@
 #include "tactus/engine/engine.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -23,7 +22,6 @@ void Engine::prepare(double sample_rate_hz, int max_block) {
     mapper_.prepare(settings_, sample_rate_hz / analyzer_.hop_samples());
     voice_.prepare(sample_rate_hz, settings_[P::post_band_high_hz]);
     post_.prepare(sample_rate_hz, settings_);
-    clean_.assign(static_cast<size_t>(max_block), 0.0f);
     reset();
 }
 
@@ -36,14 +34,10 @@ void Engine::reset() noexcept {
 
 void Engine::process(const float* in, float* out, int count) noexcept {
     const ScopedFlushDenormals no_denormals;
-    // Non-finite and denormal input never reaches the analysis; absurd levels are clipped.
-    for (int i = 0; i < count; ++i)
-        clean_[i] = std::isnormal(in[i]) ? std::clamp(in[i], -kMaxInput, kMaxInput) : 0.0f;
-
-    int done = 0;
+    int done = 0;  // `in` is read before `out` is written, chunk by chunk: they may alias
     while (done < count) {
         const int chunk = std::min(count - done, analyzer_.samples_to_next_frame());
-        const bool frame_due = analyzer_.write(clean_.data() + done, chunk);
+        const bool frame_due = analyzer_.write(in + done, chunk);
         voice_.render(out + done, chunk);
         if (frame_due) {
             const Features& features = analyzer_.analyse();

@@ -4,7 +4,6 @@
 #pragma once
 
 #include <cstdint>
-#include <vector>
 
 #include "tactus/analysis/analyzer.hpp"
 #include "tactus/core/params.hpp"
@@ -27,9 +26,6 @@ public:
     static constexpr double kMinSampleRateHz = 8000;
     static constexpr double kMaxSampleRateHz = 192000;
     static constexpr int kMaxBlock = 4096;
-    // Input beyond +60 dB full scale is clipped: it can only be corrupt, and in float it would
-    // overflow the analysis' sums of squares.
-    static constexpr float kMaxInput = 1000.0f;
 
     explicit Engine(Settings settings = {}) : settings_(settings) {}
 
@@ -53,7 +49,6 @@ private:
     Mapper mapper_;
     Voice voice_;
     PostChain post_;
-    std::vector<float> clean_;  // sanitised input block
     FrameObserver* observer_ = nullptr;
 };
 

@@ -14,14 +14,14 @@ void PeakLimiter::prepare(double sample_rate_hz, double lookahead_ms, double rel
     drive_ = db_to_gain(drive_db);
     ceiling_ = ceiling;
     threshold_ = ceiling * db_to_gain(threshold_db);
-    delay_.assign(static_cast<size_t>(lookahead_), 0.0f);
+    delay_.assign(static_cast<size_t>(lookahead_), 0.0);
     held_gain_.assign(static_cast<size_t>(lookahead_), 1.0);
     minimum_.assign(static_cast<size_t>(lookahead_ + 2), {0, 1.0});
     reset();
 }
 
 void PeakLimiter::reset() noexcept {
-    std::fill(delay_.begin(), delay_.end(), 0.0f);
+    std::fill(delay_.begin(), delay_.end(), 0.0);
     std::fill(held_gain_.begin(), held_gain_.end(), 1.0);
     minimum_head_ = minimum_size_ = 0;
     time_ = 0;
@@ -33,7 +33,8 @@ double PeakLimiter::curve(double peak) const noexcept {
     if (peak <= threshold_) return peak;
     const double knee = ceiling_ - threshold_;
     if (knee <= 0.0) return ceiling_;
-    return threshold_ + knee * (1.0 - std::exp(-(peak - threshold_) / knee));
+    const double u = (peak - threshold_) / knee;
+    return threshold_ + knee * u / (1.0 + u);
 }
 
 void PeakLimiter::process(float* samples, int count) noexcept {
@@ -69,7 +70,7 @@ void PeakLimiter::process(float* samples, int count) noexcept {
         const double gain = std::min(1.0, box_sum_ / static_cast<double>(length));
 
         const double delayed = delay_[slot];
-        delay_[slot] = static_cast<float>(x);
+        delay_[slot] = x;
         const double y = std::clamp(delayed * gain, -ceiling_, ceiling_);
         samples[i] = static_cast<float>(y);
         ++time_;

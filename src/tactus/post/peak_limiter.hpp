@@ -1,9 +1,10 @@
 // Look-ahead peak limiter with a soft knee and a hard ceiling (the role of omx.peaklim~ in the
 // paper, §6: "dynamic range is then reduced so that quieter vibrotactile events are not lost").
 // Each sample's magnitude p asks for the output level
-//   p                                   for p <= T
-//   T + (C - T) (1 - exp(-(p - T) / (C - T)))   above: rises with p, never reaches C,
-// so louder input always gives louder output (the order of dynamics is kept). The required gain
+//   p                          for p <= T
+//   T + (C - T) u / (1 + u)    above, u = (p - T) / (C - T): slope 1 at T, rising with p and
+// approaching C only as 1/u, so louder input always gives louder output (the order of dynamics
+// is kept) even 60 dB over the knee. The required gain
 // is held for the look-ahead (sliding minimum) and averaged over it (box filter), which
 // guarantees the gain is fully down when the peak leaves the delay line; recovery is a one-pole
 // release. Non-finite input is treated as 0.
@@ -28,7 +29,7 @@ public:
 private:
     int lookahead_ = 1;
     double drive_ = 1, threshold_ = 0.5, ceiling_ = 1, release_ = 0;
-    std::vector<float> delay_;              // look-ahead delay line
+    std::vector<double> delay_;             // look-ahead delay line (double: no overflow)
     std::vector<double> held_gain_;         // ring for the box average
     std::vector<std::pair<int64_t, double>> minimum_;  // monotonic deque (ring) for sliding min
     size_t minimum_head_ = 0, minimum_size_ = 0;

@@ -16,7 +16,7 @@ namespace tactus {
 class PostChain {
 public:
     static constexpr int kFirstBandOrder = 8;
-    static constexpr int kLastBandOrder = 4;
+    static constexpr int kLastBandOrder = 2;
     static constexpr double kRingingMarginDb = 1.0;
 
     void prepare(double sample_rate_hz, const Settings& settings);  // may allocate

@@ -14,6 +14,7 @@ void Oscillator::prepare(double sample_rate_hz, double harmonic_limit_hz) {
 }
 
 double Oscillator::next(double frequency_hz, double square_mix) noexcept {
+    if (!std::isfinite(frequency_hz)) frequency_hz = 0.0;  // never let NaN into the phase
     const double angle = 2.0 * kPi * phase_;
     phase_ += frequency_hz / sample_rate_hz_;
     phase_ -= std::floor(phase_);
@@ -21,14 +22,16 @@ double Oscillator::next(double frequency_hz, double square_mix) noexcept {
     const double fundamental = std::sin(angle);
     if (!(square_mix > 0.0 && frequency_hz > 0.0)) return fundamental;
 
-    // Odd harmonics below the limit; weight fades linearly over the last 2 f0 below it.
+    // Odd harmonics below the limit; each above the fundamental fades in linearly over the last
+    // 2 f0 below the limit, so partials enter and leave without clicks as f0 moves.
     const double two_cos = 2.0 * std::cos(2.0 * angle);
     double previous = -fundamental, current = fundamental;  // sin(-x), sin(x)
     double square = 0.0;
     const int last_harmonic = static_cast<int>(harmonic_limit_hz_ / frequency_hz);
     for (int k = 1; k <= last_harmonic; k += 2) {
-        const double weight = std::min(1.0, (harmonic_limit_hz_ - k * frequency_hz) /
-                                                (2.0 * frequency_hz));
+        const double weight =
+            k == 1 ? 1.0
+                   : std::min(1.0, (harmonic_limit_hz_ - k * frequency_hz) / (2.0 * frequency_hz));
         square += weight * current / k;
         const double next_harmonic = two_cos * current - previous;
         previous = current;

@@ -1,0 +1,114 @@
+// Mapper: above the loudness gate the three mappings and the onset trigger pass; below it the
+// amplitude is 0, triggers are dropped, and frequency and square mix hold their last values;
+// envelope settings and the frame's sample are carried into every ControlFrame.
+#include "tactus/mapping/mapper.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace tactus {
+namespace {
+
+// Every mapping parameter set explicitly (the defaults are tuned elsewhere).
+Settings immediate_settings() {
+    Settings s;
+    s.set(P::mapping_gate_db, -70);
+    s.set(P::amplitude_source, static_cast<double>(FeatureSource::loudness_db));
+    s.set(P::amplitude_in_min, -60);
+    s.set(P::amplitude_in_max, 0);
+    s.set(P::amplitude_out_min, 0.03);
+    s.set(P::amplitude_out_max, 1);
+    s.set(P::amplitude_curve, static_cast<double>(MappingCurve::exp));
+    s.set(P::frequency_source, static_cast<double>(FeatureSource::brightness_hz));
+    s.set(P::frequency_in_min, 150);
+    s.set(P::frequency_in_max, 6000);
+    s.set(P::frequency_out_min, 50);
+    s.set(P::frequency_out_max, 320);
+    s.set(P::frequency_curve, static_cast<double>(MappingCurve::log));
+    s.set(P::square_mix_source, static_cast<double>(FeatureSource::tonality));
+    s.set(P::square_mix_in_min, 0.3);
+    s.set(P::square_mix_in_max, 0.9);
+    s.set(P::square_mix_out_min, 0);
+    s.set(P::square_mix_out_max, 1);
+    s.set(P::square_mix_curve, static_cast<double>(MappingCurve::lin));
+    s.set(P::frequency_smoothing_ms, 0);
+    s.set(P::square_mix_smoothing_ms, 0);
+    s.set(P::amplitude_smoothing_ms, 0);
+    s.set(P::envelope_attack_ms, 2);
+    s.set(P::envelope_decay_ms, 300);
+    s.set(P::envelope_sustain, 0.25);
+    return s;
+}
+
+Features frame(int64_t end, double loudness_db, double brightness_hz, double noisiness,
+               bool onset) {
+    Features f;
+    f.frame_end_sample = end;
+    f.loudness_db = loudness_db;
+    f.brightness_hz = brightness_hz;
+    f.noisiness = noisiness;
+    f.onset = onset;
+    f.onset_sample = end - 10;
+    return f;
+}
+
+TEST(Mapper, AboveTheGateEverythingPasses) {
+    Mapper mapper;
+    mapper.prepare(immediate_settings(), 345.0);
+    const ControlFrame c = mapper.map(frame(1000, -30, std::sqrt(150.0 * 6000.0), 0.4, true));
+    EXPECT_EQ(c.sample, 1000);
+    EXPECT_NEAR(c.amplitude, std::sqrt(0.03), 1e-9);               // exp: -30 dB of -60...0
+    EXPECT_NEAR(c.frequency_hz, std::sqrt(50.0 * 320.0), 1e-9);     // log: geometric middle
+    EXPECT_NEAR(c.square_mix, (0.6 - 0.3) / (0.9 - 0.3), 1e-9);     // tonality 0.6
+    EXPECT_TRUE(c.trigger);
+    EXPECT_EQ(c.attack_ms, 2);
+    EXPECT_EQ(c.decay_ms, 300);
+    EXPECT_EQ(c.sustain, 0.25);
+}
+
+TEST(Mapper, BelowTheGateSilentNoTriggerAndHeldCarrier) {
+    Mapper mapper;
+    mapper.prepare(immediate_settings(), 345.0);
+    const ControlFrame loud = mapper.map(frame(100, -20, 1000, 0.5, false));
+    EXPECT_GT(loud.amplitude, 0.0);
+    for (double quiet_db : {-70.01, -90.0, -120.0}) {
+        const ControlFrame quiet = mapper.map(frame(200, quiet_db, 5000, 0.05, true));
+        EXPECT_EQ(quiet.amplitude, 0.0) << quiet_db;
+        EXPECT_FALSE(quiet.trigger) << quiet_db;
+        EXPECT_EQ(quiet.frequency_hz, loud.frequency_hz) << quiet_db;
+        EXPECT_EQ(quiet.square_mix, loud.square_mix) << quiet_db;
+        EXPECT_EQ(quiet.sample, 200);
+        EXPECT_EQ(quiet.decay_ms, 300);
+    }
+    // Exactly at the gate counts as above it.
+    const ControlFrame at_gate = mapper.map(frame(300, -70, 1000, 0.5, true));
+    EXPECT_GT(at_gate.amplitude, 0.0);
+    EXPECT_TRUE(at_gate.trigger);
+}
+
+TEST(Mapper, SmoothedAmplitudeRestartsFromZeroAfterTheGate) {
+    Settings s = immediate_settings();
+    s.set(P::amplitude_smoothing_ms, 100);
+    Mapper mapper;
+    mapper.prepare(s, 100.0);  // 10 frames per time constant
+    double a = 0.0;
+    for (int i = 0; i < 200; ++i) a = mapper.map(frame(i, 0, 1000, 0.5, false)).amplitude;
+    EXPECT_NEAR(a, 1.0, 1e-6);
+    EXPECT_EQ(mapper.map(frame(200, -100, 1000, 0.5, false)).amplitude, 0.0);
+    const double first = mapper.map(frame(201, 0, 1000, 0.5, false)).amplitude;
+    EXPECT_NEAR(first, 1.0 - std::exp(-0.1), 1e-9);
+}
+
+TEST(Mapper, ResetStartsTheCarrierAtTheMappingsOfZero) {
+    Mapper mapper;
+    mapper.prepare(immediate_settings(), 345.0);
+    // Before any sound the carrier holds what each mapping gives an input of 0.
+    const ControlFrame c = mapper.map(frame(0, -120, 0, 0, false));
+    EXPECT_EQ(c.amplitude, 0.0);
+    EXPECT_NEAR(c.frequency_hz, 50.0, 1e-9);
+    EXPECT_NEAR(c.square_mix, 0.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace tactus

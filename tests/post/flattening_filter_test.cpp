@@ -1,0 +1,108 @@
+// FlatteningFilter: the measured response (sines through process(), steady-state RMS gain)
+// follows target_db() within 1 dB over the P channel's 40-500 Hz at several sample rates (the
+// largest deviation is printed), magnitude_db() describes what process() does, the filter never
+// boosts in the band, the target is the inverted P-threshold curve, scaled by strength and
+// bounded by range_db.
+#include "tactus/post/flattening_filter.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+#include "support/signals.hpp"
+#include "tactus/perception/threshold.hpp"
+
+namespace tactus {
+namespace {
+
+class FlatteningAtRate : public ::testing::TestWithParam<double> {};
+
+TEST_P(FlatteningAtRate, MeasuredResponseFollowsTargetWithinOneDb) {
+    const double fs = GetParam();
+    FlatteningFilter design;
+    design.prepare(fs, 20.0, 1000.0, 1.0, 30.0);
+    double worst = 0.0, worst_hz = 0.0, worst_design = 0.0;
+    for (int i = 0; i <= 24; ++i) {
+        const double f = 40.0 * std::pow(500.0 / 40.0, i / 24.0);
+        FlatteningFilter filter;
+        filter.prepare(fs, 20.0, 1000.0, 1.0, 30.0);
+        const double measured = test::measured_gain_db(
+            [&](float* x, int n) { filter.process(x, n); }, f, fs);
+        const double deviation = measured - design.target_db(f);
+        if (std::abs(deviation) > std::abs(worst)) worst = deviation, worst_hz = f;
+        worst_design = std::max(worst_design, std::abs(measured - design.magnitude_db(f)));
+        EXPECT_NEAR(measured, design.target_db(f), 1.0) << f << " Hz at " << fs << " Hz";
+        // magnitude_db() reports what process() does.
+        EXPECT_NEAR(measured, design.magnitude_db(f), 0.05) << f << " Hz at " << fs << " Hz";
+    }
+    std::cout << "[ flatten  ] " << fs << " Hz: max |measured - target| over 40-500 Hz = "
+              << std::abs(worst) << " dB (at " << worst_hz << " Hz); max |measured - "
+              << "magnitude_db| = " << worst_design << " dB\n";
+}
+
+TEST_P(FlatteningAtRate, NeverBoostsInTheBand) {
+    const double fs = GetParam();
+    for (double strength : {0.25, 1.0}) {
+        for (double range : {10.0, 30.0, 40.0}) {
+            FlatteningFilter design;
+            design.prepare(fs, 20.0, 1000.0, strength, range);
+            for (double f = 20.0; f <= 1000.0; f *= 1.05)
+                EXPECT_LE(design.magnitude_db(f), 0.5)
+                    << f << " Hz, strength " << strength << ", range " << range;
+            for (double f : {20.0, 40.0, 63.0, 1000.0}) {
+                FlatteningFilter filter;
+                filter.prepare(fs, 20.0, 1000.0, strength, range);
+                EXPECT_LE(test::measured_gain_db([&](float* x, int n) { filter.process(x, n); },
+                                                 f, fs),
+                          0.5)
+                    << f << " Hz, strength " << strength << ", range " << range;
+            }
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Rates, FlatteningAtRate,
+                         ::testing::Values(8000.0, 44100.0, 48000.0, 96000.0, 192000.0));
+
+TEST(FlatteningFilter, TargetIsTheInvertedThresholdCurve) {
+    FlatteningFilter filter;
+    filter.prepare(48000.0, 20.0, 1000.0, 1.0, 40.0);
+    // The least sensitive frequency of the band (40 Hz and, flat, below) passes at unity.
+    const double reference = perception::p_threshold_db(40.0);
+    EXPECT_NEAR(filter.target_db(40.0), 0.0, 1e-9);
+    EXPECT_NEAR(filter.target_db(20.0), 0.0, 1e-9);
+    for (double f : {63.0, 125.0, 250.0, 500.0, 1000.0})
+        EXPECT_NEAR(filter.target_db(f), perception::p_threshold_db(f) - reference, 1e-9) << f;
+    EXPECT_NEAR(filter.target_db(250.0), -20.0 - reference, 1e-9);  // deepest at 250 Hz
+
+    filter.prepare(48000.0, 20.0, 1000.0, 0.5, 40.0);
+    EXPECT_NEAR(filter.target_db(250.0), 0.5 * (-20.0 - reference), 1e-9);
+
+    filter.prepare(48000.0, 20.0, 1000.0, 1.0, 12.0);
+    for (double f = 20.0; f <= 1000.0; f *= 1.1) EXPECT_GE(filter.target_db(f), -12.0 - 1e-9);
+    EXPECT_NEAR(filter.target_db(250.0), -12.0, 1e-9);
+}
+
+TEST(FlatteningFilter, ZeroStrengthIsFlat) {
+    FlatteningFilter filter;
+    filter.prepare(48000.0, 20.0, 1000.0, 0.0, 30.0);
+    for (double f = 20.0; f <= 1000.0; f *= 1.1) {
+        EXPECT_EQ(filter.target_db(f), 0.0);
+        EXPECT_NEAR(filter.magnitude_db(f), 0.0, 0.05) << f;
+    }
+}
+
+TEST(FlatteningFilter, ResetGivesTheSameOutputAgain) {
+    FlatteningFilter filter;
+    filter.prepare(44100.0, 20.0, 1000.0, 1.0, 30.0);
+    std::vector<float> a = test::white_noise(8192, 3), b = a;
+    filter.process(a.data(), static_cast<int>(a.size()));
+    filter.reset();
+    filter.process(b.data(), static_cast<int>(b.size()));
+    EXPECT_EQ(a, b);
+}
+
+}  // namespace
+}  // namespace tactus

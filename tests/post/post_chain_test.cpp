@@ -1,0 +1,149 @@
+// PostChain: the output never exceeds the ceiling (0 dB and lowered ceilings) on hostile input;
+// the final safety clip does not have to act on full-scale signals (the limiter's 1 dB margin
+// is meant to absorb the last band-limit's ringing); non-finite input gives finite output;
+// latency is the limiter's; below the limiter threshold the chain is the product of its filters.
+#include "tactus/post/post_chain.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "support/signals.hpp"
+#include "tactus/core/units.hpp"
+
+namespace tactus {
+namespace {
+
+std::vector<std::pair<std::string, std::vector<float>>> loud_inputs(double fs) {
+    std::vector<std::pair<std::string, std::vector<float>>> inputs;
+    const auto n = static_cast<size_t>(2 * fs);
+    inputs.emplace_back("noise +40 dB", test::white_noise(n, 21, 100.0));
+    for (double f : {50.0, 120.0, 250.0, 400.0}) {
+        std::vector<float> square(n);
+        for (size_t i = 0; i < n; ++i)
+            square[i] = std::fmod(double(i) * f / fs, 1.0) < 0.5 ? 1.0f : -1.0f;
+        inputs.emplace_back("square " + std::to_string(f) + " Hz", square);
+    }
+    std::vector<float> impulses(n, 0.0f);
+    for (size_t i = 100; i < n; i += 2400) impulses[i] = 50.0f;
+    inputs.emplace_back("impulses", impulses);
+    test::DrumSignal drums = test::drum_pattern(fs, 2.0, 3);
+    for (auto& v : drums.audio) v *= 4.0f;
+    inputs.emplace_back("drums +12 dB", drums.audio);
+    return inputs;
+}
+
+TEST(PostChain, NeverAboveTheCeiling) {
+    for (double ceiling_db : {0.0, -6.0, -20.0}) {
+        for (double drive_db : {0.0, 20.0}) {
+            Settings settings;
+            settings.set(P::post_ceiling_db, ceiling_db);
+            settings.set(P::post_drive_db, drive_db);
+            const double fs = 48000;
+            for (auto& [name, input] : loud_inputs(fs)) {
+                PostChain chain;
+                chain.prepare(fs, settings);
+                EXPECT_DOUBLE_EQ(chain.ceiling(), db_to_gain(ceiling_db));
+                std::vector<float> y = input;
+                chain.process(y.data(), static_cast<int>(y.size()));
+                // Output samples are floats: the bound is the ceiling as a float sample value.
+                EXPECT_LE(test::peak(y), static_cast<float>(chain.ceiling()))
+                    << name << ", ceiling " << ceiling_db << " dB, drive " << drive_db << " dB";
+            }
+        }
+    }
+}
+
+std::vector<std::pair<std::string, std::vector<float>>> full_scale_inputs(double fs) {
+    std::vector<std::pair<std::string, std::vector<float>>> inputs;
+    const auto n = static_cast<size_t>(2 * fs);
+    inputs.emplace_back("noise 0 dBFS", test::white_noise(n, 22, 1.0));
+    for (double f : {50.0, 120.0, 250.0, 400.0}) {
+        std::vector<float> square(n);
+        for (size_t i = 0; i < n; ++i)
+            square[i] = std::fmod(double(i) * f / fs, 1.0) < 0.5 ? 1.0f : -1.0f;
+        inputs.emplace_back("square " + std::to_string(f) + " Hz", square);
+    }
+    test::DrumSignal drums = test::drum_pattern(fs, 2.0, 3);
+    const double scale = 1.0 / test::peak(drums.audio);
+    for (auto& v : drums.audio) v = static_cast<float>(v * scale);
+    inputs.emplace_back("drums 0 dBFS", drums.audio);
+    return inputs;
+}
+
+// The header: the final clip "should not" act (the limiter sits 1 dB under the ceiling for the
+// last band-limit's ringing); clipped_samples() counts when it does. Full-scale input, drive
+// from 0 dB to +20 dB (the parameter allows +40).
+TEST(PostChain, FinalClipDoesNotActOnFullScaleSignals) {
+    for (double fs : {44100.0, 48000.0, 96000.0}) {
+        for (double drive_db : {0.0, 12.0, 20.0}) {
+            Settings settings;
+            settings.set(P::post_drive_db, drive_db);
+            for (auto& [name, input] : full_scale_inputs(fs)) {
+                PostChain chain;
+                chain.prepare(fs, settings);
+                std::vector<float> y = input;
+                chain.process(y.data(), static_cast<int>(y.size()));
+                EXPECT_EQ(chain.clipped_samples(), 0)
+                    << name << " at " << fs << " Hz, drive " << drive_db << " dB";
+            }
+        }
+    }
+}
+
+TEST(PostChain, NonFiniteInputGivesFiniteOutput) {
+    PostChain chain;
+    chain.prepare(48000, Settings{});
+    std::vector<float> x = test::sine(200.0, 48000, 48000, 0.5);
+    for (size_t i = 7; i < x.size(); i += 113)
+        x[i] = i % 3 == 0   ? std::numeric_limits<float>::quiet_NaN()
+               : i % 3 == 1 ? std::numeric_limits<float>::infinity()
+                            : -std::numeric_limits<float>::infinity();
+    chain.process(x.data(), static_cast<int>(x.size()));
+    for (size_t i = 0; i < x.size(); ++i) {
+        ASSERT_TRUE(std::isfinite(x[i])) << i;
+        ASSERT_LE(std::abs(x[i]), 1.0f) << i;
+    }
+}
+
+TEST(PostChain, LatencyIsTheLimiterLookahead) {
+    for (double fs : {8000.0, 48000.0, 192000.0}) {
+        Settings settings;
+        settings.set(P::post_lookahead_ms, 2.0);
+        PostChain chain;
+        chain.prepare(fs, settings);
+        EXPECT_EQ(chain.latency_samples(), std::llround(2e-3 * fs)) << fs;
+    }
+}
+
+TEST(PostChain, QuietSineIsShapedOnlyByTheFiltersAndDrive) {
+    // Below the limiter threshold the chain is linear: its gain is the product of the two
+    // band-limits, the flattening filter and the drive.
+    const double fs = 48000;
+    for (double drive_db : {0.0, 6.0}) {
+        Settings settings;
+        settings.set(P::post_band_low_hz, 25);
+        settings.set(P::post_band_high_hz, 900);
+        settings.set(P::post_drive_db, drive_db);
+        settings.set(P::post_limiter_threshold_db, -6);
+        PostChain chain;
+        chain.prepare(fs, settings);
+        BandLimit first, last;
+        first.prepare(fs, 25, 900, PostChain::kFirstBandOrder);
+        last.prepare(fs, 25, 900, PostChain::kLastBandOrder);
+        for (double f : {40.0, 100.0, 250.0, 600.0}) {
+            chain.reset();
+            const double expected = first.magnitude_db(f) + last.magnitude_db(f) +
+                                    chain.flattening().magnitude_db(f) + drive_db;
+            const double measured = test::measured_gain_db(
+                [&](float* x, int n) { chain.process(x, n); }, f, fs, 1.0, 0.5, 0.05);
+            EXPECT_NEAR(measured, expected, 0.05) << f << " Hz, drive " << drive_db << " dB";
+        }
+    }
+}
+
+}  // namespace
+}  // namespace tactus

@@ -1,0 +1,303 @@
+// Real-time safety of Engine::process(): this executable replaces every global allocation
+// function (operator new/delete in all forms; malloc, calloc, realloc, free, aligned_alloc,
+// posix_memalign, memalign, valloc, pvalloc, forwarding to glibc's __libc_* functions) and
+// pthread_mutex_lock, and counts the calls made while a thread-local guard is set. The guard is
+// set only around process() calls on long, varied input (drum-like hits, silence, quiet passages,
+// NaN/Inf/denormal samples, odd block sizes) at several sample rates: no allocation and no mutex
+// lock may happen. Sanity tests prove the guard does see allocations and locks.
+#include <dlfcn.h>
+#include <pthread.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstddef>
+#include <cstdlib>
+#include <limits>
+#include <mutex>
+#include <new>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "support/signals.hpp"
+#include "tactus/engine/engine.hpp"
+
+extern "C" {
+void* __libc_malloc(size_t size);
+void* __libc_calloc(size_t count, size_t size);
+void* __libc_realloc(void* pointer, size_t size);
+void __libc_free(void* pointer);
+void* __libc_memalign(size_t alignment, size_t size);
+void* __libc_valloc(size_t size);
+void* __libc_pvalloc(size_t size);
+}
+
+namespace {
+
+constinit thread_local bool t_guarded = false;
+std::atomic<long> g_allocator_calls{0};
+std::atomic<long> g_mutex_locks{0};
+
+inline void note_allocator_call() {
+    if (t_guarded) g_allocator_calls.fetch_add(1, std::memory_order_relaxed);
+}
+
+void* allocate_or_throw(size_t size) {
+    note_allocator_call();
+    if (void* p = __libc_malloc(size == 0 ? 1 : size)) return p;
+    throw std::bad_alloc();
+}
+
+void* allocate_aligned_or_throw(size_t size, std::align_val_t alignment) {
+    note_allocator_call();
+    if (void* p = __libc_memalign(static_cast<size_t>(alignment), size == 0 ? 1 : size)) return p;
+    throw std::bad_alloc();
+}
+
+void release(void* pointer) {
+    note_allocator_call();
+    __libc_free(pointer);
+}
+
+using LockFunction = int (*)(pthread_mutex_t*);
+std::atomic<LockFunction> g_real_lock{nullptr};
+
+// Counts allocator and lock calls on this thread while alive.
+class Guard {
+public:
+    Guard() { t_guarded = true; }
+    ~Guard() { t_guarded = false; }
+    Guard(const Guard&) = delete;
+    Guard& operator=(const Guard&) = delete;
+};
+
+void reset_counts() {
+    g_allocator_calls = 0;
+    g_mutex_locks = 0;
+}
+
+// Keeps the compiler from optimising an allocation away.
+void escape(const void* pointer) { asm volatile("" : : "g"(pointer) : "memory"); }
+
+}  // namespace
+
+// ---- C allocation functions ----
+extern "C" {
+void* malloc(size_t size) noexcept {
+    note_allocator_call();
+    return __libc_malloc(size);
+}
+void* calloc(size_t count, size_t size) noexcept {
+    note_allocator_call();
+    return __libc_calloc(count, size);
+}
+void* realloc(void* pointer, size_t size) noexcept {
+    note_allocator_call();
+    return __libc_realloc(pointer, size);
+}
+void free(void* pointer) noexcept {
+    note_allocator_call();
+    __libc_free(pointer);
+}
+void* aligned_alloc(size_t alignment, size_t size) noexcept {
+    note_allocator_call();
+    return __libc_memalign(alignment, size);
+}
+void* memalign(size_t alignment, size_t size) noexcept {
+    note_allocator_call();
+    return __libc_memalign(alignment, size);
+}
+int posix_memalign(void** out, size_t alignment, size_t size) noexcept {
+    note_allocator_call();
+    if (alignment % sizeof(void*) != 0 || (alignment & (alignment - 1)) != 0) return EINVAL;
+    void* p = __libc_memalign(alignment, size);
+    if (!p) return ENOMEM;
+    *out = p;
+    return 0;
+}
+void* valloc(size_t size) noexcept {
+    note_allocator_call();
+    return __libc_valloc(size);
+}
+void* pvalloc(size_t size) noexcept {
+    note_allocator_call();
+    return __libc_pvalloc(size);
+}
+
+int pthread_mutex_lock(pthread_mutex_t* mutex) noexcept {
+    if (t_guarded) g_mutex_locks.fetch_add(1, std::memory_order_relaxed);
+    LockFunction real = g_real_lock.load(std::memory_order_acquire);
+    if (!real) {
+        real = reinterpret_cast<LockFunction>(dlsym(RTLD_NEXT, "pthread_mutex_lock"));
+        g_real_lock.store(real, std::memory_order_release);
+    }
+    return real(mutex);
+}
+}
+
+// ---- C++ allocation functions, every replaceable form ----
+void* operator new(size_t size) { return allocate_or_throw(size); }
+void* operator new[](size_t size) { return allocate_or_throw(size); }
+void* operator new(size_t size, const std::nothrow_t&) noexcept {
+    note_allocator_call();
+    return __libc_malloc(size == 0 ? 1 : size);
+}
+void* operator new[](size_t size, const std::nothrow_t&) noexcept {
+    note_allocator_call();
+    return __libc_malloc(size == 0 ? 1 : size);
+}
+void* operator new(size_t size, std::align_val_t alignment) {
+    return allocate_aligned_or_throw(size, alignment);
+}
+void* operator new[](size_t size, std::align_val_t alignment) {
+    return allocate_aligned_or_throw(size, alignment);
+}
+void* operator new(size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
+    note_allocator_call();
+    return __libc_memalign(static_cast<size_t>(alignment), size == 0 ? 1 : size);
+}
+void* operator new[](size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
+    note_allocator_call();
+    return __libc_memalign(static_cast<size_t>(alignment), size == 0 ? 1 : size);
+}
+void operator delete(void* p) noexcept { release(p); }
+void operator delete[](void* p) noexcept { release(p); }
+void operator delete(void* p, size_t) noexcept { release(p); }
+void operator delete[](void* p, size_t) noexcept { release(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { release(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { release(p); }
+void operator delete(void* p, std::align_val_t) noexcept { release(p); }
+void operator delete[](void* p, std::align_val_t) noexcept { release(p); }
+void operator delete(void* p, size_t, std::align_val_t) noexcept { release(p); }
+void operator delete[](void* p, size_t, std::align_val_t) noexcept { release(p); }
+void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept { release(p); }
+void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept { release(p); }
+
+namespace tactus {
+namespace {
+
+// The guard must be able to fail: these show it sees what the engine test looks for.
+TEST(Guard, SeesVectorGrowth) {
+    reset_counts();
+    {
+        Guard guard;
+        std::vector<int> v;
+        v.push_back(1);
+        escape(v.data());
+    }
+    EXPECT_GT(g_allocator_calls.load(), 0);
+}
+
+TEST(Guard, SeesMallocAndAlignedNew) {
+    reset_counts();
+    {
+        Guard guard;
+        void* p = std::malloc(64);
+        escape(p);
+        std::free(p);
+    }
+    EXPECT_EQ(g_allocator_calls.load(), 2);
+    reset_counts();
+    {
+        Guard guard;
+        struct alignas(64) Wide {
+            float x[16];
+        };
+        auto* w = new Wide;
+        escape(w);
+        delete w;
+    }
+    EXPECT_EQ(g_allocator_calls.load(), 2);
+}
+
+TEST(Guard, SeesMutexLocks) {
+    std::mutex mutex;
+    reset_counts();
+    {
+        Guard guard;
+        mutex.lock();
+        mutex.unlock();
+    }
+    EXPECT_EQ(g_mutex_locks.load(), 1);
+    EXPECT_EQ(g_allocator_calls.load(), 0);
+}
+
+// The library's own allocations and locks are seen too: prepare() allocates (vectors, FFTW
+// buffers) and takes the FFTW planner mutex.
+TEST(Guard, SeesTheLibrarysAllocationsAndLocks) {
+    Engine engine;
+    reset_counts();
+    {
+        Guard guard;
+        engine.prepare(48000, 512);
+    }
+    EXPECT_GT(g_allocator_calls.load(), 0);
+    EXPECT_GT(g_mutex_locks.load(), 0);
+}
+
+TEST(Guard, CountsNothingOutsideTheGuard) {
+    reset_counts();
+    std::vector<int> v(1000, 1);
+    escape(v.data());
+    std::mutex mutex;
+    mutex.lock();
+    mutex.unlock();
+    EXPECT_EQ(g_allocator_calls.load(), 0);
+    EXPECT_EQ(g_mutex_locks.load(), 0);
+}
+
+// Long varied input: drum hits, digital silence, a quiet passage, NaN/Inf/denormal samples and
+// an all-NaN stretch.
+std::vector<float> varied_input(double fs) {
+    test::DrumSignal drums = test::drum_pattern(fs, 12.0, 42);
+    std::vector<float>& x = drums.audio;
+    const float specials[] = {std::numeric_limits<float>::quiet_NaN(),
+                              std::numeric_limits<float>::infinity(),
+                              -std::numeric_limits<float>::infinity(),
+                              std::numeric_limits<float>::denorm_min()};
+    for (size_t i = 101, k = 0; i < x.size(); i += 4099, ++k) x[i] = specials[k % 4];
+    for (size_t i = static_cast<size_t>(7 * fs); i < static_cast<size_t>(7.3 * fs); ++i)
+        x[i] = std::numeric_limits<float>::quiet_NaN();
+    const auto tone = test::sine(220.0, fs, static_cast<size_t>(fs), 0.5);
+    std::copy(tone.begin(), tone.end(), x.begin() + static_cast<long>(9 * fs));
+    return x;
+}
+
+void expect_process_is_real_time_safe(double fs, const Settings& settings) {
+    const std::vector<float> x = varied_input(fs);
+    std::vector<float> y(x.size());
+    Engine engine(settings);
+    engine.prepare(fs, Engine::kMaxBlock);  // may allocate: outside the guard
+    const int sizes[] = {1, 7, 64, 480, 4096, 13, 1024, 139, 2};
+    reset_counts();
+    size_t done = 0;
+    for (size_t b = 0; done < x.size(); ++b) {
+        const int count = static_cast<int>(std::min<size_t>(x.size() - done, sizes[b % 9]));
+        {
+            Guard guard;
+            engine.process(x.data() + done, y.data() + done, count);
+        }
+        done += static_cast<size_t>(count);
+    }
+    EXPECT_EQ(g_allocator_calls.load(), 0) << "allocator calls inside process() at " << fs << " Hz";
+    EXPECT_EQ(g_mutex_locks.load(), 0) << "mutex locks inside process() at " << fs << " Hz";
+    EXPECT_GT(test::peak(y), 0.05) << "the input must exercise the whole pipeline";
+}
+
+TEST(RealTime, EngineProcessNeitherAllocatesNorLocks) {
+    expect_process_is_real_time_safe(48000, Settings{});
+}
+
+TEST(RealTime, AtOtherRatesAndSettings) {
+    expect_process_is_real_time_safe(8000, Settings{});
+    expect_process_is_real_time_safe(192000, Settings{});
+    Settings s;
+    s.set(P::envelope_sustain, 0.3);
+    s.set(P::frequency_source, static_cast<double>(FeatureSource::pitch_hz));
+    s.set(P::amplitude_smoothing_ms, 20);
+    s.set(P::post_drive_db, 20);
+    expect_process_is_real_time_safe(44100, s);
+}
+
+}  // namespace
+}  // namespace tactus

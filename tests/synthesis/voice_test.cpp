@@ -1,0 +1,90 @@
+// Voice: silent (exact zeros) until triggered and again after the pulse has decayed; a pulse
+// is exactly amplitude glide x envelope x sine started at phase 0 (no click); a retrigger while
+// loud neither restarts the phase nor jumps; reset silences.
+#include "tactus/synthesis/voice.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "support/signals.hpp"
+#include "tactus/core/units.hpp"
+#include "tactus/synthesis/envelope.hpp"
+
+namespace tactus {
+namespace {
+
+ControlFrame pulse(double frequency_hz, double amplitude, bool trigger) {
+    ControlFrame f;
+    f.frequency_hz = frequency_hz;
+    f.amplitude = amplitude;
+    f.trigger = trigger;
+    f.attack_ms = 1;
+    f.decay_ms = 100;
+    f.sustain = 0;
+    return f;
+}
+
+TEST(Voice, SilentWithoutTrigger) {
+    Voice voice;
+    voice.prepare(48000, 1000);
+    voice.apply(pulse(100, 0.8, false));
+    std::vector<float> out(48000, 1.0f);
+    voice.render(out.data(), static_cast<int>(out.size()));
+    for (float v : out) ASSERT_EQ(v, 0.0f);
+}
+
+// Sample by sample: amplitude glides to its target with a 1 ms one-pole, times the envelope,
+// times a sine restarted at phase 0 by the trigger.
+TEST(Voice, PulseIsGlideTimesEnvelopeTimesSineFromZeroPhase) {
+    const double fs = 48000, f = 100, a = 0.5;
+    Voice voice;
+    voice.prepare(fs, 1000);
+    voice.apply(pulse(f, a, true));
+    std::vector<float> out(static_cast<size_t>(2 * fs));
+    voice.render(out.data(), static_cast<int>(out.size()));
+
+    Envelope env;
+    env.prepare(fs);
+    env.set_shape(1, 100, 0);
+    env.trigger();
+    const double g = std::exp(-1.0 / (1e-3 * fs));
+    double glide = 1.0;
+    for (size_t i = 0; i < static_cast<size_t>(0.3 * fs); ++i) {
+        glide *= g;
+        const double expected = a * (1.0 - glide) * env.next() * std::sin(2 * kPi * f * i / fs);
+        ASSERT_NEAR(out[i], expected, 1e-6) << "sample " << i;
+    }
+    EXPECT_EQ(out[0], 0.0f);  // sin(0): no click at the start
+    // Exact silence once the envelope is below -140 dB (100 ms per 60 dB: well within 1 s).
+    for (size_t i = static_cast<size_t>(fs); i < out.size(); ++i) ASSERT_EQ(out[i], 0.0f) << i;
+}
+
+TEST(Voice, RetriggerWhileLoudIsContinuous) {
+    const double fs = 48000;
+    Voice voice;
+    voice.prepare(fs, 1000);
+    voice.apply(pulse(120, 0.8, true));
+    std::vector<float> out(2400);
+    voice.render(out.data(), 1200);
+    voice.apply(pulse(120, 0.8, true));  // envelope still loud: phase continues
+    voice.render(out.data() + 1200, 1200);
+    // Largest step of an 0.8-amplitude 120 Hz sine: 0.8 * 2 pi 120 / fs ~ 0.0126.
+    for (size_t i = 1; i < out.size(); ++i)
+        ASSERT_LT(std::abs(out[i] - out[i - 1]), 0.02) << "jump at sample " << i;
+}
+
+TEST(Voice, ResetSilences) {
+    Voice voice;
+    voice.prepare(48000, 1000);
+    voice.apply(pulse(100, 1.0, true));
+    std::vector<float> out(480);
+    voice.render(out.data(), 480);
+    voice.reset();
+    voice.render(out.data(), 480);
+    for (float v : out) ASSERT_EQ(v, 0.0f);
+}
+
+}  // namespace
+}  // namespace tactus
