@@ -28,9 +28,9 @@ void WholePipeline(benchmark::State& state) {
             engine.process(input.data() + i, out.data(), kBlock);
         benchmark::DoNotOptimize(out.data());
     }
-    state.counters["x_real_time"] = benchmark::Counter(
-        static_cast<double>(input.size()) / 44100.0 * state.iterations(),
-        benchmark::Counter::kIsRate);
+    state.counters["x_real_time"] =
+        benchmark::Counter(static_cast<double>(input.size()) / 44100.0 * state.iterations(),
+                           benchmark::Counter::kIsRate);
 }
 BENCHMARK(WholePipeline)->Unit(benchmark::kMillisecond);
 

@@ -15,7 +15,7 @@ namespace {
 
 // Deterministic on every platform: no std:: distributions (their output is unspecified).
 class Random {
-public:
+  public:
     explicit Random(uint64_t seed) : state_(seed ^ 0x9E3779B97F4A7C15ull) {}
     uint64_t next() {  // splitmix64
         uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
@@ -31,7 +31,7 @@ public:
         return std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * 3.14159265358979323846 * v);
     }
 
-private:
+  private:
     uint64_t state_;
 };
 
@@ -55,15 +55,18 @@ const std::vector<float>& load(const std::string& name) {
 
 const std::string& sample_of(const DrumKit& kit, Instrument instrument) {
     switch (instrument) {
-        case Instrument::kick: return kit.kick;
-        case Instrument::snare: return kit.snare;
-        case Instrument::hat: break;
+        case Instrument::kick:
+            return kit.kick;
+        case Instrument::snare:
+            return kit.snare;
+        case Instrument::hat:
+            break;
     }
     return kit.hat;
 }
 
-void place(std::vector<float>& mix, const std::vector<float>& sample, double time_s,
-           double gain_db, double sample_rate_hz) {
+void place(std::vector<float>& mix, const std::vector<float>& sample, double time_s, double gain_db,
+           double sample_rate_hz) {
     const auto start = static_cast<size_t>(std::llround(time_s * sample_rate_hz));
     const float gain = static_cast<float>(std::pow(10.0, gain_db / 20.0));
     if (mix.size() < start + sample.size()) mix.resize(start + sample.size(), 0.0f);
@@ -73,7 +76,8 @@ void place(std::vector<float>& mix, const std::vector<float>& sample, double tim
 Track render(std::string name, const DrumKit& kit, std::vector<Hit> hits, double tail_s) {
     Track track;
     track.name = std::move(name);
-    std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) { return a.time_s < b.time_s; });
+    std::sort(hits.begin(), hits.end(),
+              [](const Hit& a, const Hit& b) { return a.time_s < b.time_s; });
     for (const Hit& h : hits) {
         place(track.audio, load(sample_of(kit, h.instrument)), h.time_s, h.gain_db,
               track.sample_rate_hz);
@@ -125,8 +129,8 @@ Track breakbeat(const DrumKit& kit, uint64_t seed, double noise_db) {
         for (int step = 0; step < kSteps; ++step) {
             const double t = lead_s + (bar * kSteps + step) * step_s;
             const bool backbeat = step == 4 || step == 12;
-            if (step == 0 || ((step == 6 || step == 8 || step == 10 || step == 11 ||
-                               step == 14) && random.chance(0.35)))
+            if (step == 0 || ((step == 6 || step == 8 || step == 10 || step == 11 || step == 14) &&
+                              random.chance(0.35)))
                 hits.push_back({t, Instrument::kick, random.uniform(-3.0, 0.0)});
             if (backbeat)
                 hits.push_back({t, Instrument::snare, random.uniform(-3.0, 0.0)});

@@ -28,8 +28,8 @@ struct Track {
     std::string name;
     double sample_rate_hz = 44100;
     std::vector<float> audio;
-    std::vector<Hit> hits;          // every hit placed
-    std::vector<double> onsets_s;   // ground truth: distinct hit times, ascending
+    std::vector<Hit> hits;         // every hit placed
+    std::vector<double> onsets_s;  // ground truth: distinct hit times, ascending
 };
 
 std::filesystem::path sample_directory();  // $TACTUS_SAMPLES or /usr/share/sonic-pi/samples

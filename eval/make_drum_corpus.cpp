@@ -1,12 +1,12 @@
 // make_drum_corpus OUTDIR [SEED]: writes the drum corpus (see drum_corpus.hpp) as float WAVs with
 // ground truth beside each: NAME.wav, NAME.onsets.txt (one onset per line, seconds) and
 // NAME.hits.csv (time_s,instrument,gain_db).
+#include <fmt/format.h>
+
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <string>
-
-#include <fmt/format.h>
 
 #include "drum_corpus.hpp"
 #include "tactus/io/audio_writer.hpp"

@@ -1,10 +1,9 @@
 // tactus analyze IN [-o FILE.csv|FILE.json]: every analysis frame's features and the vibration
 // parameters mapped from them. Streams: constant memory for any length.
-#include <iostream>
-
-#include <nlohmann/json.hpp>
-
 #include <fmt/format.h>
+
+#include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "common.hpp"
@@ -22,12 +21,12 @@ struct AnalyzeOptions {
 };
 
 constexpr const char* kColumns[] = {
-    "time_s",        "loudness_db", "brightness_hz", "noisiness",  "pitch_hz",
-    "pitch_confidence", "onset_odf", "onset",       "onset_time_s", "frequency_hz",
-    "amplitude",     "square_mix",  "trigger",      "attack_ms",  "decay_ms", "sustain"};
+    "time_s",    "loudness_db", "brightness_hz", "noisiness",    "pitch_hz",  "pitch_confidence",
+    "onset_odf", "onset",       "onset_time_s",  "frequency_hz", "amplitude", "square_mix",
+    "trigger",   "attack_ms",   "decay_ms",      "sustain"};
 
 class FrameWriter final : public FrameObserver {
-public:
+  public:
     FrameWriter(std::ostream& out, bool json, const Engine& engine)
         : out_(out), json_(json), engine_(engine) {
         if (json_) {
@@ -37,7 +36,9 @@ public:
             out_ << '\n';
         }
     }
-    void finish() { if (json_) out_ << "\n]\n"; }
+    void finish() {
+        if (json_) out_ << "\n]\n";
+    }
 
     void on_frame(const Features& f, const ControlFrame& c) noexcept override {
         const double sample_rate_hz = engine_.sample_rate_hz();
@@ -72,7 +73,7 @@ public:
     size_t rows() const { return rows_; }
     size_t onsets() const { return onsets_; }
 
-private:
+  private:
     std::ostream& out_;
     bool json_;
     const Engine& engine_;
@@ -96,9 +97,9 @@ void analyze(const AnalyzeOptions& o) {
     writer.finish();
     output.commit();
     if (!o.output.empty() && o.output != "-")
-        std::cerr << fmt::format("{}: {} frames every {:.2f} ms, {} onsets\n", o.output,
-                                 writer.rows(), 1e3 * engine.hop_samples() / engine.sample_rate_hz(),
-                                 writer.onsets());
+        std::cerr << fmt::format(
+            "{}: {} frames every {:.2f} ms, {} onsets\n", o.output, writer.rows(),
+            1e3 * engine.hop_samples() / engine.sample_rate_hz(), writer.onsets());
 }
 
 }  // namespace
@@ -107,8 +108,9 @@ void add_analyze(CLI::App& app) {
     auto options = std::make_shared<AnalyzeOptions>();
     CLI::App* command = app.add_subcommand(
         "analyze", "print features and vibration parameters for every analysis frame");
-    command->add_option("input", options->input, "audio file")->required()->check(
-        CLI::ExistingFile);
+    command->add_option("input", options->input, "audio file")
+        ->required()
+        ->check(CLI::ExistingFile);
     command->add_option("-o,--output", options->output,
                         "FILE.csv or FILE.json (default: CSV on stdout)");
     command->add_option("--format", options->format, "csv or json (default: from -o's extension)")

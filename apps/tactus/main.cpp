@@ -1,8 +1,7 @@
 // tactus: music -> vibrotactile feedback. Data on stdout, messages on stderr, non-zero exit on
 // any error.
-#include <iostream>
-
 #include <CLI/CLI.hpp>
+#include <iostream>
 
 #include "commands.hpp"
 

@@ -18,7 +18,7 @@ struct OnsetsOptions {
 };
 
 class OnsetWriter final : public FrameObserver {
-public:
+  public:
     OnsetWriter(std::ostream& out, const Engine& engine) : out_(out), engine_(engine) {}
     void on_frame(const Features& f, const ControlFrame&) noexcept override {
         if (!f.onset) return;
@@ -27,7 +27,7 @@ public:
                             f.frame_end_sample / sample_rate_hz, f.onset_odf);
     }
 
-private:
+  private:
     std::ostream& out_;
     const Engine& engine_;
 };
@@ -49,10 +49,11 @@ void onsets(const OnsetsOptions& o) {
 
 void add_onsets(CLI::App& app) {
     auto options = std::make_shared<OnsetsOptions>();
-    CLI::App* command = app.add_subcommand(
-        "onsets", "print one onset per line: onset_s decided_s strength");
-    command->add_option("input", options->input, "audio file")->required()->check(
-        CLI::ExistingFile);
+    CLI::App* command =
+        app.add_subcommand("onsets", "print one onset per line: onset_s decided_s strength");
+    command->add_option("input", options->input, "audio file")
+        ->required()
+        ->check(CLI::ExistingFile);
     command->add_option("-o,--output", options->output, "file to write (default: stdout)");
     options->pipeline.add_to(*command);
     command->callback([options] { onsets(*options); });

@@ -2,10 +2,9 @@
 // validated) before any audio is read.
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
-
-#include <CLI/CLI.hpp>
 
 #include "tactus/core/params.hpp"
 

@@ -1,7 +1,7 @@
 // tactus presets [--params]: the presets found, or the parameter table they draw on.
-#include <iostream>
-
 #include <fmt/format.h>
+
+#include <iostream>
 
 #include "commands.hpp"
 #include "tactus/core/params.hpp"
@@ -19,8 +19,8 @@ void print_params() {
         std::string range_min = fmt::format("{:g}", s.min), range_max = fmt::format("{:g}", s.max);
         if (s.kind == ParamKind::choice) range_min = range_max = "";
         std::cout << fmt::format("{:<34} {:>10} {:>10} {:>10} {:<4}  {}\n", s.key,
-                                 defaults.text_of(static_cast<P>(i)), range_min, range_max,
-                                 s.unit, s.help);
+                                 defaults.text_of(static_cast<P>(i)), range_min, range_max, s.unit,
+                                 s.help);
     }
 }
 

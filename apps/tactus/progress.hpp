@@ -7,12 +7,12 @@
 namespace tactus::cli {
 
 class Progress {
-public:
+  public:
     explicit Progress(std::string label);
     ~Progress();
     void update(int64_t done, int64_t total);
 
-private:
+  private:
     std::string label_;
     bool enabled_ = false;
     int last_percent_ = -1;

@@ -1,8 +1,8 @@
 // tactus render IN -o OUT.wav: audio file -> vibration file (float WAV, N identical channels).
+#include <fmt/format.h>
+
 #include <cmath>
 #include <iostream>
-
-#include <fmt/format.h>
 
 #include "commands.hpp"
 #include "common.hpp"
@@ -22,7 +22,7 @@ struct RenderOptions {
 };
 
 class OnsetCounter final : public FrameObserver {
-public:
+  public:
     void on_frame(const Features&, const ControlFrame& control) noexcept override {
         onsets += control.trigger;
     }
@@ -39,18 +39,18 @@ void render(const RenderOptions& o) {
     engine.set_observer(&counter);
     Progress progress("render");
     float peak = 0.0f;
-    const RunSummary summary = run_file(
-        o.input, engine,
-        {[&](const float* v, int n) {
-             for (int i = 0; i < n; ++i) peak = std::max(peak, std::abs(v[i]));
-             writer.write(v, n);
-         },
-         [&](int64_t done, int64_t total) { progress.update(done, total); }});
+    const RunSummary summary =
+        run_file(o.input, engine,
+                 {[&](const float* v, int n) {
+                      for (int i = 0; i < n; ++i) peak = std::max(peak, std::abs(v[i]));
+                      writer.write(v, n);
+                  },
+                  [&](int64_t done, int64_t total) { progress.update(done, total); }});
     writer.commit();
-    std::cerr << fmt::format("{}: {:.2f} s at {:g} Hz, {} pulses, peak {:.1f} dBFS, {} channel(s)\n",
-                             o.output, summary.frames / summary.sample_rate_hz,
-                             summary.sample_rate_hz, counter.onsets,
-                             peak > 0 ? 20 * std::log10(peak) : -INFINITY, o.channels);
+    std::cerr << fmt::format(
+        "{}: {:.2f} s at {:g} Hz, {} pulses, peak {:.1f} dBFS, {} channel(s)\n", o.output,
+        summary.frames / summary.sample_rate_hz, summary.sample_rate_hz, counter.onsets,
+        peak > 0 ? 20 * std::log10(peak) : -INFINITY, o.channels);
 }
 
 }  // namespace

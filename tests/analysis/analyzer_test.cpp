@@ -27,7 +27,8 @@ std::vector<Features> run(Analyzer& analyzer, const std::vector<float>& x, int b
         int written = 0;
         while (written < size) {
             const int chunk = std::min(size - written, analyzer.samples_to_next_frame());
-            if (analyzer.write(x.data() + done + written, chunk)) frames.push_back(analyzer.analyse());
+            if (analyzer.write(x.data() + done + written, chunk))
+                frames.push_back(analyzer.analyse());
             written += chunk;
         }
         done += static_cast<size_t>(size);

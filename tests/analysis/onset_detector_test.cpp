@@ -62,9 +62,8 @@ std::vector<int64_t> place_clicks(std::vector<float>& x, double fs, Click kind, 
     return truth;
 }
 
-void expect_each_found_once(const std::vector<int64_t>& truth,
-                            const std::vector<Detection>& found, double fs,
-                            const std::string& what) {
+void expect_each_found_once(const std::vector<int64_t>& truth, const std::vector<Detection>& found,
+                            double fs, const std::string& what) {
     const double ms = fs / 1000.0;
     ASSERT_EQ(found.size(), truth.size()) << what;
     for (size_t i = 0; i < truth.size(); ++i) {

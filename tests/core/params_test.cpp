@@ -3,6 +3,7 @@
 // in the message, choices round and parse by name, text_of round-trips, nearest_param suggests.
 #include "tactus/core/params.hpp"
 
+#include <fmt/format.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -12,8 +13,6 @@
 #include <set>
 #include <stdexcept>
 #include <string>
-
-#include <fmt/format.h>
 
 namespace tactus {
 namespace {
@@ -77,9 +76,9 @@ TEST(Params, SetAcceptsTheRangeEndsAndRejectsBeyond) {
         settings.set(id, s.max);
         EXPECT_EQ(settings[id], s.max) << s.key;
         const double span = s.max - s.min;
-        for (double bad : {s.min - 0.01 * span, s.max + 0.01 * span,
-                           std::numeric_limits<double>::quiet_NaN(),
-                           std::numeric_limits<double>::infinity()}) {
+        for (double bad :
+             {s.min - 0.01 * span, s.max + 0.01 * span, std::numeric_limits<double>::quiet_NaN(),
+              std::numeric_limits<double>::infinity()}) {
             const std::string m = message_of([&] { settings.set(id, bad); });
             EXPECT_THAT(m, HasSubstr(std::string(s.key))) << bad;
             EXPECT_THAT(m, HasSubstr("out of range")) << s.key;

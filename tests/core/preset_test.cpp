@@ -7,6 +7,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <toml++/toml.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -18,7 +19,6 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <toml++/toml.h>
 
 namespace tactus {
 namespace {
@@ -57,8 +57,8 @@ TEST(ApplyAssignment, SetsValuesAndChoices) {
 }
 
 TEST(ApplyAssignment, RejectsMalformedInput) {
-    for (const char* bad : {"", "envelope.decay_ms", "=120", "envelope.decay_ms=", "=",
-                            "envelope.decay_ms 120"}) {
+    for (const char* bad :
+         {"", "envelope.decay_ms", "=120", "envelope.decay_ms=", "=", "envelope.decay_ms 120"}) {
         Settings s;
         const std::string m = message_of<std::invalid_argument>([&] { apply_assignment(s, bad); });
         EXPECT_THAT(m, HasSubstr("expected key=value")) << "'" << bad << "': " << m;
@@ -169,8 +169,8 @@ TEST(ApplyPresetText, AllOrNothing) {
 // Walks a TOML table and checks every value against the Settings it was loaded into.
 void expect_loaded(const Settings& s, const toml::table& table, const std::string& prefix) {
     for (const auto& [name, node] : table) {
-        const std::string key = prefix.empty() ? std::string(name.str())
-                                               : prefix + "." + std::string(name.str());
+        const std::string key =
+            prefix.empty() ? std::string(name.str()) : prefix + "." + std::string(name.str());
         if (const auto* child = node.as_table()) {
             expect_loaded(s, *child, key);
             continue;
@@ -210,7 +210,7 @@ TEST(Presets, EveryShippedPresetLoads) {
 }
 
 class TemporaryDirectory {
-public:
+  public:
     TemporaryDirectory() {
         std::string pattern = (fs::temp_directory_path() / "tactus-test-XXXXXX").string();
         path_ = ::mkdtemp(pattern.data());
@@ -221,11 +221,13 @@ public:
     }
     const fs::path& path() const { return path_; }
 
-private:
+  private:
     fs::path path_;
 };
 
-void write_file(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
+void write_file(const fs::path& path, const std::string& text) {
+    std::ofstream(path) << text;
+}
 
 TEST(Presets, FileErrorsNameTheFile) {
     TemporaryDirectory dir;
@@ -248,13 +250,15 @@ TEST(Presets, FileErrorsNameTheFile) {
 }
 
 class PresetPathEnvironment : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         if (const char* old = std::getenv("TACTUS_PRESET_PATH")) saved_ = old;
     }
     void TearDown() override {
-        if (saved_) ::setenv("TACTUS_PRESET_PATH", saved_->c_str(), 1);
-        else ::unsetenv("TACTUS_PRESET_PATH");
+        if (saved_)
+            ::setenv("TACTUS_PRESET_PATH", saved_->c_str(), 1);
+        else
+            ::unsetenv("TACTUS_PRESET_PATH");
     }
     std::optional<std::string> saved_;
 };

@@ -20,7 +20,7 @@ struct Result {
 };
 
 class Cli : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         dir_ = fs::temp_directory_path() /
                ("tactus-cli-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
@@ -32,7 +32,8 @@ protected:
 
     Result run(const std::string& arguments) const {
         const fs::path err = dir_ / "stderr.txt";
-        const std::string command = std::string(TACTUS_CLI) + " " + arguments + " 2>" + err.string();
+        const std::string command =
+            std::string(TACTUS_CLI) + " " + arguments + " 2>" + err.string();
         FILE* pipe = popen(command.c_str(), "r");
         std::string out;
         char buffer[4096];
@@ -125,15 +126,15 @@ TEST_F(Cli, BadInputFailsCleanlyAndWritesNothing) {
     EXPECT_NE(not_audio.err.find(text.string()), std::string::npos) << not_audio.err;
     EXPECT_FALSE(fs::exists(out));
 
-    const Result unknown_key = run("render " + kAmen + " -o " + out.string() +
-                                   " --set envelope.decay=100");
+    const Result unknown_key =
+        run("render " + kAmen + " -o " + out.string() + " --set envelope.decay=100");
     EXPECT_NE(unknown_key.exit_code, 0);
     EXPECT_NE(unknown_key.err.find("did you mean 'envelope.decay_ms'"), std::string::npos)
         << unknown_key.err;
     EXPECT_FALSE(fs::exists(out));
 
-    const Result out_of_range = run("render " + kAmen + " -o " + out.string() +
-                                    " --set envelope.decay_ms=-3");
+    const Result out_of_range =
+        run("render " + kAmen + " -o " + out.string() + " --set envelope.decay_ms=-3");
     EXPECT_NE(out_of_range.exit_code, 0);
     EXPECT_NE(out_of_range.err.find("allowed"), std::string::npos) << out_of_range.err;
 

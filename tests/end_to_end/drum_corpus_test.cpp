@@ -3,6 +3,8 @@
 // with -20 dB noise, kick/snare vibration pitch, hit gain -> output peak order, in-band energy,
 // ceiling, and onset -> half pulse peak latency. eval/evaluate.py reports the same figures
 // beside aubioonset's.
+#include "drum_corpus.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,7 +12,6 @@
 #include <numeric>
 #include <vector>
 
-#include "drum_corpus.hpp"
 #include "tactus/analysis/real_fft.hpp"
 #include "tactus/engine/engine.hpp"
 
@@ -28,13 +29,13 @@ struct Rendered {
 };
 
 class OnsetList final : public FrameObserver {
-public:
+  public:
     explicit OnsetList(std::vector<double>& onsets, double rate) : onsets_(onsets), rate_(rate) {}
     void on_frame(const Features& f, const ControlFrame&) noexcept override {
         if (f.onset) onsets_.push_back(f.onset_sample / rate_);
     }
 
-private:
+  private:
     std::vector<double>& onsets_;
     double rate_;
 };
@@ -55,7 +56,8 @@ Rendered render(const Track& track) {
 
 std::vector<float> pulse(const Rendered& r, double rate, double onset_s) {
     const auto start = static_cast<size_t>(onset_s * rate);
-    const auto end = std::min(r.vibration.size(), start + static_cast<size_t>(kPulseWindowS * rate));
+    const auto end =
+        std::min(r.vibration.size(), start + static_cast<size_t>(kPulseWindowS * rate));
     return {r.vibration.begin() + static_cast<std::ptrdiff_t>(start),
             r.vibration.begin() + static_cast<std::ptrdiff_t>(end)};
 }
@@ -74,7 +76,8 @@ double pulse_frequency_hz(const std::vector<float>& x, double rate) {
         if (std::abs(x[i]) > 0.1 * peak) first = std::min(first, i), last = i;
     if (first >= last) return 0;
     int crossings = 0;
-    for (size_t i = first + 1; i <= last; ++i) crossings += std::signbit(x[i]) != std::signbit(x[i - 1]);
+    for (size_t i = first + 1; i <= last; ++i)
+        crossings += std::signbit(x[i]) != std::signbit(x[i - 1]);
     return crossings / 2.0 / ((last - first + 1) / rate);
 }
 
@@ -143,7 +146,8 @@ TEST(DrumCorpus, OnsetFMeasureCleanAndNoisy) {
         noisy_sum += n.f_measure;
     }
     const double kits = static_cast<double>(corpus::kits().size());
-    std::cout << "mean onset F: clean " << clean_sum / kits << ", noise " << noisy_sum / kits << '\n';
+    std::cout << "mean onset F: clean " << clean_sum / kits << ", noise " << noisy_sum / kits
+              << '\n';
     EXPECT_GE(clean_sum / kits, 0.95);
     EXPECT_GE(noisy_sum / kits, 0.90);
 }
@@ -164,8 +168,8 @@ TEST(DrumCorpus, VibrationOfIsolatedHits) {
                 peaks.push_back(peak_of(p));
                 frequencies.push_back(pulse_frequency_hz(p, track.sample_rate_hz));
                 const double half = 0.5 * peak_of(p);
-                const auto rise = std::find_if(p.begin(), p.end(),
-                                               [&](float v) { return std::abs(v) >= half; });
+                const auto rise =
+                    std::find_if(p.begin(), p.end(), [&](float v) { return std::abs(v) >= half; });
                 latencies_s.push_back((rise - p.begin()) / track.sample_rate_hz);
             }
             const double rho = spearman(gains, peaks);
@@ -174,7 +178,8 @@ TEST(DrumCorpus, VibrationOfIsolatedHits) {
             frequency_hz[instrument == Instrument::snare] = median(frequencies);
 
             // Whole output: in band, under the ceiling.
-            EXPECT_GE(in_band_share(r.vibration, track.sample_rate_hz, 20, 1000), 0.995) << kit.name;
+            EXPECT_GE(in_band_share(r.vibration, track.sample_rate_hz, 20, 1000), 0.995)
+                << kit.name;
             EXPECT_LE(peak_of(r.vibration), 1.0);
         }
         const double ratio = frequency_hz[1] / frequency_hz[0];

@@ -47,7 +47,8 @@ std::vector<float> render(const std::vector<float>& x, double fs, const std::vec
 long first_difference(const std::vector<float>& a, const std::vector<float>& b) {
     if (a.size() != b.size()) return 0;
     for (size_t i = 0; i < a.size(); ++i)
-        if (std::bit_cast<uint32_t>(a[i]) != std::bit_cast<uint32_t>(b[i])) return static_cast<long>(i);
+        if (std::bit_cast<uint32_t>(a[i]) != std::bit_cast<uint32_t>(b[i]))
+            return static_cast<long>(i);
     return -1;
 }
 
@@ -96,9 +97,10 @@ TEST(Engine, BlockSizeInvarianceOnTheAmenLoop) {
 
 TEST(Engine, DigitalSilenceGivesExactZeros) {
     for (double fs : {8000.0, 48000.0, 192000.0}) {
-        const std::vector<float> y = render(std::vector<float>(static_cast<size_t>(3 * fs), 0.0f),
-                                            fs, {480});
-        for (size_t i = 0; i < y.size(); ++i) ASSERT_EQ(y[i], 0.0f) << "sample " << i << " at " << fs;
+        const std::vector<float> y =
+            render(std::vector<float>(static_cast<size_t>(3 * fs), 0.0f), fs, {480});
+        for (size_t i = 0; i < y.size(); ++i)
+            ASSERT_EQ(y[i], 0.0f) << "sample " << i << " at " << fs;
     }
 }
 
@@ -116,10 +118,9 @@ TEST(Engine, NonFiniteAndDenormalInputActsAsZero) {
     const double fs = 48000;
     const test::DrumSignal drums = test::drum_pattern(fs, 4.0, 3);
     std::vector<float> bad = drums.audio, zeroed = drums.audio;
-    const float specials[] = {std::numeric_limits<float>::quiet_NaN(),
-                              std::numeric_limits<float>::infinity(),
-                              -std::numeric_limits<float>::infinity(),
-                              std::numeric_limits<float>::denorm_min(), -1e-40f};
+    const float specials[] = {
+        std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
+        -std::numeric_limits<float>::infinity(), std::numeric_limits<float>::denorm_min(), -1e-40f};
     for (size_t i = 11, k = 0; i < bad.size(); i += 97 + (k % 7) * 31, ++k) {
         bad[i] = specials[k % 5];
         zeroed[i] = 0.0f;
@@ -171,16 +172,17 @@ TEST(Engine, OutputRespectsTheCeiling) {
         s.set(P::post_ceiling_db, ceiling_db);
         s.set(P::post_drive_db, 20);
         const std::vector<float> y = render(drums.audio, fs, {480}, s);
-        expect_finite_and_bounded(y, db_to_gain(ceiling_db), "ceiling " + std::to_string(ceiling_db));
+        expect_finite_and_bounded(y, db_to_gain(ceiling_db),
+                                  "ceiling " + std::to_string(ceiling_db));
         EXPECT_GT(test::peak(y), 0.5 * db_to_gain(ceiling_db));
     }
 }
 
 TEST(Engine, PrepareRejectsUnsupportedRatesAndBlockSizes) {
     Engine engine;
-    for (double fs : {7999.0, 192001.0, 0.0, -48000.0, 4000.0, 384000.0,
-                      std::numeric_limits<double>::quiet_NaN(),
-                      std::numeric_limits<double>::infinity()}) {
+    for (double fs :
+         {7999.0, 192001.0, 0.0, -48000.0, 4000.0, 384000.0,
+          std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
         try {
             engine.prepare(fs, 512);
             ADD_FAILURE() << "accepted " << fs << " Hz";
@@ -195,7 +197,7 @@ TEST(Engine, PrepareRejectsUnsupportedRatesAndBlockSizes) {
 }
 
 class CountingObserver final : public FrameObserver {
-public:
+  public:
     void on_frame(const Features& f, const ControlFrame& c) noexcept override {
         ok = ok && c.sample == f.frame_end_sample && f.frame_end_sample == last + hop;
         last = f.frame_end_sample;

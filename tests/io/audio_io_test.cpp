@@ -27,7 +27,7 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
 class IoTest : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         std::string pattern = (fs::temp_directory_path() / "tactus-io-XXXXXX").string();
         ASSERT_NE(::mkdtemp(pattern.data()), nullptr);

@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
 class RunFileTest : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         std::string pattern = (fs::temp_directory_path() / "tactus-run-XXXXXX").string();
         ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
@@ -51,14 +51,14 @@ TEST_F(RunFileTest, OutputMatchesTheEngineAndProgressReachesTheEnd) {
     std::vector<float> streamed;
     int64_t last_done = -1, last_total = -1;
     int reports = 0;
-    const RunSummary summary = run_file(
-        path, engine,
-        {[&](const float* v, int n) { streamed.insert(streamed.end(), v, v + n); },
-         [&](int64_t done, int64_t total) {
-             EXPECT_GE(done, last_done);
-             last_done = done, last_total = total;
-             ++reports;
-         }});
+    const RunSummary summary =
+        run_file(path, engine,
+                 {[&](const float* v, int n) { streamed.insert(streamed.end(), v, v + n); },
+                  [&](int64_t done, int64_t total) {
+                      EXPECT_GE(done, last_done);
+                      last_done = done, last_total = total;
+                      ++reports;
+                  }});
     EXPECT_EQ(summary.sample_rate_hz, fs);
     EXPECT_EQ(summary.input_channels, 1);
     EXPECT_EQ(summary.frames, static_cast<int64_t>(drums.audio.size()));

@@ -94,8 +94,8 @@ TEST(FeatureMapping, DegenerateInputRangeGivesOutMin) {
 
 TEST(FeatureMapping, OnePoleSmoothing) {
     // 10 ms at 1000 frames/s: a step gets 1 - 1/e of the way in 10 frames.
-    auto m = make(P::amplitude_source, 0, 1, 0, 1, MappingCurve::lin, 10.0,
-                  FeatureSource::noisiness);
+    auto m =
+        make(P::amplitude_source, 0, 1, 0, 1, MappingCurve::lin, 10.0, FeatureSource::noisiness);
     m.reset(0.0);
     Features f;
     f.noisiness = 1.0;
@@ -104,8 +104,8 @@ TEST(FeatureMapping, OnePoleSmoothing) {
     EXPECT_NEAR(v, 1.0 - std::exp(-1.0), 1e-9);
     EXPECT_EQ(m.current(), v);
 
-    auto immediate = make(P::amplitude_source, 0, 1, 0, 1, MappingCurve::lin, 0.0,
-                          FeatureSource::noisiness);
+    auto immediate =
+        make(P::amplitude_source, 0, 1, 0, 1, MappingCurve::lin, 0.0, FeatureSource::noisiness);
     EXPECT_DOUBLE_EQ(immediate.map(f), 1.0);
 }
 
@@ -118,9 +118,9 @@ TEST(FeatureMapping, ReadsItsSource) {
     f.pitch_confidence = 0.5;
     f.onset_odf = 0.75;
     const std::pair<FeatureSource, double> expected[] = {
-        {FeatureSource::loudness_db, -20},      {FeatureSource::brightness_hz, 2000},
-        {FeatureSource::noisiness, 0.25},       {FeatureSource::tonality, 0.75},
-        {FeatureSource::pitch_hz, 300},         {FeatureSource::pitch_confidence, 0.5},
+        {FeatureSource::loudness_db, -20}, {FeatureSource::brightness_hz, 2000},
+        {FeatureSource::noisiness, 0.25},  {FeatureSource::tonality, 0.75},
+        {FeatureSource::pitch_hz, 300},    {FeatureSource::pitch_confidence, 0.5},
         {FeatureSource::onset_odf, 0.75}};
     for (const auto& [source, value] : expected) {
         auto m = make(P::square_mix_source, -1e6, 1e6, 0, 1, MappingCurve::lin, 0, source);

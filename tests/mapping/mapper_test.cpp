@@ -58,9 +58,9 @@ TEST(Mapper, AboveTheGateEverythingPasses) {
     mapper.prepare(immediate_settings(), 345.0);
     const ControlFrame c = mapper.map(frame(1000, -30, std::sqrt(150.0 * 6000.0), 0.4, true));
     EXPECT_EQ(c.sample, 1000);
-    EXPECT_NEAR(c.amplitude, std::sqrt(0.03), 1e-9);               // exp: -30 dB of -60...0
-    EXPECT_NEAR(c.frequency_hz, std::sqrt(50.0 * 320.0), 1e-9);     // log: geometric middle
-    EXPECT_NEAR(c.square_mix, (0.6 - 0.3) / (0.9 - 0.3), 1e-9);     // tonality 0.6
+    EXPECT_NEAR(c.amplitude, std::sqrt(0.03), 1e-9);             // exp: -30 dB of -60...0
+    EXPECT_NEAR(c.frequency_hz, std::sqrt(50.0 * 320.0), 1e-9);  // log: geometric middle
+    EXPECT_NEAR(c.square_mix, (0.6 - 0.3) / (0.9 - 0.3), 1e-9);  // tonality 0.6
     EXPECT_TRUE(c.trigger);
     EXPECT_EQ(c.attack_ms, 2);
     EXPECT_EQ(c.decay_ms, 300);

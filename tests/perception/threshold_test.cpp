@@ -20,8 +20,8 @@ TEST(PThreshold, MinimumAtBestFrequency) {
 TEST(PThreshold, AsymptoticSlopes) {
     const double octave_low = p_threshold_db(10) - p_threshold_db(20);
     const double octave_high = p_threshold_db(8000) - p_threshold_db(4000);
-    EXPECT_NEAR(octave_low, 12.04, 0.05);   // (f_m/f)^4: 40 log10 2 dB per octave
-    EXPECT_NEAR(octave_high, 9.03, 0.05);   // (f/f_m)^3: 30 log10 2
+    EXPECT_NEAR(octave_low, 12.04, 0.05);  // (f_m/f)^4: 40 log10 2 dB per octave
+    EXPECT_NEAR(octave_high, 9.03, 0.05);  // (f/f_m)^3: 30 log10 2
 }
 
 TEST(PThreshold, ClosedForm) {

@@ -50,8 +50,8 @@ TEST_P(BandLimitCase, MeasuredResponseMatchesDesign) {
     for (double f : {20.0, 31.0, 141.4, 1000.0, 1500.0, 2000.0}) {
         BandLimit band;
         band.prepare(fs, 20.0, 1000.0, order);
-        const double measured = test::measured_gain_db(
-            [&](float* x, int n) { band.process(x, n); }, f, fs);
+        const double measured =
+            test::measured_gain_db([&](float* x, int n) { band.process(x, n); }, f, fs);
         EXPECT_NEAR(measured, band.magnitude_db(f), 0.02) << f << " Hz at " << fs << " Hz";
     }
 }

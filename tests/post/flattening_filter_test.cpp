@@ -28,8 +28,8 @@ TEST_P(FlatteningAtRate, MeasuredResponseFollowsTargetWithinOneDb) {
         const double f = 40.0 * std::pow(500.0 / 40.0, i / 24.0);
         FlatteningFilter filter;
         filter.prepare(fs, 20.0, 1000.0, 1.0, 30.0);
-        const double measured = test::measured_gain_db(
-            [&](float* x, int n) { filter.process(x, n); }, f, fs);
+        const double measured =
+            test::measured_gain_db([&](float* x, int n) { filter.process(x, n); }, f, fs);
         const double deviation = measured - design.target_db(f);
         if (std::abs(deviation) > std::abs(worst)) worst = deviation, worst_hz = f;
         worst_design = std::max(worst_design, std::abs(measured - design.magnitude_db(f)));
@@ -37,8 +37,9 @@ TEST_P(FlatteningAtRate, MeasuredResponseFollowsTargetWithinOneDb) {
         // magnitude_db() reports what process() does.
         EXPECT_NEAR(measured, design.magnitude_db(f), 0.05) << f << " Hz at " << fs << " Hz";
     }
-    std::cout << "[ flatten  ] " << fs << " Hz: max |measured - target| over 40-500 Hz = "
-              << std::abs(worst) << " dB (at " << worst_hz << " Hz); max |measured - "
+    std::cout << "[ flatten  ] " << fs
+              << " Hz: max |measured - target| over 40-500 Hz = " << std::abs(worst) << " dB (at "
+              << worst_hz << " Hz); max |measured - "
               << "magnitude_db| = " << worst_design << " dB\n";
 }
 
@@ -54,9 +55,9 @@ TEST_P(FlatteningAtRate, NeverBoostsInTheBand) {
             for (double f : {20.0, 40.0, 63.0, 1000.0}) {
                 FlatteningFilter filter;
                 filter.prepare(fs, 20.0, 1000.0, strength, range);
-                EXPECT_LE(test::measured_gain_db([&](float* x, int n) { filter.process(x, n); },
-                                                 f, fs),
-                          0.5)
+                EXPECT_LE(
+                    test::measured_gain_db([&](float* x, int n) { filter.process(x, n); }, f, fs),
+                    0.5)
                     << f << " Hz, strength " << strength << ", range " << range;
             }
         }

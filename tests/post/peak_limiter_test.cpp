@@ -122,13 +122,13 @@ TEST_P(LimiterSettingsCase, LatencyIsTheLookahead) {
     EXPECT_EQ(limiter.latency_samples(), expected);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Settings, LimiterSettingsCase,
-    ::testing::Values(LimiterSettings{48000, 1.5, 80, 0, -6, 1.0},
-                      LimiterSettings{48000, 0.1, 1, 40, -6, 1.0},
-                      LimiterSettings{44100, 20, 2000, 0, -40, 0.8912509381337456},
-                      LimiterSettings{8000, 1.5, 80, 20, 0, 0.5},
-                      LimiterSettings{192000, 5, 10, -10, -20, 0.1}));
+INSTANTIATE_TEST_SUITE_P(Settings, LimiterSettingsCase,
+                         ::testing::Values(LimiterSettings{48000, 1.5, 80, 0, -6, 1.0},
+                                           LimiterSettings{48000, 0.1, 1, 40, -6, 1.0},
+                                           LimiterSettings{44100, 20, 2000, 0, -40,
+                                                           0.8912509381337456},
+                                           LimiterSettings{8000, 1.5, 80, 20, 0, 0.5},
+                                           LimiterSettings{192000, 5, 10, -10, -20, 0.1}));
 
 TEST(PeakLimiter, BelowThresholdPassesUnchangedApartFromLatency) {
     for (double fs : {8000.0, 48000.0, 192000.0}) {
@@ -178,10 +178,10 @@ TEST(PeakLimiter, CurveIsTheDocumentedSoftKnee) {
     PeakLimiter limiter;
     limiter.prepare(48000, 1.5, 80, 0, -6, 1.0);
     const double t = db_to_gain(-6), c = 1.0;
-    for (double p : {0.0, 0.1, 0.25, t})
-        EXPECT_DOUBLE_EQ(limiter.curve(p), p) << p;
+    for (double p : {0.0, 0.1, 0.25, t}) EXPECT_DOUBLE_EQ(limiter.curve(p), p) << p;
     for (double p : {0.6, 1.0, 2.0, 5.0})
-        EXPECT_NEAR(limiter.curve(p), t + (c - t) * ((p - t) / (c - t)) / (1 + (p - t) / (c - t)), 1e-12);
+        EXPECT_NEAR(limiter.curve(p), t + (c - t) * ((p - t) / (c - t)) / (1 + (p - t) / (c - t)),
+                    1e-12);
     // Continuous with slope 1 at the knee.
     const double h = 1e-7;
     EXPECT_NEAR((limiter.curve(t + h) - limiter.curve(t)) / h, 1.0, 1e-5);

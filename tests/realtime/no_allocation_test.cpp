@@ -6,6 +6,7 @@
 // NaN/Inf/denormal samples, odd block sizes) at several sample rates: no allocation and no mutex
 // lock may happen. Sanity tests prove the guard does see allocations and locks.
 #include <dlfcn.h>
+#include <gtest/gtest.h>
 #include <pthread.h>
 
 #include <atomic>
@@ -16,8 +17,6 @@
 #include <mutex>
 #include <new>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "support/signals.hpp"
 #include "tactus/engine/engine.hpp"
@@ -64,7 +63,7 @@ std::atomic<LockFunction> g_real_lock{nullptr};
 
 // Counts allocator and lock calls on this thread while alive.
 class Guard {
-public:
+  public:
     Guard() { t_guarded = true; }
     ~Guard() { t_guarded = false; }
     Guard(const Guard&) = delete;
@@ -77,7 +76,9 @@ void reset_counts() {
 }
 
 // Keeps the compiler from optimising an allocation away.
-void escape(const void* pointer) { asm volatile("" : : "g"(pointer) : "memory"); }
+void escape(const void* pointer) {
+    asm volatile("" : : "g"(pointer) : "memory");
+}
 
 }  // namespace
 
@@ -136,8 +137,12 @@ int pthread_mutex_lock(pthread_mutex_t* mutex) noexcept {
 }
 
 // ---- C++ allocation functions, every replaceable form ----
-void* operator new(size_t size) { return allocate_or_throw(size); }
-void* operator new[](size_t size) { return allocate_or_throw(size); }
+void* operator new(size_t size) {
+    return allocate_or_throw(size);
+}
+void* operator new[](size_t size) {
+    return allocate_or_throw(size);
+}
 void* operator new(size_t size, const std::nothrow_t&) noexcept {
     note_allocator_call();
     return __libc_malloc(size == 0 ? 1 : size);
@@ -160,18 +165,42 @@ void* operator new[](size_t size, std::align_val_t alignment, const std::nothrow
     note_allocator_call();
     return __libc_memalign(static_cast<size_t>(alignment), size == 0 ? 1 : size);
 }
-void operator delete(void* p) noexcept { release(p); }
-void operator delete[](void* p) noexcept { release(p); }
-void operator delete(void* p, size_t) noexcept { release(p); }
-void operator delete[](void* p, size_t) noexcept { release(p); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { release(p); }
-void operator delete[](void* p, const std::nothrow_t&) noexcept { release(p); }
-void operator delete(void* p, std::align_val_t) noexcept { release(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { release(p); }
-void operator delete(void* p, size_t, std::align_val_t) noexcept { release(p); }
-void operator delete[](void* p, size_t, std::align_val_t) noexcept { release(p); }
-void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept { release(p); }
-void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept { release(p); }
+void operator delete(void* p) noexcept {
+    release(p);
+}
+void operator delete[](void* p) noexcept {
+    release(p);
+}
+void operator delete(void* p, size_t) noexcept {
+    release(p);
+}
+void operator delete[](void* p, size_t) noexcept {
+    release(p);
+}
+void operator delete(void* p, const std::nothrow_t&) noexcept {
+    release(p);
+}
+void operator delete[](void* p, const std::nothrow_t&) noexcept {
+    release(p);
+}
+void operator delete(void* p, std::align_val_t) noexcept {
+    release(p);
+}
+void operator delete[](void* p, std::align_val_t) noexcept {
+    release(p);
+}
+void operator delete(void* p, size_t, std::align_val_t) noexcept {
+    release(p);
+}
+void operator delete[](void* p, size_t, std::align_val_t) noexcept {
+    release(p);
+}
+void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept {
+    release(p);
+}
+void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept {
+    release(p);
+}
 
 namespace tactus {
 namespace {
@@ -251,10 +280,9 @@ TEST(Guard, CountsNothingOutsideTheGuard) {
 std::vector<float> varied_input(double fs) {
     test::DrumSignal drums = test::drum_pattern(fs, 12.0, 42);
     std::vector<float>& x = drums.audio;
-    const float specials[] = {std::numeric_limits<float>::quiet_NaN(),
-                              std::numeric_limits<float>::infinity(),
-                              -std::numeric_limits<float>::infinity(),
-                              std::numeric_limits<float>::denorm_min()};
+    const float specials[] = {
+        std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
+        -std::numeric_limits<float>::infinity(), std::numeric_limits<float>::denorm_min()};
     for (size_t i = 101, k = 0; i < x.size(); i += 4099, ++k) x[i] = specials[k % 4];
     for (size_t i = static_cast<size_t>(7 * fs); i < static_cast<size_t>(7.3 * fs); ++i)
         x[i] = std::numeric_limits<float>::quiet_NaN();

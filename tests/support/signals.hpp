@@ -16,7 +16,7 @@ constexpr double kTestPi = 3.14159265358979323846;
 
 // splitmix64: the same sequence on every platform (std:: distributions are unspecified).
 class Random {
-public:
+  public:
     explicit Random(uint64_t seed) : state_(seed ^ 0x9E3779B97F4A7C15ull) {}
     uint64_t next() {
         uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
@@ -31,7 +31,7 @@ public:
         return std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * kTestPi * v);
     }
 
-private:
+  private:
     uint64_t state_;
 };
 
@@ -39,10 +39,9 @@ inline std::vector<float> sine(double frequency_hz, double sample_rate_hz, size_
                                double amplitude = 1.0, double phase = 0.0) {
     std::vector<float> x(count);
     for (size_t n = 0; n < count; ++n)
-        x[n] = static_cast<float>(
-            amplitude * std::sin(2.0 * kTestPi * frequency_hz * static_cast<double>(n) /
-                                     sample_rate_hz +
-                                 phase));
+        x[n] = static_cast<float>(amplitude * std::sin(2.0 * kTestPi * frequency_hz *
+                                                           static_cast<double>(n) / sample_rate_hz +
+                                                       phase));
     return x;
 }
 
@@ -87,7 +86,8 @@ template <typename Process>
 double measured_gain_db(Process&& process, double frequency_hz, double sample_rate_hz,
                         double settle_s = 1.0, double measure_s = 0.5, double amplitude = 0.25) {
     const double periods = std::ceil(measure_s * frequency_hz);
-    const auto measured = static_cast<size_t>(std::llround(periods * sample_rate_hz / frequency_hz));
+    const auto measured =
+        static_cast<size_t>(std::llround(periods * sample_rate_hz / frequency_hz));
     const auto settle = static_cast<size_t>(settle_s * sample_rate_hz);
     std::vector<float> x = sine(frequency_hz, sample_rate_hz, settle + measured, amplitude);
     const std::vector<float> input = x;
@@ -125,8 +125,9 @@ inline void fft(std::vector<std::complex<double>>& a) {
 // main lobe back into the amplitude of the sinusoid that caused it, whatever its offset from
 // the bin centre.
 class Spectrum {
-public:
-    Spectrum(std::span<const double> x, double sample_rate_hz) : bin_hz_(sample_rate_hz / x.size()) {
+  public:
+    Spectrum(std::span<const double> x, double sample_rate_hz)
+        : bin_hz_(sample_rate_hz / x.size()) {
         const size_t n = x.size();
         std::vector<std::complex<double>> a(n);
         window_power_ = window_sum_ = 0.0;
@@ -169,7 +170,7 @@ public:
         return 2.0 * std::sqrt(best) / window_sum_;
     }
 
-private:
+  private:
     double bin_hz_;
     double window_power_ = 0.0, window_sum_ = 0.0;
     size_t size_ = 0;
@@ -219,7 +220,7 @@ inline DrumSignal drum_pattern(double sample_rate_hz, double seconds, uint64_t s
         const double t = 0.1 + step * step_s;
         if (t >= seconds - 0.2) break;
         const int bar_step = step % 16, bar = step / 16;
-        if (bar % 4 == 2 && bar_step >= 8) continue;  // a gap of digital silence
+        if (bar % 4 == 2 && bar_step >= 8) continue;    // a gap of digital silence
         const double gain = bar % 4 == 3 ? 0.05 : 0.8;  // a quiet bar
         if (bar_step == 0 || bar_step == 10 || (bar_step == 7 && random.uniform() < 0.5))
             add_hit(t, 0, gain);

@@ -4,13 +4,12 @@
 // went wrong, which the child prints to stderr and GoogleTest shows with the failure.
 #pragma once
 
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
 #include <string>
-
-#include <gtest/gtest.h>
 
 namespace tactus::test {
 

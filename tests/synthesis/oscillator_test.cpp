@@ -3,7 +3,7 @@
 // harmonics are absent, and there is nothing (< -80 dB re the fundamental) above the limit nor
 // aliased below the fundamental; at several f0 (some not dividing the rate) at 8 and 48 kHz.
 // Also: the mix is linear, the limit is clamped to 0.45 fs, the square's fundamental keeps its
-// level for every f0 below the limit, and a non-finite frequency neither hangs next() nor
+// level at every f0 (also above the limit), and a non-finite frequency neither hangs next() nor
 // poisons later output.
 #include "tactus/synthesis/oscillator.hpp"
 
@@ -32,7 +32,9 @@ std::vector<double> render(double fs, double limit_hz, double f0, double mix) {
     return x;
 }
 
-double db(double ratio) { return 20.0 * std::log10(ratio); }
+double db(double ratio) {
+    return 20.0 * std::log10(ratio);
+}
 
 struct Case {
     double fs, limit_hz, f0;
@@ -79,12 +81,13 @@ TEST_P(OscillatorCase, SquareHarmonicsFollowOneOverKBelowTheLimit) {
         << "aliased energy below f0 " << f0;
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    RatesAndPitches, OscillatorCase,
-    ::testing::Values(Case{48000, 1000, 50}, Case{48000, 1000, 73.3}, Case{48000, 1000, 101.7},
-                      Case{48000, 1000, 237.1}, Case{48000, 1000, 320}, Case{48000, 2000, 61.9},
-                      Case{8000, 1000, 55.5}, Case{8000, 1000, 123.4}, Case{8000, 1000, 300},
-                      Case{8000, 4000, 97.3}, Case{8000, 4000, 440}));
+INSTANTIATE_TEST_SUITE_P(RatesAndPitches, OscillatorCase,
+                         ::testing::Values(Case{48000, 1000, 50}, Case{48000, 1000, 73.3},
+                                           Case{48000, 1000, 101.7}, Case{48000, 1000, 237.1},
+                                           Case{48000, 1000, 320}, Case{48000, 2000, 61.9},
+                                           Case{8000, 1000, 55.5}, Case{8000, 1000, 123.4},
+                                           Case{8000, 1000, 300}, Case{8000, 4000, 97.3},
+                                           Case{8000, 4000, 440}));
 
 TEST(Oscillator, MixIsLinearBetweenSineAndSquare) {
     const double fs = 48000, f0 = 87.3;
@@ -107,12 +110,13 @@ TEST(Oscillator, RestartPhaseStartsAtAZeroCrossing) {
     EXPECT_GT(osc.next(100.0, 1.0), 0.0);
 }
 
-// The square's fundamental is below the limit whenever f0 is, so nothing needs fading: at mix 1
-// its level must stay 4/pi. (Fading it makes mix 1 quieter than mix 0 and silent as f0
-// approaches the limit.)
-TEST(Oscillator, SquareFundamentalIsNotFadedBelowTheLimit) {
+// The fundamental needs no fading: below the limit it is part of the band-limited square, and
+// above it the square has nothing else left. At mix 1 its level must stay 4/pi whatever f0
+// (fading it makes mix 1 quieter than mix 0, down to silence). f0 above the limit happens when
+// mapping.frequency.out_max exceeds post.band_high_hz.
+TEST(Oscillator, SquareFundamentalIsNeverFaded) {
     const double fs = 48000;
-    for (double f0 : {400.0, 600.0, 900.0}) {
+    for (double f0 : {400.0, 600.0, 900.0, 999.0, 1200.0, 2000.0}) {
         const auto x = render(fs, 1000, f0, 1.0);
         const test::Spectrum s(x, fs);
         EXPECT_NEAR(db(s.amplitude_near(f0) / (4.0 / kPi)), 0.0, 0.05) << "f0 " << f0;
@@ -124,8 +128,8 @@ TEST(Oscillator, NonFiniteFrequencyReturns) {
     TACTUS_EXPECT_FINISHES_OK(5, []() -> std::string {
         Oscillator osc;
         osc.prepare(48000, 1000);
-        for (double f : {std::numeric_limits<double>::quiet_NaN(),
-                         std::numeric_limits<double>::infinity()})
+        for (double f :
+             {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
             for (double mix : {0.0, 0.5, 1.0}) osc.next(f, mix);
         return "";
     });
@@ -133,8 +137,8 @@ TEST(Oscillator, NonFiniteFrequencyReturns) {
 
 // One bad frequency must not poison the phase: the next finite frequency gives finite output.
 TEST(Oscillator, NonFiniteFrequencyDoesNotPoisonLaterOutput) {
-    for (double bad : {std::numeric_limits<double>::quiet_NaN(),
-                       std::numeric_limits<double>::infinity()}) {
+    for (double bad :
+         {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
         Oscillator osc;
         osc.prepare(48000, 1000);
         osc.next(bad, 1.0);

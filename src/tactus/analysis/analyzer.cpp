@@ -12,22 +12,22 @@ constexpr double kPitchIntervalMs = 10.0;  // f0 changes slowly: update it every
 }
 
 void Analyzer::prepare(double sample_rate_hz, const Settings& s) {
-    hop_samples_ = std::max<int>(1, static_cast<int>(ms_to_samples(s[P::analysis_hop_ms],
-                                                                   sample_rate_hz)));
+    hop_samples_ =
+        std::max<int>(1, static_cast<int>(ms_to_samples(s[P::analysis_hop_ms], sample_rate_hz)));
     stft_.prepare(nearest_power_of_two(ms_to_samples(s[P::analysis_window_ms], sample_rate_hz)),
                   sample_rate_hz);
     noisiness_.prepare(stft_.bins(), stft_.bin_hz());
     loudness_.prepare(sample_rate_hz, s[P::loudness_window_ms]);
-    pitch_.prepare(sample_rate_hz, s[P::pitch_min_hz], std::min(s[P::pitch_max_hz],
-                   0.45 * sample_rate_hz), s[P::pitch_threshold]);
+    pitch_.prepare(sample_rate_hz, s[P::pitch_min_hz],
+                   std::min(s[P::pitch_max_hz], 0.45 * sample_rate_hz), s[P::pitch_threshold]);
     onsets_.prepare(sample_rate_hz, hop_samples_,
                     {s[P::onset_window_ms], s[P::onset_threshold], s[P::onset_ratio],
                      s[P::onset_history_ms], s[P::onset_min_interval_ms]});
-    history_.prepare(std::max({stft_.window_samples(), pitch_.span_samples(),
-                               onsets_.span_samples()}));
+    history_.prepare(
+        std::max({stft_.window_samples(), pitch_.span_samples(), onsets_.span_samples()}));
     clean_.assign(static_cast<size_t>(hop_samples_), 0.0f);
-    pitch_every_frames_ = std::max(1, static_cast<int>(std::lround(
-                                          kPitchIntervalMs * 1e-3 * sample_rate_hz / hop_samples_)));
+    pitch_every_frames_ = std::max(
+        1, static_cast<int>(std::lround(kPitchIntervalMs * 1e-3 * sample_rate_hz / hop_samples_)));
     reset();
 }
 
@@ -42,8 +42,8 @@ void Analyzer::reset() noexcept {
 
 bool Analyzer::write(const float* samples, int count) noexcept {
     for (int i = 0; i < count; ++i)
-        clean_[i] = std::isnormal(samples[i]) ? std::clamp(samples[i], -kMaxInput, kMaxInput)
-                                              : 0.0f;
+        clean_[i] =
+            std::isnormal(samples[i]) ? std::clamp(samples[i], -kMaxInput, kMaxInput) : 0.0f;
     history_.write(clean_.data(), count);
     loudness_.write(clean_.data(), count);
     filled_ += count;

@@ -17,7 +17,7 @@
 namespace tactus {
 
 class Analyzer {
-public:
+  public:
     void prepare(double sample_rate_hz, const Settings& settings);  // may allocate
     void reset() noexcept;
 
@@ -34,7 +34,7 @@ public:
     // Analyses the frame ending at the newest sample. Call when write() returned true.
     const Features& analyse() noexcept;
 
-private:
+  private:
     SampleHistory history_;
     StftFrame stft_;
     Loudness loudness_;

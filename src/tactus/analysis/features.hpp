@@ -21,13 +21,20 @@ struct Features {
 
 inline double feature_value(const Features& f, FeatureSource source) {
     switch (source) {
-        case FeatureSource::loudness_db: return f.loudness_db;
-        case FeatureSource::brightness_hz: return f.brightness_hz;
-        case FeatureSource::noisiness: return f.noisiness;
-        case FeatureSource::tonality: return 1.0 - f.noisiness;
-        case FeatureSource::pitch_hz: return f.pitch_hz;
-        case FeatureSource::pitch_confidence: return f.pitch_confidence;
-        case FeatureSource::onset_odf: return f.onset_odf;
+        case FeatureSource::loudness_db:
+            return f.loudness_db;
+        case FeatureSource::brightness_hz:
+            return f.brightness_hz;
+        case FeatureSource::noisiness:
+            return f.noisiness;
+        case FeatureSource::tonality:
+            return 1.0 - f.noisiness;
+        case FeatureSource::pitch_hz:
+            return f.pitch_hz;
+        case FeatureSource::pitch_confidence:
+            return f.pitch_confidence;
+        case FeatureSource::onset_odf:
+            return f.onset_odf;
     }
     return 0.0;
 }

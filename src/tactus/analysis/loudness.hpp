@@ -11,15 +11,15 @@
 namespace tactus {
 
 class Loudness {
-public:
+  public:
     static constexpr double kFloorDb = -120.0;  // reported for silence
 
     void prepare(double sample_rate_hz, double window_ms);  // may allocate
     void reset() noexcept;
     void write(const float* samples, int count) noexcept;  // K-weights and stores squares
-    double loudness_db() const noexcept;                    // over the newest window
+    double loudness_db() const noexcept;                   // over the newest window
 
-private:
+  private:
     Biquad shelf_, highpass_;
     std::vector<double> squares_;  // ring of K-weighted squares, one window long
     size_t position_ = 0;

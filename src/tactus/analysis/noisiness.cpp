@@ -8,7 +8,7 @@ namespace tactus {
 namespace {
 // Critical band edges in Hz (Zwicker 1961, Table 1).
 constexpr std::array<double, 25> kBarkEdgesHz = {
-    0,    100,  200,  300,  400,  510,  630,  770,  920,  1080, 1270,  1480,  1720,
+    0,    100,  200,  300,  400,  510,  630,  770,  920,  1080, 1270,  1480, 1720,
     2000, 2320, 2700, 3150, 3700, 4400, 5300, 6400, 7700, 9500, 12000, 15500};
 constexpr double kSilentPower = 1e-14;
 }  // namespace

@@ -10,12 +10,14 @@
 namespace tactus {
 
 class Noisiness {
-public:
+  public:
     void prepare(int bins, double bin_hz);  // may allocate
     double compute(std::span<const float> powers) const noexcept;
 
-private:
-    struct Band { int first_bin, end_bin; };
+  private:
+    struct Band {
+        int first_bin, end_bin;
+    };
     std::vector<Band> bands_;
 };
 

@@ -25,8 +25,8 @@ void OnsetDetector::prepare(double sample_rate_hz, int hop_samples, const OnsetS
     flux_history_.assign(static_cast<size_t>(history_frames), 0.0);
     scratch_.assign(static_cast<size_t>(history_frames), 0.0);
     min_interval_samples_ = ms_to_samples(s.min_interval_ms, sample_rate_hz);
-    sub_block_samples_ = std::max<int>(1, static_cast<int>(ms_to_samples(kSubBlockMs,
-                                                                          sample_rate_hz)));
+    sub_block_samples_ =
+        std::max<int>(1, static_cast<int>(ms_to_samples(kSubBlockMs, sample_rate_hz)));
     segment_.assign(static_cast<size_t>(span_samples()), 0.0f);
     block_energy_.assign(static_cast<size_t>(span_samples() / sub_block_samples_), 0.0);
     reset();

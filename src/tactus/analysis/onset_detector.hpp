@@ -26,20 +26,20 @@ struct OnsetSettings {
 };
 
 struct OnsetDecision {
-    double odf = 0;           // detection function value this frame
+    double odf = 0;  // detection function value this frame
     bool onset = false;
     int64_t onset_sample = 0;  // estimated start of the onset (valid when onset)
 };
 
 class OnsetDetector {
-public:
+  public:
     void prepare(double sample_rate_hz, int hop_samples, const OnsetSettings& settings);
     void reset() noexcept;
     // Analyses the frame ending at the newest sample of `history`.
     OnsetDecision analyse(const SampleHistory& history) noexcept;
     int span_samples() const { return stft_.window_samples() + hop_samples_; }
 
-private:
+  private:
     int64_t refine_onset_sample(const SampleHistory& history) noexcept;
 
     OnsetSettings settings_;

@@ -34,7 +34,8 @@ Pitch PitchYin::analyse(const SampleHistory& history) noexcept {
     std::fill(time + w, time + n, 0.0f);
     fft_.forward();
     std::complex<float>* spectrum = fft_.spectrum();
-    for (int k = 0; k < fft_.bins(); ++k) spectrum[k] = signal_spectrum_[k] * std::conj(spectrum[k]);
+    for (int k = 0; k < fft_.bins(); ++k)
+        spectrum[k] = signal_spectrum_[k] * std::conj(spectrum[k]);
     fft_.inverse();
     const double scale = 1.0 / n;
 

@@ -17,13 +17,13 @@ struct Pitch {
 };
 
 class PitchYin {
-public:
+  public:
     void prepare(double sample_rate_hz, double min_hz, double max_hz, double threshold);
     Pitch analyse(const SampleHistory& history) noexcept;
     // Samples of history analyse() reads.
     int span_samples() const { return 2 * window_; }
 
-private:
+  private:
     double sample_rate_hz_ = 0, threshold_ = 0.15;
     int window_ = 0, min_lag_ = 0, max_lag_ = 0;
     RealFft fft_;

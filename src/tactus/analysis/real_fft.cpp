@@ -9,7 +9,9 @@ namespace {
 std::mutex planner_mutex;
 }  // namespace
 
-RealFft::~RealFft() { release(); }
+RealFft::~RealFft() {
+    release();
+}
 
 void RealFft::release() {
     std::lock_guard lock(planner_mutex);

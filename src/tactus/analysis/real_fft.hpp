@@ -2,14 +2,14 @@
 // made in prepare(); forward()/inverse() are real-time safe.
 #pragma once
 
-#include <complex>
-
 #include <fftw3.h>
+
+#include <complex>
 
 namespace tactus {
 
 class RealFft {
-public:
+  public:
     RealFft() = default;
     RealFft(const RealFft&) = delete;
     RealFft& operator=(const RealFft&) = delete;
@@ -22,10 +22,10 @@ public:
     float* time() { return time_; }
     std::complex<float>* spectrum() { return reinterpret_cast<std::complex<float>*>(spectrum_); }
 
-    void forward() noexcept { fftwf_execute(forward_); }   // time() -> spectrum()
-    void inverse() noexcept { fftwf_execute(inverse_); }   // spectrum() -> time(), scaled by size
+    void forward() noexcept { fftwf_execute(forward_); }  // time() -> spectrum()
+    void inverse() noexcept { fftwf_execute(inverse_); }  // spectrum() -> time(), scaled by size
 
-private:
+  private:
     void release();
     int size_ = 0;
     float* time_ = nullptr;

@@ -9,7 +9,7 @@
 namespace tactus {
 
 class SampleHistory {
-public:
+  public:
     void prepare(int capacity_samples);  // may allocate
     void reset() noexcept;
     void write(const float* samples, int count) noexcept;
@@ -17,7 +17,7 @@ public:
     void read_latest(float* out, int count) const noexcept;
     int64_t written() const { return written_; }
 
-private:
+  private:
     std::vector<float> ring_;
     uint64_t mask_ = 0;
     int64_t written_ = 0;

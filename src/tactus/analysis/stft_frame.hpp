@@ -10,7 +10,7 @@
 namespace tactus {
 
 class StftFrame {
-public:
+  public:
     void prepare(int window_samples, double sample_rate_hz);  // may allocate
     void analyse(const SampleHistory& history) noexcept;      // fills magnitudes()
 
@@ -20,7 +20,7 @@ public:
     const std::vector<float>& magnitudes() const { return magnitudes_; }
     const std::vector<float>& powers() const { return powers_; }
 
-private:
+  private:
     RealFft fft_;
     std::vector<float> window_;
     std::vector<float> magnitudes_, powers_;

@@ -1,12 +1,12 @@
 #include "tactus/core/params.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
-
-#include <fmt/format.h>
 
 namespace tactus {
 namespace {
@@ -120,9 +120,13 @@ size_t edit_distance(std::string_view a, std::string_view b) {
 
 }  // namespace
 
-std::span<const ParamSpec> param_table() { return kTable; }
+std::span<const ParamSpec> param_table() {
+    return kTable;
+}
 
-const ParamSpec& spec(P id) { return kTable[static_cast<int>(id)]; }
+const ParamSpec& spec(P id) {
+    return kTable[static_cast<int>(id)];
+}
 
 std::optional<P> find_param(std::string_view key) {
     for (size_t i = 0; i < std::size(kTable); ++i)

@@ -28,10 +28,17 @@ struct ParamSpec {
 
 // Features a mapping can read (analysis outputs), in the order of FeatureSource.
 inline constexpr std::array<std::string_view, 7> kFeatureSourceNames = {
-    "loudness_db", "brightness_hz", "noisiness", "tonality",
+    "loudness_db", "brightness_hz",    "noisiness", "tonality",
     "pitch_hz",    "pitch_confidence", "onset_odf"};
-enum class FeatureSource { loudness_db, brightness_hz, noisiness, tonality, pitch_hz,
-                           pitch_confidence, onset_odf };
+enum class FeatureSource {
+    loudness_db,
+    brightness_hz,
+    noisiness,
+    tonality,
+    pitch_hz,
+    pitch_confidence,
+    onset_odf
+};
 
 // lin: output linear in input. log: input and output on logarithmic scales (equal input ratios
 // give equal output ratios: a frequency scale). exp: linear input, logarithmic output (dB in,
@@ -53,7 +60,7 @@ enum class P : int {
     onset_history_ms,
     onset_min_interval_ms,
     mapping_gate_db,
-#define TACTUS_MAPPING_IDS(name) \
+#define TACTUS_MAPPING_IDS(name)                                                               \
     name##_source, name##_in_min, name##_in_max, name##_out_min, name##_out_max, name##_curve, \
         name##_smoothing_ms
     TACTUS_MAPPING_IDS(amplitude),
@@ -83,7 +90,7 @@ std::string nearest_param(std::string_view key);
 
 // A value for every parameter, starting at the table's defaults.
 class Settings {
-public:
+  public:
     Settings();
     double operator[](P id) const { return values_[static_cast<int>(id)]; }
     // Sets a value after checking its range; throws std::invalid_argument naming the key.
@@ -92,7 +99,7 @@ public:
     void set_from_text(P id, std::string_view text);
     std::string text_of(P id) const;
 
-private:
+  private:
     std::array<double, static_cast<int>(P::count)> values_{};
 };
 

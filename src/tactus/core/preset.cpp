@@ -1,11 +1,11 @@
 #include "tactus/core/preset.hpp"
 
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
-
-#include <fmt/format.h>
-#include <toml++/toml.h>
 
 #ifndef TACTUS_PRESET_DIR
 #define TACTUS_PRESET_DIR "presets"
@@ -23,8 +23,8 @@ void apply_node(Settings& settings, const std::string& key, const toml::node& no
                 std::string_view origin) {
     if (const auto* table = node.as_table()) {
         for (const auto& [name, child] : *table)
-            apply_node(settings, key.empty() ? std::string(name.str())
-                                             : key + "." + std::string(name.str()),
+            apply_node(settings,
+                       key.empty() ? std::string(name.str()) : key + "." + std::string(name.str()),
                        child, origin);
         return;
     }
@@ -110,8 +110,7 @@ fs::path resolve_preset(std::string_view name_or_path) {
             return dir / (given.string() + ".toml");
     std::string known;
     for (const auto& p : list_presets()) known += (known.empty() ? "" : ", ") + p.name;
-    throw std::runtime_error(
-        fmt::format("no preset named '{}' (known: {})", name_or_path, known));
+    throw std::runtime_error(fmt::format("no preset named '{}' (known: {})", name_or_path, known));
 }
 
 void apply_preset_text(Settings& settings, std::string_view toml_text, std::string_view origin) {
@@ -119,8 +118,8 @@ void apply_preset_text(Settings& settings, std::string_view toml_text, std::stri
     try {
         table = toml::parse(toml_text, origin);
     } catch (const toml::parse_error& e) {
-        throw std::runtime_error(fmt::format("{}: TOML syntax error: {}",
-                                             where(origin, e.source()), e.description()));
+        throw std::runtime_error(
+            fmt::format("{}: TOML syntax error: {}", where(origin, e.source()), e.description()));
     }
     Settings candidate = settings;  // all or nothing
     apply_node(candidate, "", table, origin);
@@ -152,8 +151,8 @@ void apply_assignment(Settings& settings, std::string_view assignment) {
     const std::string_view value = assignment.substr(eq + 1);
     const auto id = find_param(key);
     if (!id)
-        throw std::invalid_argument(fmt::format("--set: unknown key '{}' (did you mean '{}'?)",
-                                                key, nearest_param(key)));
+        throw std::invalid_argument(
+            fmt::format("--set: unknown key '{}' (did you mean '{}'?)", key, nearest_param(key)));
     try {
         settings.set_from_text(*id, value);
     } catch (const std::invalid_argument& e) {

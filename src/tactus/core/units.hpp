@@ -6,9 +6,15 @@
 
 namespace tactus {
 
-inline double db_to_gain(double db) { return std::pow(10.0, db / 20.0); }
-inline double gain_to_db(double gain) { return 20.0 * std::log10(gain); }
-inline double power_to_db(double power) { return 10.0 * std::log10(power); }
+inline double db_to_gain(double db) {
+    return std::pow(10.0, db / 20.0);
+}
+inline double gain_to_db(double gain) {
+    return 20.0 * std::log10(gain);
+}
+inline double power_to_db(double power) {
+    return 10.0 * std::log10(power);
+}
 
 inline int64_t ms_to_samples(double ms, double sample_rate_hz) {
     return static_cast<int64_t>(std::llround(ms * 1e-3 * sample_rate_hz));
@@ -38,5 +44,11 @@ inline int nearest_power_of_two(int64_t n) {
 }
 
 constexpr double kPi = 3.14159265358979323846;
+
+// The largest float not above x: float samples that must respect a bound given in double.
+inline float float_at_most(double x) {
+    const auto f = static_cast<float>(x);
+    return f > x ? std::nextafter(f, -HUGE_VALF) : f;
+}
 
 }  // namespace tactus

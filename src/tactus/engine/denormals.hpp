@@ -9,12 +9,16 @@
 namespace tactus {
 
 class ScopedFlushDenormals {
-public:
+  public:
 #if defined(__SSE__) || defined(__x86_64__)
-    ScopedFlushDenormals() noexcept : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | 0x8040); }
-    ~ScopedFlushDenormals() { _mm_setcsr(saved_); }
+    ScopedFlushDenormals() noexcept : saved_(_mm_getcsr()) {
+        _mm_setcsr(saved_ | 0x8040);
+    }
+    ~ScopedFlushDenormals() {
+        _mm_setcsr(saved_);
+    }
 
-private:
+  private:
     unsigned saved_;
 #else
     ScopedFlushDenormals() noexcept = default;

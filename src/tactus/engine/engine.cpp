@@ -1,9 +1,9 @@
 #include "tactus/engine/engine.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 #include "tactus/engine/denormals.hpp"
 
@@ -11,9 +11,9 @@ namespace tactus {
 
 void Engine::prepare(double sample_rate_hz, int max_block) {
     if (!(sample_rate_hz >= kMinSampleRateHz && sample_rate_hz <= kMaxSampleRateHz))
-        throw std::invalid_argument(fmt::format(
-            "sample rate {} Hz is outside the supported {}-{} Hz", sample_rate_hz,
-            kMinSampleRateHz, kMaxSampleRateHz));
+        throw std::invalid_argument(
+            fmt::format("sample rate {} Hz is outside the supported {}-{} Hz", sample_rate_hz,
+                        kMinSampleRateHz, kMaxSampleRateHz));
     if (max_block < 1 || max_block > kMaxBlock)
         throw std::invalid_argument(
             fmt::format("block size {} is outside the supported 1-{}", max_block, kMaxBlock));

@@ -16,13 +16,13 @@ namespace tactus {
 // Receives every analysis frame and the control frame mapped from it, on the audio thread,
 // inside process(): an implementation must itself be real-time safe when used live.
 class FrameObserver {
-public:
+  public:
     virtual ~FrameObserver() = default;
     virtual void on_frame(const Features& features, const ControlFrame& control) noexcept = 0;
 };
 
 class Engine {
-public:
+  public:
     static constexpr double kMinSampleRateHz = 8000;
     static constexpr double kMaxSampleRateHz = 192000;
     static constexpr int kMaxBlock = 4096;
@@ -42,7 +42,7 @@ public:
     int hop_samples() const { return analyzer_.hop_samples(); }
     const PostChain& post() const { return post_; }
 
-private:
+  private:
     Settings settings_;
     double sample_rate_hz_ = 0;
     Analyzer analyzer_;

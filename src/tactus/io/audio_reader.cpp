@@ -1,16 +1,16 @@
 #include "tactus/io/audio_reader.hpp"
 
-#include <stdexcept>
-
 #include <fmt/format.h>
+
+#include <stdexcept>
 
 namespace tactus {
 
 AudioReader::AudioReader(const std::filesystem::path& path) : path_(path) {
     file_ = sf_open(path.c_str(), SFM_READ, &info_);
     if (!file_)
-        throw std::runtime_error(fmt::format("{}: cannot read audio: {}", path.string(),
-                                             sf_strerror(nullptr)));
+        throw std::runtime_error(
+            fmt::format("{}: cannot read audio: {}", path.string(), sf_strerror(nullptr)));
     if (info_.channels < 1 || info_.samplerate < 1) {
         sf_close(file_);
         throw std::runtime_error(fmt::format("{}: no audio channels", path.string()));

@@ -2,16 +2,16 @@
 // channels are averaged. Constant memory whatever the length.
 #pragma once
 
+#include <sndfile.h>
+
 #include <cstdint>
 #include <filesystem>
 #include <vector>
 
-#include <sndfile.h>
-
 namespace tactus {
 
 class AudioReader {
-public:
+  public:
     // Throws std::runtime_error naming the file and what is wrong.
     explicit AudioReader(const std::filesystem::path& path);
     ~AudioReader();
@@ -24,7 +24,7 @@ public:
     // Reads up to `max_frames` mono frames; returns how many (0 at the end).
     int read(float* mono, int max_frames);
 
-private:
+  private:
     std::filesystem::path path_;
     SNDFILE* file_ = nullptr;
     SF_INFO info_{};

@@ -1,9 +1,8 @@
 #include "tactus/io/audio_writer.hpp"
 
+#include <fmt/format.h>
 
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 #include "tactus/io/temporary_path.hpp"
 
@@ -17,8 +16,8 @@ AudioWriter::AudioWriter(const std::filesystem::path& path, double sample_rate_h
     info.format = SF_FORMAT_WAV | SF_FORMAT_FLOAT;
     file_ = sf_open(temporary_.c_str(), SFM_WRITE, &info);
     if (!file_)
-        throw std::runtime_error(fmt::format("{}: cannot write: {}", path.string(),
-                                             sf_strerror(nullptr)));
+        throw std::runtime_error(
+            fmt::format("{}: cannot write: {}", path.string(), sf_strerror(nullptr)));
 }
 
 AudioWriter::~AudioWriter() {
@@ -49,8 +48,8 @@ void AudioWriter::commit() {
     if (error != 0) {
         std::error_code ignored;
         std::filesystem::remove(temporary_, ignored);
-        throw std::runtime_error(fmt::format("{}: write failed: {}", path_.string(),
-                                             sf_error_number(error)));
+        throw std::runtime_error(
+            fmt::format("{}: write failed: {}", path_.string(), sf_error_number(error)));
     }
     commit_temporary(temporary_, path_);
 }

@@ -4,15 +4,15 @@
 // failed run leaves nothing behind.
 #pragma once
 
+#include <sndfile.h>
+
 #include <filesystem>
 #include <vector>
-
-#include <sndfile.h>
 
 namespace tactus {
 
 class AudioWriter {
-public:
+  public:
     AudioWriter(const std::filesystem::path& path, double sample_rate_hz, int channels);
     ~AudioWriter();
     AudioWriter(const AudioWriter&) = delete;
@@ -21,7 +21,7 @@ public:
     void write(const float* mono, int frames);
     void commit();
 
-private:
+  private:
     std::filesystem::path path_, temporary_;
     SNDFILE* file_ = nullptr;
     int channels_ = 1;

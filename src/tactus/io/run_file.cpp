@@ -1,9 +1,9 @@
 #include "tactus/io/run_file.hpp"
 
+#include <fmt/format.h>
+
 #include <stdexcept>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "tactus/io/audio_reader.hpp"
 

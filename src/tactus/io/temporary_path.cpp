@@ -1,10 +1,9 @@
 #include "tactus/io/temporary_path.hpp"
 
+#include <fmt/format.h>
 #include <unistd.h>
 
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace tactus {
 
@@ -13,15 +12,14 @@ std::filesystem::path temporary_path_for(const std::filesystem::path& target) {
     return target.parent_path() / name;
 }
 
-void commit_temporary(const std::filesystem::path& temporary,
-                      const std::filesystem::path& target) {
+void commit_temporary(const std::filesystem::path& temporary, const std::filesystem::path& target) {
     std::error_code error;
     std::filesystem::rename(temporary, target, error);
     if (error) {
         std::error_code ignored;
         std::filesystem::remove(temporary, ignored);
-        throw std::runtime_error(fmt::format("{}: cannot write: {}", target.string(),
-                                             error.message()));
+        throw std::runtime_error(
+            fmt::format("{}: cannot write: {}", target.string(), error.message()));
     }
 }
 

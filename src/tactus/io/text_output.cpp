@@ -1,9 +1,9 @@
 #include "tactus/io/text_output.hpp"
 
+#include <fmt/format.h>
+
 #include <iostream>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 #include "tactus/io/temporary_path.hpp"
 
@@ -16,8 +16,7 @@ TextOutput::TextOutput(const std::filesystem::path& path) : path_(path) {
     }
     temporary_ = temporary_path_for(path);
     file_.emplace(temporary_);
-    if (!*file_)
-        throw std::runtime_error(fmt::format("{}: cannot write", path.string()));
+    if (!*file_) throw std::runtime_error(fmt::format("{}: cannot write", path.string()));
 }
 
 TextOutput::~TextOutput() {
@@ -34,8 +33,7 @@ void TextOutput::commit() {
         return;
     }
     file_->close();
-    if (file_->fail())
-        throw std::runtime_error(fmt::format("{}: write failed", path_.string()));
+    if (file_->fail()) throw std::runtime_error(fmt::format("{}: write failed", path_.string()));
     commit_temporary(temporary_, path_);
     committed_ = true;
 }

@@ -10,7 +10,7 @@
 namespace tactus {
 
 class TextOutput {
-public:
+  public:
     // Empty path or "-": stdout.
     explicit TextOutput(const std::filesystem::path& path);
     ~TextOutput();
@@ -20,7 +20,7 @@ public:
     std::ostream& stream() { return file_ ? static_cast<std::ostream&>(*file_) : *stdout_; }
     void commit();
 
-private:
+  private:
     std::filesystem::path path_, temporary_;
     std::optional<std::ofstream> file_;
     std::ostream* stdout_ = nullptr;

@@ -13,8 +13,8 @@ struct ControlFrame {
     double square_mix = 0;    // 0 sine ... 1 square
     bool trigger = false;     // (re)start the envelope
     double attack_ms = 1;
-    double decay_ms = 150;    // peak to -60 dB
-    double sustain = 0;       // level the envelope decays to, 0 ... 1
+    double decay_ms = 150;  // peak to -60 dB
+    double sustain = 0;     // level the envelope decays to, 0 ... 1
 };
 
 }  // namespace tactus

@@ -7,7 +7,9 @@
 
 namespace tactus {
 namespace {
-P offset(P first, int k) { return static_cast<P>(static_cast<int>(first) + k); }
+P offset(P first, int k) {
+    return static_cast<P>(static_cast<int>(first) + k);
+}
 constexpr double kSmallest = 1e-9;  // keeps log curves finite at 0
 }  // namespace
 

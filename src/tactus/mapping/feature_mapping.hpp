@@ -12,7 +12,7 @@
 namespace tactus {
 
 class FeatureMapping {
-public:
+  public:
     // `first` is the mapping's *_source parameter; the others follow it in the table.
     void prepare(const Settings& settings, P first, double frames_per_second);
     void reset(double value) noexcept { smoothed_ = value; }
@@ -22,7 +22,7 @@ public:
     // The curve alone, without smoothing.
     double shape(double input) const noexcept;
 
-private:
+  private:
     FeatureSource source_{};
     MappingCurve curve_{};
     double in_min_ = 0, in_max_ = 1, out_min_ = 0, out_max_ = 1;

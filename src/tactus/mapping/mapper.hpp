@@ -11,12 +11,12 @@
 namespace tactus {
 
 class Mapper {
-public:
+  public:
     void prepare(const Settings& settings, double frames_per_second);
     void reset() noexcept;
     ControlFrame map(const Features& features) noexcept;
 
-private:
+  private:
     FeatureMapping amplitude_, frequency_, square_mix_;
     double gate_db_ = -70;
     ControlFrame envelope_;  // attack, decay, sustain from settings

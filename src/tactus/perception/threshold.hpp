@@ -10,9 +10,9 @@
 
 namespace tactus::perception {
 
-constexpr double kPBestHz = 250.0;          // f_m [derived, perception.md]
-constexpr double kPMinimumDb = -20.0;       // T_Pmin [recalled, +-5 dB]
-constexpr double kPLowEdgeHz = 40.0;        // P channel range 40-500 Hz (paper Table 1)
+constexpr double kPBestHz = 250.0;     // f_m [derived, perception.md]
+constexpr double kPMinimumDb = -20.0;  // T_Pmin [recalled, +-5 dB]
+constexpr double kPLowEdgeHz = 40.0;   // P channel range 40-500 Hz (paper Table 1)
 constexpr double kPHighEdgeHz = 500.0;
 
 inline double p_threshold_db(double frequency_hz) {

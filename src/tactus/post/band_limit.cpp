@@ -12,13 +12,13 @@ void BandLimit::prepare(double sample_rate_hz, double low_hz, double high_hz, in
     const int per_side = order / 2;
     count_ = 0;
     for (int k = 0; k < per_side; ++k)
-        sections_[count_++].set(BiquadCoefficients::highpass(low_hz, butterworth_q(order, k),
-                                                             sample_rate_hz));
+        sections_[count_++].set(
+            BiquadCoefficients::highpass(low_hz, butterworth_q(order, k), sample_rate_hz));
     // A low-pass near Nyquist would be meaningless; the band then ends at Nyquist.
     if (high_hz < 0.45 * sample_rate_hz)
         for (int k = 0; k < per_side; ++k)
-            sections_[count_++].set(BiquadCoefficients::lowpass(high_hz, butterworth_q(order, k),
-                                                                sample_rate_hz));
+            sections_[count_++].set(
+                BiquadCoefficients::lowpass(high_hz, butterworth_q(order, k), sample_rate_hz));
     reset();
 }
 

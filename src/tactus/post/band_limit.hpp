@@ -9,7 +9,7 @@
 namespace tactus {
 
 class BandLimit {
-public:
+  public:
     static constexpr int kMaxOrder = 8;
 
     void prepare(double sample_rate_hz, double low_hz, double high_hz, int order);
@@ -17,7 +17,7 @@ public:
     void process(float* samples, int count) noexcept;
     double magnitude_db(double frequency_hz) const;
 
-private:
+  private:
     std::array<Biquad, kMaxOrder> sections_;  // order/2 high-pass then order/2 low-pass
     int count_ = 0;
     double sample_rate_hz_ = 48000;

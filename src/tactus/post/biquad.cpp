@@ -23,8 +23,7 @@ BiquadCoefficients BiquadCoefficients::peaking(double centre_hz, double q, doubl
                                                double fs) {
     const double a = std::pow(10.0, gain_db / 40.0);
     const double w = 2.0 * kPi * centre_hz / fs, cw = std::cos(w), alpha = std::sin(w) / (2 * q);
-    return normalised(1 + alpha * a, -2 * cw, 1 - alpha * a, 1 + alpha / a, -2 * cw,
-                      1 - alpha / a);
+    return normalised(1 + alpha * a, -2 * cw, 1 - alpha * a, 1 + alpha / a, -2 * cw, 1 - alpha / a);
 }
 
 BiquadCoefficients BiquadCoefficients::low_shelf(double corner_hz, double gain_db, double fs) {

@@ -28,7 +28,7 @@ struct BiquadCoefficients {
 };
 
 class Biquad {
-public:
+  public:
     void set(const BiquadCoefficients& c) { c_ = c; }
     const BiquadCoefficients& coefficients() const { return c_; }
     void reset() noexcept { s1_ = s2_ = 0.0; }
@@ -40,7 +40,7 @@ public:
         return y;
     }
 
-private:
+  private:
     BiquadCoefficients c_;
     double s1_ = 0, s2_ = 0;
 };

@@ -102,8 +102,8 @@ void FlatteningFilter::prepare(double sample_rate_hz, double low_hz, double high
         for (int u = 0; u < unknowns; ++u) gains_db[u] += step[u];
     }
     for (int s = 0; s < count_; ++s)
-        sections_[s].set(BiquadCoefficients::peaking(centres[s], kSectionQ, gains_db[s],
-                                                     sample_rate_hz));
+        sections_[s].set(
+            BiquadCoefficients::peaking(centres[s], kSectionQ, gains_db[s], sample_rate_hz));
     gain_ = db_to_gain(gains_db[count_]);
     reset();
 }

@@ -17,7 +17,7 @@
 namespace tactus {
 
 class FlatteningFilter {
-public:
+  public:
     static constexpr int kMaxSections = 16;
 
     void prepare(double sample_rate_hz, double low_hz, double high_hz, double strength,
@@ -28,7 +28,7 @@ public:
     double target_db(double frequency_hz) const;     // what the design aims for
     double magnitude_db(double frequency_hz) const;  // what it achieves
 
-private:
+  private:
     double sample_rate_hz_ = 48000, strength_ = 1, range_db_ = 30, reference_db_ = 0;
     double low_hz_ = 20, high_hz_ = 1000;
     std::array<Biquad, kMaxSections> sections_;

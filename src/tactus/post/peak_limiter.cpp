@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "tactus/core/units.hpp"
 
@@ -12,7 +13,7 @@ void PeakLimiter::prepare(double sample_rate_hz, double lookahead_ms, double rel
     lookahead_ = std::max<int>(1, static_cast<int>(ms_to_samples(lookahead_ms, sample_rate_hz)));
     release_ = one_pole_coefficient(release_ms, sample_rate_hz);
     drive_ = db_to_gain(drive_db);
-    ceiling_ = ceiling;
+    ceiling_ = float_at_most(ceiling);  // output samples are floats
     threshold_ = ceiling * db_to_gain(threshold_db);
     delay_.assign(static_cast<size_t>(lookahead_), 0.0);
     held_gain_.assign(static_cast<size_t>(lookahead_), 1.0);
@@ -67,6 +68,8 @@ void PeakLimiter::process(float* samples, int count) noexcept {
         const size_t slot = static_cast<size_t>(time_) % length;
         box_sum_ += released_gain_ - held_gain_[slot];
         held_gain_[slot] = released_gain_;
+        if (slot == length - 1)  // re-sum once per look-ahead: no rounding drift, O(1) a sample
+            box_sum_ = std::accumulate(held_gain_.begin(), held_gain_.end(), 0.0);
         const double gain = std::min(1.0, box_sum_ / static_cast<double>(length));
 
         const double delayed = delay_[slot];

@@ -17,7 +17,7 @@
 namespace tactus {
 
 class PeakLimiter {
-public:
+  public:
     void prepare(double sample_rate_hz, double lookahead_ms, double release_ms, double drive_db,
                  double threshold_db, double ceiling);  // may allocate
     void reset() noexcept;
@@ -26,11 +26,11 @@ public:
     // The output level the static curve gives a sample of magnitude `peak` (after drive).
     double curve(double peak) const noexcept;
 
-private:
+  private:
     int lookahead_ = 1;
     double drive_ = 1, threshold_ = 0.5, ceiling_ = 1, release_ = 0;
-    std::vector<double> delay_;             // look-ahead delay line (double: no overflow)
-    std::vector<double> held_gain_;         // ring for the box average
+    std::vector<double> delay_;      // look-ahead delay line (double: no overflow)
+    std::vector<double> held_gain_;  // ring for the box average
     std::vector<std::pair<int64_t, double>> minimum_;  // monotonic deque (ring) for sliding min
     size_t minimum_head_ = 0, minimum_size_ = 0;
     int64_t time_ = 0;

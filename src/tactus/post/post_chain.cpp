@@ -30,10 +30,12 @@ void PostChain::process(float* samples, int count) noexcept {
     flatten_.process(samples, count);
     limiter_.process(samples, count);
     last_band_.process(samples, count);
-    const auto ceiling = static_cast<float>(ceiling_);
+    const float ceiling = float_at_most(ceiling_);
     for (int i = 0; i < count; ++i) {
-        if (samples[i] > ceiling) samples[i] = ceiling, ++clipped_;
-        else if (samples[i] < -ceiling) samples[i] = -ceiling, ++clipped_;
+        if (samples[i] > ceiling)
+            samples[i] = ceiling, ++clipped_;
+        else if (samples[i] < -ceiling)
+            samples[i] = -ceiling, ++clipped_;
     }
 }
 

@@ -14,7 +14,7 @@
 namespace tactus {
 
 class PostChain {
-public:
+  public:
     static constexpr int kFirstBandOrder = 8;
     static constexpr int kLastBandOrder = 2;
     static constexpr double kRingingMarginDb = 1.0;
@@ -27,7 +27,7 @@ public:
     double ceiling() const { return ceiling_; }
     const FlatteningFilter& flattening() const { return flatten_; }
 
-private:
+  private:
     BandLimit first_band_, last_band_;
     FlatteningFilter flatten_;
     PeakLimiter limiter_;

@@ -27,7 +27,9 @@ double Oscillator::next(double frequency_hz, double square_mix) noexcept {
     const double two_cos = 2.0 * std::cos(2.0 * angle);
     double previous = -fundamental, current = fundamental;  // sin(-x), sin(x)
     double square = 0.0;
-    const int last_harmonic = static_cast<int>(harmonic_limit_hz_ / frequency_hz);
+    constexpr double kMostHarmonics = 1e5;  // bounds the loop for absurdly low f0
+    const int last_harmonic =
+        std::max(1, static_cast<int>(std::min(harmonic_limit_hz_ / frequency_hz, kMostHarmonics)));
     for (int k = 1; k <= last_harmonic; k += 2) {
         const double weight =
             k == 1 ? 1.0

@@ -8,14 +8,14 @@
 namespace tactus {
 
 class Oscillator {
-public:
+  public:
     void prepare(double sample_rate_hz, double harmonic_limit_hz);
     void reset() noexcept { phase_ = 0.0; }
     void restart_phase() noexcept { phase_ = 0.0; }
     // One sample at frequency_hz, mix 0 (sine) ... 1 (square).
     double next(double frequency_hz, double square_mix) noexcept;
 
-private:
+  private:
     double sample_rate_hz_ = 48000, harmonic_limit_hz_ = 1000;
     double phase_ = 0.0;  // cycles, [0, 1)
 };

@@ -47,9 +47,9 @@ void Voice::render(float* out, int count) noexcept {
         frequency = target_.frequency_hz + g * (frequency - target_.frequency_hz);
         mix = target_.square_mix + g * (mix - target_.square_mix);
         const double level = envelope_.next();
-        out[i] = level == 0.0 ? 0.0f
-                              : static_cast<float>(amplitude * level *
-                                                   oscillator_.next(frequency, mix));
+        out[i] = level == 0.0
+                     ? 0.0f
+                     : static_cast<float>(amplitude * level * oscillator_.next(frequency, mix));
     }
     amplitude_ = amplitude;
     frequency_hz_ = frequency;

@@ -11,13 +11,13 @@
 namespace tactus {
 
 class Voice {
-public:
+  public:
     void prepare(double sample_rate_hz, double harmonic_limit_hz);
     void reset() noexcept;
     void apply(const ControlFrame& frame) noexcept;
     void render(float* out, int count) noexcept;
 
-private:
+  private:
     Oscillator oscillator_;
     Envelope envelope_;
     double glide_ = 0.0;
