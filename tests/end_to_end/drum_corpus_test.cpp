@@ -4,6 +4,7 @@
 // ceiling, and onset -> half pulse peak latency. eval/evaluate.py reports the same figures
 // beside aubioonset's.
 #include "drum_corpus.hpp"
+#include "support/signals.hpp"
 
 #include <gtest/gtest.h>
 
@@ -62,15 +63,9 @@ std::vector<float> pulse(const Rendered& r, double rate, double onset_s) {
             r.vibration.begin() + static_cast<std::ptrdiff_t>(end)};
 }
 
-double peak_of(const std::vector<float>& x) {
-    double peak = 0;
-    for (float v : x) peak = std::max(peak, double(std::abs(v)));
-    return peak;
-}
-
 // Carrier frequency from zero crossings where the pulse is above 10 % of its peak.
 double pulse_frequency_hz(const std::vector<float>& x, double rate) {
-    const double peak = peak_of(x);
+    const double peak = test::peak(x);
     size_t first = x.size(), last = 0;
     for (size_t i = 0; i < x.size(); ++i)
         if (std::abs(x[i]) > 0.1 * peak) first = std::min(first, i), last = i;
@@ -165,9 +160,9 @@ TEST(DrumCorpus, VibrationOfIsolatedHits) {
             for (const auto& hit : track.hits) {
                 const auto p = pulse(r, track.sample_rate_hz, hit.time_s);
                 gains.push_back(hit.gain_db);
-                peaks.push_back(peak_of(p));
+                peaks.push_back(test::peak(p));
                 frequencies.push_back(pulse_frequency_hz(p, track.sample_rate_hz));
-                const double half = 0.5 * peak_of(p);
+                const double half = 0.5 * test::peak(p);
                 const auto rise =
                     std::find_if(p.begin(), p.end(), [&](float v) { return std::abs(v) >= half; });
                 latencies_s.push_back((rise - p.begin()) / track.sample_rate_hz);
@@ -180,7 +175,7 @@ TEST(DrumCorpus, VibrationOfIsolatedHits) {
             // Whole output: in band, under the ceiling.
             EXPECT_GE(in_band_share(r.vibration, track.sample_rate_hz, 20, 1000), 0.995)
                 << kit.name;
-            EXPECT_LE(peak_of(r.vibration), 1.0);
+            EXPECT_LE(test::peak(r.vibration), 1.0);
         }
         const double ratio = frequency_hz[1] / frequency_hz[0];
         std::cout << kit.name << ": kick " << frequency_hz[0] << " Hz, snare " << frequency_hz[1]
@@ -198,7 +193,7 @@ TEST(DrumCorpus, BreakbeatOutputStaysInBandAndUnderCeiling) {
     const Track track = corpus::breakbeat(corpus::kits()[0], 77);
     const Rendered r = render(track);
     EXPECT_GE(in_band_share(r.vibration, track.sample_rate_hz, 20, 1000), 0.995);
-    EXPECT_LE(peak_of(r.vibration), 1.0);
+    EXPECT_LE(test::peak(r.vibration), 1.0);
 }
 
 }  // namespace
