@@ -9,16 +9,9 @@
 
 namespace {
 
-std::vector<float> amen() {
-    tactus::AudioReader reader("/usr/share/sonic-pi/samples/loop_amen_full.flac");
-    std::vector<float> audio, block(4096);
-    while (const int n = reader.read(block.data(), static_cast<int>(block.size())))
-        audio.insert(audio.end(), block.begin(), block.begin() + n);
-    return audio;
-}
-
 void WholePipeline(benchmark::State& state) {
-    static const std::vector<float> input = amen();
+    static const std::vector<float> input =
+        tactus::read_mono("/usr/share/sonic-pi/samples/loop_amen_full.flac").samples;
     constexpr int kBlock = 512;
     tactus::Engine engine;
     engine.prepare(44100, kBlock);

@@ -40,10 +40,7 @@ const std::vector<float>& load(const std::string& name) {
     static std::map<std::string, std::vector<float>> cache;
     auto found = cache.find(name);
     if (found != cache.end()) return found->second;
-    AudioReader reader(sample_directory() / (name + ".flac"));
-    std::vector<float> audio, block(4096);
-    while (const int got = reader.read(block.data(), static_cast<int>(block.size())))
-        audio.insert(audio.end(), block.begin(), block.begin() + got);
+    std::vector<float> audio = read_mono(sample_directory() / (name + ".flac")).samples;
     float peak = 0;
     for (float x : audio) peak = std::max(peak, std::abs(x));
     const auto start = std::find_if(audio.begin(), audio.end(),

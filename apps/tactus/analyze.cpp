@@ -8,8 +8,6 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "pipeline_options.hpp"
-#include "progress.hpp"
-#include "tactus/io/run_file.hpp"
 #include "tactus/io/text_output.hpp"
 
 namespace tactus::cli {
@@ -91,9 +89,7 @@ void analyze(const AnalyzeOptions& o) {
     TextOutput output(out_path);
     FrameWriter writer(output.stream(), format == "json", engine);
     engine.set_observer(&writer);
-    Progress progress("analyze");
-    run_file(o.input, engine,
-             {nullptr, [&](int64_t done, int64_t total) { progress.update(done, total); }});
+    run_with_progress(o.input, engine, "analyze");
     writer.finish();
     output.commit();
     if (!o.output.empty() && o.output != "-")

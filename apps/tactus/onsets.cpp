@@ -5,8 +5,6 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "pipeline_options.hpp"
-#include "progress.hpp"
-#include "tactus/io/run_file.hpp"
 #include "tactus/io/text_output.hpp"
 
 namespace tactus::cli {
@@ -39,9 +37,7 @@ void onsets(const OnsetsOptions& o) {
     TextOutput output(o.output);
     OnsetWriter writer(output.stream(), engine);
     engine.set_observer(&writer);
-    Progress progress("onsets");
-    run_file(o.input, engine,
-             {nullptr, [&](int64_t done, int64_t total) { progress.update(done, total); }});
+    run_with_progress(o.input, engine, "onsets");
     output.commit();
 }
 

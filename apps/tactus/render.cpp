@@ -3,14 +3,12 @@
 
 #include <cmath>
 #include <iostream>
+#include <optional>
 
 #include "commands.hpp"
 #include "common.hpp"
 #include "pipeline_options.hpp"
-#include "progress.hpp"
-#include "tactus/io/audio_reader.hpp"
 #include "tactus/io/audio_writer.hpp"
-#include "tactus/io/run_file.hpp"
 
 namespace tactus::cli {
 namespace {
@@ -32,21 +30,21 @@ class OnsetCounter final : public FrameObserver {
 void render(const RenderOptions& o) {
     const Settings settings = o.pipeline.resolve();
     refuse_overwriting_input(o.input, o.output);
-    const double sample_rate_hz = AudioReader(o.input).sample_rate_hz();
-    AudioWriter writer(o.output, sample_rate_hz, o.channels);
     Engine engine(settings);
     OnsetCounter counter;
     engine.set_observer(&counter);
-    Progress progress("render");
+    std::optional<AudioWriter> writer;  // opened at the input's sample rate
     float peak = 0.0f;
-    const RunSummary summary =
-        run_file(o.input, engine,
-                 {[&](const float* v, int n) {
-                      for (int i = 0; i < n; ++i) peak = std::max(peak, std::abs(v[i]));
-                      writer.write(v, n);
-                  },
-                  [&](int64_t done, int64_t total) { progress.update(done, total); }});
-    writer.commit();
+    const RunSummary summary = run_with_progress(
+        o.input, engine, "render",
+        {.on_output =
+             [&](const float* v, int n) {
+                 for (int i = 0; i < n; ++i) peak = std::max(peak, std::abs(v[i]));
+                 writer->write(v, n);
+             },
+         .on_start = [&](double sample_rate_hz,
+                         int) { writer.emplace(o.output, sample_rate_hz, o.channels); }});
+    writer->commit();
     std::cerr << fmt::format(
         "{}: {:.2f} s at {:g} Hz, {} pulses, peak {:.1f} dBFS, {} channel(s)\n", o.output,
         summary.frames / summary.sample_rate_hz, summary.sample_rate_hz, counter.onsets,

@@ -9,6 +9,8 @@
 #include <sstream>
 #include <string>
 
+#include "support/temp_dir.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -19,17 +21,8 @@ struct Result {
     std::string out, err;
 };
 
-class Cli : public ::testing::Test {
+class Cli : public tactus::test::TempDirTest {
   protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("tactus-cli-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
     Result run(const std::string& arguments) const {
         const fs::path err = dir_ / "stderr.txt";
         const std::string command =
@@ -44,8 +37,6 @@ class Cli : public ::testing::Test {
         s << e.rdbuf();
         return {WEXITSTATUS(status), out, s.str()};
     }
-
-    fs::path dir_;
 };
 
 SF_INFO info_of(const fs::path& path) {

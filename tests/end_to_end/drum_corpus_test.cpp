@@ -4,7 +4,6 @@
 // ceiling, and onset -> half pulse peak latency. eval/evaluate.py reports the same figures
 // beside aubioonset's.
 #include "drum_corpus.hpp"
-#include "support/signals.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,6 +12,7 @@
 #include <numeric>
 #include <vector>
 
+#include "support/signals.hpp"
 #include "tactus/analysis/real_fft.hpp"
 #include "tactus/engine/engine.hpp"
 

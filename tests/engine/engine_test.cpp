@@ -59,15 +59,6 @@ void expect_finite_and_bounded(const std::vector<float>& y, double bound, const 
     }
 }
 
-std::vector<float> read_all(const std::filesystem::path& path, double* fs) {
-    AudioReader reader(path);
-    *fs = reader.sample_rate_hz();
-    std::vector<float> audio, block(4096);
-    while (const int got = reader.read(block.data(), static_cast<int>(block.size())))
-        audio.insert(audio.end(), block.begin(), block.begin() + got);
-    return audio;
-}
-
 void expect_block_size_invariance(const std::vector<float>& x, double fs, const std::string& what) {
     const std::vector<float> reference = render(x, fs, {4096});
     EXPECT_GT(test::peak(reference), 0.05) << what << ": the test signal must make vibration";
@@ -89,10 +80,9 @@ TEST(Engine, BlockSizeInvarianceOnDrums) {
 
 TEST(Engine, BlockSizeInvarianceOnTheAmenLoop) {
     if (!std::filesystem::exists(kAmen)) GTEST_SKIP() << kAmen << " not installed";
-    double fs = 0;
-    const std::vector<float> x = read_all(kAmen, &fs);
-    ASSERT_GT(x.size(), 44100u);
-    expect_block_size_invariance(x, fs, "amen");
+    const MonoAudio amen = read_mono(kAmen);
+    ASSERT_GT(amen.samples.size(), 44100u);
+    expect_block_size_invariance(amen.samples, amen.sample_rate_hz, "amen");
 }
 
 TEST(Engine, DigitalSilenceGivesExactZeros) {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "support/signals.hpp"
+#include "support/temp_dir.hpp"
 #include "tactus/io/audio_reader.hpp"
 #include "tactus/io/audio_writer.hpp"
 #include "tactus/io/temporary_path.hpp"
@@ -26,28 +27,12 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-class IoTest : public ::testing::Test {
+class IoTest : public test::TempDirTest {
   protected:
-    void SetUp() override {
-        std::string pattern = (fs::temp_directory_path() / "tactus-io-XXXXXX").string();
-        ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-        dir_ = pattern;
-    }
-    void TearDown() override {
-        std::error_code ignored;
-        fs::remove_all(dir_, ignored);
-    }
     size_t files_in_dir() const {
         return static_cast<size_t>(std::distance(fs::directory_iterator(dir_), {}));
     }
-    static std::vector<float> read_all(const fs::path& path) {
-        AudioReader reader(path);
-        std::vector<float> audio, block(1000);
-        while (const int got = reader.read(block.data(), static_cast<int>(block.size())))
-            audio.insert(audio.end(), block.begin(), block.begin() + got);
-        return audio;
-    }
-    fs::path dir_;
+    static std::vector<float> read_all(const fs::path& path) { return read_mono(path).samples; }
 };
 
 TEST_F(IoTest, WriterCommitsAtomicallyAndReaderRoundTrips) {

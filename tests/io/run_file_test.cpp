@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "support/signals.hpp"
+#include "support/temp_dir.hpp"
 #include "tactus/io/audio_writer.hpp"
 
 namespace tactus {
@@ -21,17 +22,8 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-class RunFileTest : public ::testing::Test {
+class RunFileTest : public test::TempDirTest {
   protected:
-    void SetUp() override {
-        std::string pattern = (fs::temp_directory_path() / "tactus-run-XXXXXX").string();
-        ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-        dir_ = pattern;
-    }
-    void TearDown() override {
-        std::error_code ignored;
-        fs::remove_all(dir_, ignored);
-    }
     fs::path write(const std::string& name, const std::vector<float>& x, double fs) {
         const fs::path path = dir_ / name;
         AudioWriter writer(path, fs, 1);
@@ -39,7 +31,6 @@ class RunFileTest : public ::testing::Test {
         writer.commit();
         return path;
     }
-    fs::path dir_;
 };
 
 TEST_F(RunFileTest, OutputMatchesTheEngineAndProgressReachesTheEnd) {

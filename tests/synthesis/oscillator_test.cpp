@@ -105,7 +105,7 @@ TEST(Oscillator, RestartPhaseStartsAtAZeroCrossing) {
     Oscillator osc;
     osc.prepare(48000, 1000);
     for (int i = 0; i < 1234; ++i) osc.next(100.0, 0.5);
-    osc.restart_phase();
+    osc.reset();
     EXPECT_EQ(osc.next(100.0, 1.0), 0.0);
     EXPECT_GT(osc.next(100.0, 1.0), 0.0);
 }

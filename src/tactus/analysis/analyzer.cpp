@@ -66,7 +66,7 @@ const Features& Analyzer::analyse() noexcept {
     const OnsetDecision onset = onsets_.analyse(history_);
     f.onset_odf = onset.odf;
     f.onset = onset.onset;
-    f.onset_sample = onset.onset ? onset.onset_sample : f.onset_sample;
+    if (onset.onset) f.onset_sample = onset.onset_sample;
     return f;
 }
 

@@ -16,7 +16,6 @@ void OnsetDetector::prepare(double sample_rate_hz, int hop_samples, const OnsetS
     settings_ = s;
     hop_samples_ = hop_samples;
     stft_.prepare(nearest_power_of_two(ms_to_samples(s.window_ms, sample_rate_hz)), sample_rate_hz);
-    first_bin_ = 0;
     end_bin_ = std::min(stft_.bins(), static_cast<int>(kTopHz / stft_.bin_hz()) + 1);
     previous_log_.assign(static_cast<size_t>(stft_.bins()), 0.0f);
     older_log_.assign(static_cast<size_t>(stft_.bins()), 0.0f);
@@ -47,13 +46,13 @@ OnsetDecision OnsetDetector::analyse(const SampleHistory& history) noexcept {
     // Rise over the louder of the two previous frames (SuperFlux's temporal maximum, Böck &
     // Widmer 2013): a noise bin must beat both to count, a new sound beats both.
     double flux = 0.0;
-    for (int k = first_bin_; k < end_bin_; ++k) {
+    for (int k = 0; k < end_bin_; ++k) {
         const float log_magnitude = std::log1p(static_cast<float>(kLogCompression) * magnitudes[k]);
         flux += std::max(0.0f, log_magnitude - std::max(previous_log_[k], older_log_[k]));
         older_log_[k] = previous_log_[k];
         previous_log_[k] = log_magnitude;
     }
-    flux *= 100.0 / (end_bin_ - first_bin_);  // per hundred bins: independent of window size
+    flux *= 100.0 / end_bin_;  // per hundred bins: independent of window size
 
     // Median of the recent flux: the background level, not raised by the hits themselves.
     std::copy(flux_history_.begin(), flux_history_.end(), scratch_.begin());

@@ -25,25 +25,33 @@ AudioReader::~AudioReader() {
 
 int AudioReader::read(float* mono, int max_frames) {
     const int channels = info_.channels;
-    if (channels == 1) {
-        const sf_count_t got = sf_readf_float(file_, mono, max_frames);
-        if (got < 0 || (got == 0 && sf_error(file_) != SF_ERR_NO_ERROR))
-            throw std::runtime_error(
-                fmt::format("{}: read error: {}", path_.string(), sf_strerror(file_)));
-        return static_cast<int>(got);
+    float* destination = mono;
+    if (channels > 1) {
+        interleaved_.resize(static_cast<size_t>(max_frames) * channels);
+        destination = interleaved_.data();
     }
-    interleaved_.resize(static_cast<size_t>(max_frames) * channels);
-    const sf_count_t got = sf_readf_float(file_, interleaved_.data(), max_frames);
+    const sf_count_t got = sf_readf_float(file_, destination, max_frames);
     if (got < 0 || (got == 0 && sf_error(file_) != SF_ERR_NO_ERROR))
         throw std::runtime_error(
             fmt::format("{}: read error: {}", path_.string(), sf_strerror(file_)));
-    const float scale = 1.0f / static_cast<float>(channels);
-    for (sf_count_t i = 0; i < got; ++i) {
-        float sum = 0.0f;
-        for (int c = 0; c < channels; ++c) sum += interleaved_[i * channels + c];
-        mono[i] = sum * scale;
+    if (channels > 1) {
+        const float scale = 1.0f / static_cast<float>(channels);
+        for (sf_count_t i = 0; i < got; ++i) {
+            float sum = 0.0f;
+            for (int c = 0; c < channels; ++c) sum += interleaved_[i * channels + c];
+            mono[i] = sum * scale;
+        }
     }
     return static_cast<int>(got);
+}
+
+MonoAudio read_mono(const std::filesystem::path& path) {
+    AudioReader reader(path);
+    MonoAudio audio{{}, reader.sample_rate_hz()};
+    std::vector<float> block(4096);
+    while (const int got = reader.read(block.data(), static_cast<int>(block.size())))
+        audio.samples.insert(audio.samples.end(), block.begin(), block.begin() + got);
+    return audio;
 }
 
 }  // namespace tactus

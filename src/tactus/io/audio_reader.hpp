@@ -31,4 +31,11 @@ class AudioReader {
     std::vector<float> interleaved_;
 };
 
+// A whole file as mono samples, for tools and tests; streaming code uses AudioReader.
+struct MonoAudio {
+    std::vector<float> samples;
+    double sample_rate_hz = 0;
+};
+MonoAudio read_mono(const std::filesystem::path& path);
+
 }  // namespace tactus

@@ -18,6 +18,7 @@ RunSummary run_file(const std::filesystem::path& input, Engine& engine,
     } catch (const std::invalid_argument& e) {
         throw std::runtime_error(fmt::format("{}: {}", input.string(), e.what()));
     }
+    if (callbacks.on_start) callbacks.on_start(reader.sample_rate_hz(), reader.channels());
     std::vector<float> in(kBlock), out(kBlock);
     RunSummary summary{reader.sample_rate_hz(), reader.channels(), 0};
     const int64_t report_every = std::max<int64_t>(kBlock, reader.frames() / 100);

@@ -12,9 +12,11 @@ namespace tactus {
 
 struct RunCallbacks {
     // Each block of vibration as it is produced (may be empty).
-    std::function<void(const float* vibration, int frames)> on_output;
+    std::function<void(const float* vibration, int frames)> on_output{};
     // Frames done and the total (total <= 0 when unknown), about every 1 % of the file.
-    std::function<void(int64_t done, int64_t total)> on_progress;
+    std::function<void(int64_t done, int64_t total)> on_progress{};
+    // Once the file is open and the engine prepared, before any audio (may be empty).
+    std::function<void(double sample_rate_hz, int channels)> on_start{};
 };
 
 struct RunSummary {

@@ -10,8 +10,7 @@ namespace tactus {
 class Oscillator {
   public:
     void prepare(double sample_rate_hz, double harmonic_limit_hz);
-    void reset() noexcept { phase_ = 0.0; }
-    void restart_phase() noexcept { phase_ = 0.0; }
+    void reset() noexcept { phase_ = 0.0; }  // restarts the phase: the next sample is sin(0)
     // One sample at frequency_hz, mix 0 (sine) ... 1 (square).
     double next(double frequency_hz, double square_mix) noexcept;
 

@@ -30,7 +30,7 @@ void Voice::apply(const ControlFrame& frame) noexcept {
     envelope_.set_shape(frame.attack_ms, frame.decay_ms, frame.sustain);
     if (frame.trigger) {
         if (envelope_.level() < kQuietEnvelope) {
-            oscillator_.restart_phase();
+            oscillator_.reset();
             frequency_hz_ = frame.frequency_hz;  // a new pulse starts at its own pitch
             square_mix_ = frame.square_mix;
         }
