@@ -4,27 +4,29 @@
 
 #include <vector>
 
+#include "bench_input.hpp"
 #include "tactus/engine/engine.hpp"
-#include "tactus/io/audio_reader.hpp"
 
+namespace tactus::bench {
 namespace {
 
 void WholePipeline(benchmark::State& state) {
-    static const std::vector<float> input =
-        tactus::read_mono("/usr/share/sonic-pi/samples/loop_amen_full.flac").samples;
+    const std::vector<float>& input = amen();
     constexpr int kBlock = 512;
-    tactus::Engine engine;
-    engine.prepare(44100, kBlock);
+    Engine engine;
+    engine.prepare(kRateHz, kBlock);
     std::vector<float> out(kBlock);
     for (auto _ : state) {
         for (size_t i = 0; i + kBlock <= input.size(); i += kBlock)
             engine.process(input.data() + i, out.data(), kBlock);
         benchmark::DoNotOptimize(out.data());
     }
+    state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(input.size()));
     state.counters["x_real_time"] =
-        benchmark::Counter(static_cast<double>(input.size()) / 44100.0 * state.iterations(),
+        benchmark::Counter(static_cast<double>(input.size()) / kRateHz * state.iterations(),
                            benchmark::Counter::kIsRate);
 }
 BENCHMARK(WholePipeline)->Unit(benchmark::kMillisecond);
 
 }  // namespace
+}  // namespace tactus::bench

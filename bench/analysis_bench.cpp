@@ -1,0 +1,161 @@
+// The analysis stage, one component at a time, on the Amen break at 44.1 kHz with the default
+// settings: the STFT frame, each feature, YIN pitch, the onset detector, and the whole Analyzer.
+// Frame-based components report frames/s (one frame per hop); sample-based ones samples/s.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "bench_input.hpp"
+#include "tactus/analysis/analyzer.hpp"
+#include "tactus/analysis/brightness.hpp"
+#include "tactus/analysis/loudness.hpp"
+#include "tactus/analysis/noisiness.hpp"
+#include "tactus/analysis/onset_detector.hpp"
+#include "tactus/analysis/pitch_yin.hpp"
+#include "tactus/analysis/sample_history.hpp"
+#include "tactus/analysis/stft_frame.hpp"
+#include "tactus/core/units.hpp"
+
+namespace tactus::bench {
+namespace {
+
+int window_samples(const Settings& s) {
+    return nearest_power_of_two(ms_to_samples(s[P::analysis_window_ms], kRateHz));
+}
+
+// Runs `analyse(history)` once per hop over the Amen break; counts frames.
+template <typename Analyse>
+void per_frame(benchmark::State& state, int history_samples, Analyse analyse) {
+    const std::vector<float>& in = amen();
+    const int hop = hop_samples();
+    SampleHistory history;
+    history.prepare(history_samples);
+    int64_t frames = 0;
+    for (auto _ : state) {
+        history.reset();
+        for (size_t i = 0; i + hop <= in.size(); i += hop, ++frames) {
+            history.write(in.data() + i, hop);
+            analyse(history);
+        }
+    }
+    state.SetItemsProcessed(frames);
+    state.SetLabel("items = analysis frames");
+}
+
+void StftFrameAnalyse(benchmark::State& state) {
+    StftFrame stft;
+    stft.prepare(window_samples({}), kRateHz);
+    per_frame(state, stft.window_samples(), [&](const SampleHistory& h) {
+        stft.analyse(h);
+        benchmark::DoNotOptimize(stft.magnitudes().data());
+    });
+}
+BENCHMARK(StftFrameAnalyse);
+
+// Brightness and noisiness read a ready spectrum: STFT frames of the Amen break, computed once.
+struct Spectra {
+    std::vector<std::vector<float>> magnitudes, powers;
+    int bins = 0;
+    double bin_hz = 0;
+};
+const Spectra& amen_spectra() {
+    static const Spectra spectra = [] {
+        Spectra s;
+        StftFrame stft;
+        stft.prepare(window_samples({}), kRateHz);
+        SampleHistory history;
+        history.prepare(stft.window_samples());
+        const std::vector<float>& in = amen();
+        const int hop = hop_samples();
+        for (size_t i = 0; i + hop <= in.size(); i += hop) {
+            history.write(in.data() + i, hop);
+            stft.analyse(history);
+            s.magnitudes.push_back(stft.magnitudes());
+            s.powers.push_back(stft.powers());
+        }
+        s.bins = stft.bins();
+        s.bin_hz = stft.bin_hz();
+        return s;
+    }();
+    return spectra;
+}
+
+void Brightness(benchmark::State& state) {
+    const Spectra& s = amen_spectra();
+    for (auto _ : state)
+        for (const auto& m : s.magnitudes)
+            benchmark::DoNotOptimize(spectral_centroid_hz(m, s.bin_hz));
+    state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(s.magnitudes.size()));
+    state.SetLabel("items = analysis frames");
+}
+BENCHMARK(Brightness);
+
+void Noisiness(benchmark::State& state) {
+    const Spectra& s = amen_spectra();
+    tactus::Noisiness noisiness;
+    noisiness.prepare(s.bins, s.bin_hz);
+    for (auto _ : state)
+        for (const auto& p : s.powers) benchmark::DoNotOptimize(noisiness.compute(p));
+    state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(s.powers.size()));
+    state.SetLabel("items = analysis frames");
+}
+BENCHMARK(Noisiness);
+
+void Loudness(benchmark::State& state) {
+    const Settings settings;
+    const std::vector<float>& in = amen();
+    const int hop = hop_samples();
+    tactus::Loudness loudness;
+    loudness.prepare(kRateHz, settings[P::loudness_window_ms]);
+    for (auto _ : state) {
+        loudness.reset();
+        for (size_t i = 0; i + hop <= in.size(); i += hop) {
+            loudness.write(in.data() + i, hop);
+            benchmark::DoNotOptimize(loudness.loudness_db());
+        }
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(in.size()));
+    state.SetLabel("items = samples");
+}
+BENCHMARK(Loudness);
+
+void PitchYinAnalyse(benchmark::State& state) {
+    const Settings s;
+    PitchYin pitch;
+    pitch.prepare(kRateHz, s[P::pitch_min_hz], std::min(s[P::pitch_max_hz], 0.45 * kRateHz),
+                  s[P::pitch_threshold]);  // as the Analyzer clamps it
+    per_frame(state, pitch.span_samples(),
+              [&](const SampleHistory& h) { benchmark::DoNotOptimize(pitch.analyse(h)); });
+}
+BENCHMARK(PitchYinAnalyse);
+
+void OnsetDetectorAnalyse(benchmark::State& state) {
+    const Settings s;
+    OnsetDetector onsets;
+    onsets.prepare(kRateHz, hop_samples(),
+                   {s[P::onset_window_ms], s[P::onset_threshold], s[P::onset_ratio],
+                    s[P::onset_history_ms], s[P::onset_min_interval_ms]});
+    per_frame(state, onsets.span_samples(),
+              [&](const SampleHistory& h) { benchmark::DoNotOptimize(onsets.analyse(h)); });
+}
+BENCHMARK(OnsetDetectorAnalyse);
+
+// The whole analysis stage (YIN every ~10 ms, the rest every hop), per input sample.
+void WholeAnalyzer(benchmark::State& state) {
+    const std::vector<float>& in = amen();
+    Analyzer analyzer;
+    analyzer.prepare(kRateHz, Settings{});
+    const int hop = analyzer.hop_samples();
+    for (auto _ : state) {
+        analyzer.reset();
+        for (size_t i = 0; i + hop <= in.size(); i += hop)
+            if (analyzer.write(in.data() + i, hop)) benchmark::DoNotOptimize(analyzer.analyse());
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(in.size()));
+    state.SetLabel("items = samples");
+}
+BENCHMARK(WholeAnalyzer);
+
+}  // namespace
+}  // namespace tactus::bench

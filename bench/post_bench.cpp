@@ -1,0 +1,75 @@
+// Each post-processing stage and the whole PostChain, per sample, on the vibration the Voice
+// makes for the Amen break (44.1 kHz, default settings), processed in 512-sample blocks.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "bench_input.hpp"
+#include "tactus/core/units.hpp"
+#include "tactus/post/band_limit.hpp"
+#include "tactus/post/flattening_filter.hpp"
+#include "tactus/post/peak_limiter.hpp"
+#include "tactus/post/post_chain.hpp"
+
+namespace tactus::bench {
+namespace {
+
+constexpr int kBlock = 512;
+
+// Copies the vibration block by block into a scratch buffer and lets `process` work on it.
+template <typename Process>
+void per_sample(benchmark::State& state, Process process) {
+    const std::vector<float>& in = amen_vibration();
+    std::vector<float> block(kBlock);
+    for (auto _ : state) {
+        for (size_t i = 0; i < in.size(); i += kBlock) {
+            const int n = static_cast<int>(std::min<size_t>(kBlock, in.size() - i));
+            std::copy_n(in.data() + i, n, block.data());
+            process(block.data(), n);
+            benchmark::DoNotOptimize(block.data());
+        }
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(in.size()));
+    state.SetLabel("items = samples");
+}
+
+void BandLimitProcess(benchmark::State& state) {
+    const Settings s;
+    BandLimit band;
+    band.prepare(kRateHz, s[P::post_band_low_hz], s[P::post_band_high_hz],
+                 static_cast<int>(state.range(0)));
+    per_sample(state, [&](float* x, int n) { band.process(x, n); });
+}
+BENCHMARK(BandLimitProcess)
+    ->ArgName("order")
+    ->Arg(PostChain::kFirstBandOrder)
+    ->Arg(PostChain::kLastBandOrder);
+
+void FlatteningProcess(benchmark::State& state) {
+    const Settings s;
+    FlatteningFilter flatten;
+    flatten.prepare(kRateHz, s[P::post_band_low_hz], s[P::post_band_high_hz],
+                    s[P::post_flatten_strength], s[P::post_flatten_range_db]);
+    per_sample(state, [&](float* x, int n) { flatten.process(x, n); });
+}
+BENCHMARK(FlatteningProcess);
+
+void PeakLimiterProcess(benchmark::State& state) {
+    const Settings s;
+    PeakLimiter limiter;
+    limiter.prepare(kRateHz, s[P::post_lookahead_ms], s[P::post_release_ms], s[P::post_drive_db],
+                    s[P::post_limiter_threshold_db], db_to_gain(s[P::post_ceiling_db]));
+    per_sample(state, [&](float* x, int n) { limiter.process(x, n); });
+}
+BENCHMARK(PeakLimiterProcess);
+
+void PostChainProcess(benchmark::State& state) {
+    PostChain post;
+    post.prepare(kRateHz, Settings{});
+    per_sample(state, [&](float* x, int n) { post.process(x, n); });
+}
+BENCHMARK(PostChainProcess);
+
+}  // namespace
+}  // namespace tactus::bench
