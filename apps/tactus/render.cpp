@@ -1,22 +1,38 @@
-// tactus render IN -o OUT.wav: audio file -> vibration file (float WAV, N identical channels).
+// tactus render IN... (-o OUT.wav | -O DIR) [-j N]: audio files -> vibration files (float WAV, N
+// identical channels). Several inputs are rendered in parallel, one file per worker, each with
+// its own Engine.
 #include <fmt/format.h>
 
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <optional>
+#include <thread>
 
+#include "batch.hpp"
 #include "commands.hpp"
 #include "common.hpp"
 #include "pipeline_options.hpp"
+#include "tactus/io/audio_reader.hpp"
 #include "tactus/io/audio_writer.hpp"
 
 namespace tactus::cli {
 namespace {
 
+namespace fs = std::filesystem;
+
+constexpr const char* kOutputSuffix = ".vibration.wav";
+
 struct RenderOptions {
-    std::string input, output;
+    std::vector<std::string> inputs;
+    std::string output, output_dir;
     int channels = 1;
+    int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     PipelineOptions pipeline;
+};
+
+struct Job {
+    fs::path input, output;
 };
 
 class OnsetCounter final : public FrameObserver {
@@ -27,40 +43,117 @@ class OnsetCounter final : public FrameObserver {
     int onsets = 0;
 };
 
-void render(const RenderOptions& o) {
-    const Settings settings = o.pipeline.resolve();
-    refuse_overwriting_input(o.input, o.output);
+// Where each input's vibration goes: -o for one input, DIR/<stem>.vibration.wav with -O. Refuses
+// (before any audio is read) an output that is its input or that two inputs would share.
+std::vector<Job> plan(const RenderOptions& o) {
+    if (o.output.empty() == o.output_dir.empty())
+        throw std::runtime_error("render: give either -o FILE (one input) or -O DIR");
+    if (!o.output.empty() && o.inputs.size() > 1)
+        throw std::runtime_error(fmt::format(
+            "render: -o names one output but {} inputs were given; use -O DIR", o.inputs.size()));
+    std::vector<Job> jobs;
+    std::map<fs::path, fs::path> input_of_output;
+    for (const fs::path input : o.inputs) {
+        const fs::path output =
+            o.output.empty() ? fs::path(o.output_dir) / (input.stem().string() + kOutputSuffix)
+                             : fs::path(o.output);
+        if (const auto [it, added] = input_of_output.emplace(output, input); !added)
+            throw std::runtime_error(fmt::format("{}: both {} and {} would write it",
+                                                 output.string(), it->second.string(),
+                                                 input.string()));
+        refuse_overwriting_input(input, output);
+        jobs.push_back({input, output});
+    }
+    return jobs;
+}
+
+// Renders one file; returns its one-line summary. On failure the output is not written.
+std::string render_one(const Job& job, const Settings& settings, int channels,
+                       const RunCallbacks& progress) {
     Engine engine(settings);
     OnsetCounter counter;
     engine.set_observer(&counter);
     std::optional<AudioWriter> writer;  // opened at the input's sample rate
     float peak = 0.0f;
-    const RunSummary summary = run_with_progress(
-        o.input, engine, "render",
-        {.on_output =
-             [&](const float* v, int n) {
-                 for (int i = 0; i < n; ++i) peak = std::max(peak, std::abs(v[i]));
-                 writer->write(v, n);
-             },
-         .on_start = [&](double sample_rate_hz,
-                         int) { writer.emplace(o.output, sample_rate_hz, o.channels); }});
+    RunCallbacks callbacks = progress;
+    callbacks.on_output = [&](const float* v, int n) {
+        for (int i = 0; i < n; ++i) peak = std::max(peak, std::abs(v[i]));
+        writer->write(v, n);
+    };
+    callbacks.on_start = [&](double sample_rate_hz, int) {
+        writer.emplace(job.output, sample_rate_hz, channels);
+    };
+    const RunSummary summary = run_file(job.input, engine, callbacks);
     writer->commit();
-    std::cerr << fmt::format(
-        "{}: {:.2f} s at {:g} Hz, {} pulses, peak {:.1f} dBFS, {} channel(s)\n", o.output,
-        summary.frames / summary.sample_rate_hz, summary.sample_rate_hz, counter.onsets,
-        peak > 0 ? 20 * std::log10(peak) : -INFINITY, o.channels);
+    return fmt::format("{}: {:.2f} s at {:g} Hz, {} pulses, peak {:.1f} dBFS, {} channel(s)",
+                       job.output.string(), summary.frames / summary.sample_rate_hz,
+                       summary.sample_rate_hz, counter.onsets,
+                       peak > 0 ? 20 * std::log10(peak) : -INFINITY, channels);
+}
+
+// Frames in all inputs, for the progress bar (unreadable inputs count 0 and fail later).
+int64_t total_frames(const std::vector<Job>& jobs) {
+    int64_t total = 0;
+    for (const Job& job : jobs) try {
+            total += std::max<int64_t>(0, AudioReader(job.input).frames());
+        } catch (const std::exception&) {
+        }
+    return total;
+}
+
+void render(const RenderOptions& o) {
+    const Settings settings = o.pipeline.resolve();
+    const std::vector<Job> jobs = plan(o);
+    if (!o.output_dir.empty()) fs::create_directories(o.output_dir);
+    std::vector<std::string> summaries(jobs.size());
+    const std::vector<std::exception_ptr> errors =
+        run_batch(jobs.size(), o.jobs, total_frames(jobs),
+                  jobs.size() == 1 ? "render" : fmt::format("render {} files", jobs.size()),
+                  [&](size_t i, const AddFrames& add_frames) {
+                      int64_t reported = 0;
+                      const RunCallbacks progress{.on_progress = [&](int64_t done, int64_t) {
+                          add_frames(done - reported);
+                          reported = done;
+                      }};
+                      summaries[i] = render_one(jobs[i], settings, o.channels, progress);
+                  });
+    size_t failed = 0;
+    for (size_t i = 0; i < jobs.size(); ++i) {
+        if (!errors[i]) {
+            std::cerr << summaries[i] << '\n';
+            continue;
+        }
+        if (jobs.size() == 1) std::rethrow_exception(errors[i]);
+        ++failed;
+        try {
+            std::rethrow_exception(errors[i]);
+        } catch (const std::exception& e) {
+            std::cerr << "tactus: error: " << e.what() << '\n';
+        }
+    }
+    if (failed > 0)
+        throw std::runtime_error(fmt::format(
+            "render: {} of {} files failed, the others were written", failed, jobs.size()));
 }
 
 }  // namespace
 
 void add_render(CLI::App& app) {
     auto options = std::make_shared<RenderOptions>();
-    CLI::App* command = app.add_subcommand("render", "render the vibration for an audio file");
-    command->add_option("input", options->input, "audio file (anything libsndfile reads)")
+    CLI::App* command = app.add_subcommand("render", "render the vibration for audio files");
+    command
+        ->add_option("inputs", options->inputs,
+                     "audio files (anything libsndfile reads); several need -O")
         ->required()
         ->check(CLI::ExistingFile);
-    command->add_option("-o,--output", options->output, "vibration file to write (.wav)")
-        ->required();
+    command->add_option("-o,--output", options->output,
+                        "vibration file to write (.wav), one input");
+    command->add_option("-O,--output-dir", options->output_dir,
+                        "directory for the vibration files: DIR/<input name without its "
+                        "extension>.vibration.wav (created if missing)");
+    command->add_option("-j,--jobs", options->jobs, "files rendered at once, one per thread")
+        ->check(CLI::Range(1, 1024))
+        ->capture_default_str();
     command->add_option("--channels,-c", options->channels, "identical actuator channels")
         ->check(CLI::Range(1, 64))
         ->capture_default_str();

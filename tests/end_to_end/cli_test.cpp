@@ -3,11 +3,13 @@
 #include <gtest/gtest.h>
 #include <sndfile.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "support/temp_dir.hpp"
 
@@ -44,6 +46,24 @@ SF_INFO info_of(const fs::path& path) {
     SNDFILE* f = sf_open(path.c_str(), SFM_READ, &info);
     if (f) sf_close(f);
     return info;
+}
+
+std::vector<float> samples_of(const fs::path& path) {
+    SF_INFO info{};
+    SNDFILE* f = sf_open(path.c_str(), SFM_READ, &info);
+    if (!f) return {};
+    std::vector<float> samples(static_cast<size_t>(info.frames * info.channels));
+    sf_readf_float(f, samples.data(), info.frames);
+    sf_close(f);
+    return samples;
+}
+
+std::vector<std::string> names_in(const fs::path& dir) {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir))
+        names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
 }
 
 TEST_F(Cli, HelpEverywhere) {
@@ -142,6 +162,67 @@ TEST_F(Cli, NeverOverwritesTheInput) {
     EXPECT_NE(r.exit_code, 0);
     EXPECT_NE(r.err.find("overwrite the input"), std::string::npos) << r.err;
     EXPECT_EQ(fs::file_size(input), size);
+}
+
+// Several inputs, one output directory, two workers: each file comes out exactly as a render of
+// it alone would (every worker has its own engine), named <stem>.vibration.wav.
+TEST_F(Cli, RendersSeveralFilesIntoADirectory) {
+    const std::string samples = "/usr/share/sonic-pi/samples/";
+    const std::vector<std::string> inputs = {kAmen, samples + "loop_amen.flac",
+                                             samples + "bd_808.flac"};
+    const fs::path out = dir_ / "out";
+    const Result batch = run("render " + inputs[0] + " " + inputs[1] + " " + inputs[2] + " -O " +
+                             out.string() + " -j 2");
+    ASSERT_EQ(batch.exit_code, 0) << batch.err;
+    EXPECT_EQ(names_in(out),
+              (std::vector<std::string>{"bd_808.vibration.wav", "loop_amen.vibration.wav",
+                                        "loop_amen_full.vibration.wav"}));
+    for (const std::string& input : inputs) {
+        const fs::path alone = dir_ / "alone.wav";
+        ASSERT_EQ(run("render " + input + " -o " + alone.string()).exit_code, 0);
+        const fs::path batched = out / (fs::path(input).stem().string() + ".vibration.wav");
+        EXPECT_EQ(info_of(batched).frames, info_of(input).frames) << input;
+        const std::vector<float> expected = samples_of(alone);
+        ASSERT_FALSE(expected.empty());
+        EXPECT_TRUE(samples_of(batched) == expected) << input;
+        EXPECT_NE(batch.err.find(batched.string()), std::string::npos) << batch.err;
+    }
+}
+
+// One unreadable file fails alone: it is named, gets no output (not even a partial one), the
+// others are written, and the exit code says something failed.
+TEST_F(Cli, BatchFailureIsReportedAndTheOthersComplete) {
+    const fs::path text = dir_ / "notes.wav";
+    std::ofstream(text) << "not audio\n";
+    const fs::path out = dir_ / "out";
+    const Result r = run("render " + kAmen + " " + text.string() +
+                         " /usr/share/sonic-pi/samples/loop_amen.flac -O " + out.string());
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.err.find(text.string() + ": "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("1 of 3 files failed"), std::string::npos) << r.err;
+    EXPECT_EQ(names_in(out), (std::vector<std::string>{"loop_amen.vibration.wav",
+                                                       "loop_amen_full.vibration.wav"}));
+}
+
+// Output names are decided before any audio is read: ambiguous requests write nothing.
+TEST_F(Cli, BatchRefusesAmbiguousOutputs) {
+    const fs::path flac = dir_ / "take.flac", wav = dir_ / "take.wav", out = dir_ / "out";
+    fs::copy_file(kAmen, flac);
+    fs::copy_file(kAmen, wav);  // libsndfile reads by content: a FLAC named .wav is still audio
+
+    const Result same_name =
+        run("render " + flac.string() + " " + wav.string() + " -O " + out.string());
+    EXPECT_NE(same_name.exit_code, 0);
+    EXPECT_NE(same_name.err.find("take.vibration.wav: both"), std::string::npos) << same_name.err;
+
+    const Result one_output =
+        run("render " + kAmen + " " + flac.string() + " -o " + (dir_ / "x.wav").string());
+    EXPECT_NE(one_output.exit_code, 0);
+    EXPECT_NE(one_output.err.find("use -O DIR"), std::string::npos) << one_output.err;
+
+    EXPECT_NE(run("render " + kAmen).exit_code, 0);  // neither -o nor -O
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_FALSE(fs::exists(dir_ / "x.wav"));
 }
 
 }  // namespace
