@@ -4,7 +4,7 @@ JOBS ?= $(shell nproc)
 AMEN := /usr/share/sonic-pi/samples/loop_amen_full.flac
 TACTUS := $(BUILD)/apps/tactus/tactus
 
-.PHONY: setup build demo test eval format clean
+.PHONY: setup build demo test eval bench bench-compare format clean
 
 setup:
 	bash scripts/setup.sh
@@ -23,6 +23,12 @@ test: build
 
 eval: build
 	/usr/bin/python3 eval/evaluate.py $(BUILD) --out eval/results.md
+
+bench: build
+	$(BUILD)/bench/tactus_bench
+
+bench-compare: build
+	/usr/bin/python3 bench/compare.py $(BUILD) --out bench/results.md
 
 format:
 	clang-format -i $$(git ls-files '*.cpp' '*.hpp')

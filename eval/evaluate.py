@@ -13,6 +13,7 @@ reaching half its pulse peak.
 """
 import argparse
 import pathlib
+import shutil
 import statistics
 import subprocess
 import sys
@@ -46,7 +47,12 @@ def column(text, index=0):
 
 def bonk_onsets(wav, rate_hz):
     """Onset times (s) bonk~ reports for `wav`, run in a real Pd as fast as the CPU allows."""
-    result = subprocess.run(["pd", "-nogui", "-batch", "-noaudio", "-r", str(rate_hz), "-send",
+    pd = shutil.which("pd") or shutil.which("puredata")
+    if not pd:
+        raise RuntimeError("pd not found (Debian packages puredata-core, puredata-extra)")
+    if " " in str(wav):
+        raise RuntimeError(f"{wav}: pd -send splits at spaces; use a --work path without them")
+    result = subprocess.run([pd, "-nogui", "-batch", "-noaudio", "-r", str(rate_hz), "-send",
                              f"bonk-file symbol {wav}", "-open", str(BONK_PATCH)],
                             check=True, capture_output=True, text=True, timeout=600)
     errors = [line for line in result.stderr.splitlines() if line.startswith("error:")]

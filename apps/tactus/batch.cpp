@@ -12,10 +12,12 @@
 namespace tactus::cli {
 
 std::vector<std::exception_ptr> run_batch(
-    size_t count, int jobs, int64_t total_frames, const std::string& label,
+    size_t count, int jobs, const std::function<int64_t()>& total_frames, const std::string& label,
     const std::function<void(size_t index, const AddFrames& add_frames)>& task) {
     std::vector<std::exception_ptr> errors(count);
     if (count == 0) return errors;
+    Progress progress(label);
+    const int64_t total = progress.enabled() ? total_frames() : 0;
     std::atomic<size_t> next{0};
     std::atomic<int64_t> frames_done{0};
     std::mutex mutex;
@@ -40,13 +42,12 @@ std::vector<std::exception_ptr> run_batch(
     for (size_t t = 0; t < threads; ++t) workers.emplace_back(worker);
 
     // This thread draws the bar; the workers only count.
-    Progress progress(label);
     std::unique_lock lock(mutex);
     while (finished < count) {
-        progress.update(std::min(frames_done.load(), total_frames), total_frames);
+        progress.update(std::min(frames_done.load(), total), total);
         finished_changed.wait_for(lock, std::chrono::milliseconds(100));
     }
-    progress.update(total_frames, total_frames);
+    progress.update(total, total);
     return errors;
 }
 

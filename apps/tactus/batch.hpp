@@ -15,9 +15,10 @@ namespace tactus::cli {
 using AddFrames = std::function<void(int64_t frames)>;
 
 // Calls task(i, add_frames) for every i in [0, count) on min(jobs, count) threads; returns one
-// exception per task (null when it succeeded). `total_frames` sizes the bar (<= 0: no bar).
+// exception per task (null when it succeeded). `total_frames` sizes the bar; it is called only
+// when the bar is drawn (stderr is a terminal).
 std::vector<std::exception_ptr> run_batch(
-    size_t count, int jobs, int64_t total_frames, const std::string& label,
+    size_t count, int jobs, const std::function<int64_t()>& total_frames, const std::string& label,
     const std::function<void(size_t index, const AddFrames& add_frames)>& task);
 
 }  // namespace tactus::cli

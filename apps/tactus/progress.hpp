@@ -11,6 +11,7 @@ class Progress {
     explicit Progress(std::string label);
     ~Progress();
     void update(int64_t done, int64_t total);
+    bool enabled() const { return enabled_; }
 
   private:
     std::string label_;

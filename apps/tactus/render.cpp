@@ -106,17 +106,17 @@ void render(const RenderOptions& o) {
     const std::vector<Job> jobs = plan(o);
     if (!o.output_dir.empty()) fs::create_directories(o.output_dir);
     std::vector<std::string> summaries(jobs.size());
-    const std::vector<std::exception_ptr> errors =
-        run_batch(jobs.size(), o.jobs, total_frames(jobs),
-                  jobs.size() == 1 ? "render" : fmt::format("render {} files", jobs.size()),
-                  [&](size_t i, const AddFrames& add_frames) {
-                      int64_t reported = 0;
-                      const RunCallbacks progress{.on_progress = [&](int64_t done, int64_t) {
-                          add_frames(done - reported);
-                          reported = done;
-                      }};
-                      summaries[i] = render_one(jobs[i], settings, o.channels, progress);
-                  });
+    const std::vector<std::exception_ptr> errors = run_batch(
+        jobs.size(), o.jobs, [&] { return total_frames(jobs); },
+        jobs.size() == 1 ? "render" : fmt::format("render {} files", jobs.size()),
+        [&](size_t i, const AddFrames& add_frames) {
+            int64_t reported = 0;
+            const RunCallbacks progress{.on_progress = [&](int64_t done, int64_t) {
+                add_frames(done - reported);
+                reported = done;
+            }};
+            summaries[i] = render_one(jobs[i], settings, o.channels, progress);
+        });
     size_t failed = 0;
     for (size_t i = 0; i < jobs.size(); ++i) {
         if (!errors[i]) {
