@@ -104,7 +104,10 @@ int64_t total_frames(const std::vector<Job>& jobs) {
 void render(const RenderOptions& o) {
     const Settings settings = o.pipeline.resolve();
     const std::vector<Job> jobs = plan(o);
-    if (!o.output_dir.empty()) fs::create_directories(o.output_dir);
+    if (std::error_code error; !o.output_dir.empty() && !fs::is_directory(o.output_dir) &&
+                               !fs::create_directories(o.output_dir, error))
+        throw std::runtime_error(fmt::format("{}: cannot create the output directory: {}",
+                                             o.output_dir, error.message()));
     std::vector<std::string> summaries(jobs.size());
     const std::vector<std::exception_ptr> errors = run_batch(
         jobs.size(), o.jobs, [&] { return total_frames(jobs); },
