@@ -296,6 +296,18 @@ TEST(Engine, FourChannelOutputRespectsTheCeiling) {
     }
 }
 
+TEST(Engine, FourChannelReturnsToExactZerosAfterTheSoundStops) {
+    const double fs = 48000;
+    test::DrumSignal drums = test::drum_pattern(fs, 2.0, 2);
+    drums.audio.resize(static_cast<size_t>(12 * fs), 0.0f);
+    for (bool dc : {false, true}) {
+        const std::vector<float> y = render(drums.audio, fs, {512}, four_channel(dc));
+        EXPECT_GT(test::peak(std::span<const float>(y).first(static_cast<size_t>(2 * fs))), 0.05);
+        for (size_t i = static_cast<size_t>(8 * fs); i < y.size(); ++i)
+            ASSERT_EQ(y[i], 0.0f) << "still " << y[i] << " at " << i / fs << " s, DC " << dc;
+    }
+}
+
 TEST(Engine, ComponentsThatAreOffLeaveTheOutputBitIdentical) {
     const double fs = 44100;
     const test::DrumSignal drums = test::drum_pattern(fs, 4.0, 9);

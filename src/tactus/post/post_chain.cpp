@@ -1,5 +1,7 @@
 #include "tactus/post/post_chain.hpp"
 
+#include <cmath>
+
 #include "tactus/core/units.hpp"
 #include "tactus/synthesis/components.hpp"
 
@@ -9,6 +11,9 @@ namespace {
 // sensitivity range 25-40 Hz: Q = 30 / (40 - 25) = 2.
 constexpr double kFlutterPeakHz = 30.0;
 constexpr double kFlutterPeakQ = 2.0;
+// With the flutter on, the last high-pass (1 Hz) rings for seconds after the sound stops; below
+// -180 dBFS its output is set to 0, so silence still ends in exact zeros.
+constexpr float kSilentOutput = 1e-9f;
 }  // namespace
 
 void PostChain::prepare(double sample_rate_hz, const Settings& s) {
@@ -51,6 +56,9 @@ void PostChain::process(float* samples, float* flutter, const float* pressure, i
     }
     limiter_.process(samples, count);
     last_band_.process(samples, count);
+    if (flutter_on_)
+        for (int i = 0; i < count; ++i)
+            if (std::abs(samples[i]) < kSilentOutput) samples[i] = 0.0f;
     if (pressure_on_ && pressure)
         for (int i = 0; i < count; ++i) samples[i] += pressure[i];
     const float ceiling = float_at_most(ceiling_);
