@@ -1,6 +1,6 @@
 // The four-channel preset against tfd on a real recording (Sonic Pi's Amen break): the share of
 // output energy in NPI's band (2-40 Hz) is far larger with four-channel, while its P band
-// (40-500 Hz) keeps most of tfd's energy; on a DC actuator the pressure adds a positive offset
+// (40-500 Hz) keeps tfd's energy within 20 %; on a DC actuator the pressure adds a positive offset
 // below 3 Hz (NPIII) and the output stays under the ceiling. The figures are printed.
 #include <gtest/gtest.h>
 
@@ -76,7 +76,9 @@ TEST(FourChannel, EngagesNpiFarMoreThanTfdOnTheAmenBreak) {
     EXPECT_LT(tfd_share, 0.10);
     EXPECT_GT(four_share, 0.30);
     EXPECT_GT(four_share, 5 * tfd_share);
-    EXPECT_GT(four.p, 0.5 * tfd.p) << "the P carrier must stay (the limiter guards the sum)";
+    // The P carrier is tfd's; the limiter guards the sum without ducking it much.
+    EXPECT_GT(four.p, 0.8 * tfd.p);
+    EXPECT_LT(four.p, 1.25 * tfd.p);
 }
 
 TEST(FourChannel, PressureOnADcActuator) {

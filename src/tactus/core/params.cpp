@@ -111,7 +111,7 @@ const ParamSpec kTable[] = {
     {"mapping.flutter_rate.in_max", "", number, -1e6, 1e6, 6000, lin, "source value mapped to out_max"},
     {"mapping.flutter_rate.out_min", "Hz", number, kNpiLowHz, kNpiHighHz, 8, log,
      "flutter rate at in_min (inside NPI's 2-40 Hz)"},
-    {"mapping.flutter_rate.out_max", "Hz", number, kNpiLowHz, kNpiHighHz, 40, log,
+    {"mapping.flutter_rate.out_max", "Hz", number, kNpiLowHz, kNpiHighHz, 30, log,
      "flutter rate at in_max (inside NPI's 2-40 Hz)"},
     {"mapping.flutter_rate.curve", "", choice, 0, kLastCurve, 1, lin,
      "lin, log (ratio to ratio) or exp (dB to amplitude)", kCurves},
