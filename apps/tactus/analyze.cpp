@@ -19,9 +19,10 @@ struct AnalyzeOptions {
 };
 
 constexpr const char* kColumns[] = {
-    "time_s",    "loudness_db", "brightness_hz", "noisiness",    "pitch_hz",  "pitch_confidence",
-    "onset_odf", "onset",       "onset_time_s",  "frequency_hz", "amplitude", "square_mix",
-    "trigger",   "attack_ms",   "decay_ms",      "sustain"};
+    "time_s",    "loudness_db", "brightness_hz", "noisiness",    "pitch_hz",   "pitch_confidence",
+    "onset_odf", "onset",       "onset_time_s",  "frequency_hz", "amplitude",  "square_mix",
+    "trigger",   "attack_ms",   "decay_ms",      "sustain",      "flutter_hz", "flutter_amplitude",
+    "pressure"};
 
 class FrameWriter final : public FrameObserver {
   public:
@@ -55,7 +56,10 @@ class FrameWriter final : public FrameObserver {
                                  c.trigger ? 1.0 : 0.0,
                                  c.attack_ms,
                                  c.decay_ms,
-                                 c.sustain};
+                                 c.sustain,
+                                 c.flutter_hz,
+                                 c.flutter_amplitude,
+                                 c.pressure};
         onsets_ += f.onset;
         if (json_) {
             nlohmann::ordered_json row;

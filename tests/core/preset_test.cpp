@@ -198,6 +198,28 @@ TEST(Presets, ShippedTfdLoads) {
     }
 }
 
+// four-channel: loads completely, and its P carrier and post chain are tfd's (only the further
+// channels differ, so the two presets compare the channel components alone).
+TEST(Presets, ShippedFourChannelLoadsAndKeepsTheTfdCarrier) {
+    const fs::path path = kSourceDir / "presets" / "four-channel.toml";
+    Settings four, tfd;
+    ASSERT_NO_THROW(apply_preset_file(four, path));
+    expect_loaded(four, toml::parse_file(path.string()), "");
+    apply_preset_file(tfd, kSourceDir / "presets" / "tfd.toml");
+    EXPECT_GT(four[P::flutter_weight], 0.0);
+    EXPECT_GT(four[P::pressure_weight], 0.0);
+    for (size_t i = 0; i < param_table().size(); ++i) {
+        const std::string_view key = param_table()[i].key;
+        const bool channel_setting = key.starts_with("flutter.") || key.starts_with("pressure.") ||
+                                     key.starts_with("mapping.flutter") ||
+                                     key.starts_with("mapping.pressure") ||
+                                     key.starts_with("post.flutter") || key == "actuator.dc";
+        if (!channel_setting) {
+            EXPECT_EQ(four[static_cast<P>(i)], tfd[static_cast<P>(i)]) << key;
+        }
+    }
+}
+
 TEST(Presets, EveryShippedPresetLoads) {
     int count = 0;
     for (const auto& entry : fs::directory_iterator(kSourceDir / "presets")) {

@@ -67,7 +67,7 @@ std::vector<std::string> names_in(const fs::path& dir) {
 }
 
 TEST_F(Cli, HelpEverywhere) {
-    for (const char* command : {"", "render ", "analyze ", "onsets ", "presets "}) {
+    for (const char* command : {"", "render ", "analyze ", "onsets ", "presets ", "placement "}) {
         const Result r = run(std::string(command) + "--help");
         EXPECT_EQ(r.exit_code, 0) << command;
         EXPECT_NE(r.out.find("Usage"), std::string::npos) << command;
@@ -152,6 +152,45 @@ TEST_F(Cli, BadInputFailsCleanlyAndWritesNothing) {
     EXPECT_NE(run("render " + kAmen + " -o " + out.string() + " --preset nonesuch").exit_code, 0);
     EXPECT_NE(run("render /no/such/file.wav -o " + out.string()).exit_code, 0);
     EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(Cli, PresetsListsFourChannel) {
+    EXPECT_NE(run("presets").out.find("four-channel"), std::string::npos);
+}
+
+TEST_F(Cli, PlacementReportsAndWritesAPlotCsv) {
+    const std::string example =
+        std::string(TACTUS_SOURCE_DIR) + "/examples/placement_synthetic.csv";
+    const fs::path out = dir_ / "figure2.csv";
+    const Result r = run("placement " + example + " -o " + out.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("least variation: 6 mm hole"), std::string::npos) << r.out;
+    std::ifstream csv(out);
+    std::string line;
+    std::getline(csv, line);
+    EXPECT_EQ(line, "hole_mm,subject,finger,extension_mm,mean_mm,sd_mm,n,depth_mm");
+    int rows = 0;
+    while (std::getline(csv, line)) ++rows;
+    EXPECT_EQ(rows, 45);
+}
+
+TEST_F(Cli, PlacementBadFileFailsWithTheLineAndWritesNothing) {
+    const fs::path bad = dir_ / "bad.csv", out = dir_ / "out.csv";
+    std::ofstream(bad) << "subject,finger,hole_mm,extension_mm\na,index,6,0.8\na,index,7,deep\n";
+    const Result r = run("placement " + bad.string() + " -o " + out.string());
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.err.find(bad.string() + ":3: extension_mm 'deep' is not a number"),
+              std::string::npos)
+        << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_FALSE(fs::exists(out));
+    const fs::path good = dir_ / "good.csv";
+    std::ofstream(good) << "subject,finger,hole_mm,extension_mm\na,index,6,0.8\n";
+    const auto size = fs::file_size(good);
+    const Result same = run("placement " + good.string() + " -o " + good.string());
+    EXPECT_NE(same.exit_code, 0);
+    EXPECT_NE(same.err.find("overwrite the input"), std::string::npos) << same.err;
+    EXPECT_EQ(fs::file_size(good), size);
 }
 
 TEST_F(Cli, NeverOverwritesTheInput) {

@@ -4,6 +4,8 @@
 // treated as 0 and never gives non-finite output; output stays within the ceiling; extreme
 // finite input does not break later output; prepare() rejects sample rates outside 8-192 kHz
 // and bad block sizes; every supported rate runs; the observer sees every frame.
+// The four-channel preset (flutter, and pressure on a DC actuator) is block-size invariant and
+// bounded too, and channel components that are off leave the tfd output bit-identical.
 #include "tactus/engine/engine.hpp"
 
 #include <gmock/gmock.h>
@@ -19,6 +21,7 @@
 
 #include "support/signals.hpp"
 #include "support/watchdog.hpp"
+#include "tactus/core/preset.hpp"
 #include "tactus/core/units.hpp"
 #include "tactus/io/audio_reader.hpp"
 
@@ -59,13 +62,14 @@ void expect_finite_and_bounded(const std::vector<float>& y, double bound, const 
     }
 }
 
-void expect_block_size_invariance(const std::vector<float>& x, double fs, const std::string& what) {
-    const std::vector<float> reference = render(x, fs, {4096});
+void expect_block_size_invariance(const std::vector<float>& x, double fs, const std::string& what,
+                                  const Settings& settings = {}) {
+    const std::vector<float> reference = render(x, fs, {4096}, settings);
     EXPECT_GT(test::peak(reference), 0.05) << what << ": the test signal must make vibration";
     expect_finite_and_bounded(reference, 1.0, what);
     for (const std::vector<int>& blocks :
          {std::vector<int>{1}, {7}, {64}, {480}, {4096}, {1, 4096, 13, 480, 2, 1000, 139}}) {
-        const std::vector<float> y = render(x, fs, blocks);
+        const std::vector<float> y = render(x, fs, blocks, settings);
         EXPECT_EQ(first_difference(y, reference), -1)
             << what << ": blocks starting " << blocks.front() << " (" << blocks.size() << " sizes)";
     }
@@ -252,6 +256,75 @@ TEST(Engine, InPlaceProcessingIsAllowed) {
         engine.process(buffer.data() + done, buffer.data() + done, count);
     }
     EXPECT_EQ(first_difference(buffer, expected), -1);
+}
+
+Settings four_channel(bool dc) {
+    Settings s;
+    apply_preset_file(s,
+                      std::filesystem::path(TACTUS_SOURCE_DIR) / "presets" / "four-channel.toml");
+    s.set(P::actuator_dc, dc ? 1 : 0);
+    return s;
+}
+
+TEST(Engine, FourChannelBlockSizeInvariance) {
+    const test::DrumSignal drums = test::drum_pattern(48000, 6.0, 1);
+    expect_block_size_invariance(drums.audio, 48000, "four-channel", four_channel(false));
+    expect_block_size_invariance(drums.audio, 48000, "four-channel, DC", four_channel(true));
+}
+
+TEST(Engine, FourChannelOutputRespectsTheCeiling) {
+    const double fs = 48000;
+    test::DrumSignal drums = test::drum_pattern(fs, 3.0, 5);
+    for (auto& v : drums.audio) v *= 8.0f;  // +18 dB over full scale
+    for (double ceiling_db : {0.0, -12.0}) {
+        Settings s = four_channel(true);
+        s.set(P::post_ceiling_db, ceiling_db);
+        s.set(P::post_drive_db, 20);
+        s.set(P::pressure_weight, 0.5);
+        Engine engine(s);
+        engine.prepare(fs, 480);
+        std::vector<float> y(drums.audio.size());
+        for (size_t done = 0; done < y.size(); done += 480)
+            engine.process(drums.audio.data() + done, y.data() + done,
+                           static_cast<int>(std::min<size_t>(480, y.size() - done)));
+        expect_finite_and_bounded(y, db_to_gain(ceiling_db),
+                                  "four-channel, ceiling " + std::to_string(ceiling_db));
+        // As for tfd, the final clip is the guarantee; at 0 dB it must not even have to act.
+        if (ceiling_db == 0.0) {
+            EXPECT_EQ(engine.post().clipped_samples(), 0);
+        }
+    }
+}
+
+TEST(Engine, FourChannelReturnsToExactZerosAfterTheSoundStops) {
+    const double fs = 48000;
+    test::DrumSignal drums = test::drum_pattern(fs, 2.0, 2);
+    drums.audio.resize(static_cast<size_t>(12 * fs), 0.0f);
+    for (bool dc : {false, true}) {
+        const std::vector<float> y = render(drums.audio, fs, {512}, four_channel(dc));
+        EXPECT_GT(test::peak(std::span<const float>(y).first(static_cast<size_t>(2 * fs))), 0.05);
+        for (size_t i = static_cast<size_t>(8 * fs); i < y.size(); ++i)
+            ASSERT_EQ(y[i], 0.0f) << "still " << y[i] << " at " << i / fs << " s, DC " << dc;
+    }
+}
+
+TEST(Engine, ComponentsThatAreOffLeaveTheOutputBitIdentical) {
+    const double fs = 44100;
+    const test::DrumSignal drums = test::drum_pattern(fs, 4.0, 9);
+    // Every channel setting moved, but the flutter has no weight and the actuator no DC.
+    Settings off = four_channel(false);
+    off.set(P::flutter_weight, 0);
+    off.set(P::pressure_weight, 0.5);
+    Settings tfd;
+    for (P id : {P::post_band_low_hz, P::post_band_high_hz, P::post_flatten_strength,
+                 P::post_flatten_range_db, P::post_drive_db, P::post_limiter_threshold_db,
+                 P::post_ceiling_db})
+        EXPECT_EQ(off[id], tfd[id]) << spec(id).key << ": the comparison needs the same P chain";
+    const std::vector<float> reference = render(drums.audio, fs, {512});
+    ASSERT_GT(test::peak(reference), 0.05);
+    EXPECT_EQ(first_difference(render(drums.audio, fs, {512}, off), reference), -1);
+    // And switched on, they do change it.
+    EXPECT_NE(first_difference(render(drums.audio, fs, {512}, four_channel(false)), reference), -1);
 }
 
 }  // namespace

@@ -1,6 +1,9 @@
 // Mapper: above the loudness gate the three mappings and the onset trigger pass; below it the
 // amplitude is 0, triggers are dropped, and frequency and square mix hold their last values;
 // envelope settings and the frame's sample are carried into every ControlFrame.
+// Channel components: flutter and pressure are exactly 0 while off (no weight; pressure also
+// without actuator.dc); flutter = weight x level, times 21/140 with equalisation; flutter rate
+// on its log scale; pressure is a fraction of the ceiling, in steps with hysteresis.
 #include "tactus/mapping/mapper.hpp"
 
 #include <gtest/gtest.h>
@@ -108,6 +111,92 @@ TEST(Mapper, ResetStartsTheCarrierAtTheMappingsOfZero) {
     EXPECT_EQ(c.amplitude, 0.0);
     EXPECT_NEAR(c.frequency_hz, 50.0, 1e-9);
     EXPECT_NEAR(c.square_mix, 0.0, 1e-12);
+}
+
+// Flutter and pressure mapped straight from loudness (lin, -60 ... 0 dB -> 0 ... 1) and the
+// flutter rate from brightness (log, 100 ... 6400 Hz -> 5 ... 40 Hz), no smoothing.
+Settings channel_settings() {
+    Settings s = immediate_settings();
+    for (P first : {P::flutter_level_source, P::pressure_level_source}) {
+        const auto at = [&](int k) { return static_cast<P>(static_cast<int>(first) + k); };
+        s.set(at(0), static_cast<double>(FeatureSource::loudness_db));
+        s.set(at(1), -60);
+        s.set(at(2), 0);
+        s.set(at(3), 0);
+        s.set(at(4), 1);
+        s.set(at(5), static_cast<double>(MappingCurve::lin));
+        s.set(at(6), 0);
+    }
+    s.set(P::flutter_rate_source, static_cast<double>(FeatureSource::brightness_hz));
+    s.set(P::flutter_rate_in_min, 100);
+    s.set(P::flutter_rate_in_max, 6400);
+    s.set(P::flutter_rate_out_min, 5);
+    s.set(P::flutter_rate_out_max, 40);
+    s.set(P::flutter_rate_curve, static_cast<double>(MappingCurve::log));
+    s.set(P::flutter_rate_smoothing_ms, 0);
+    return s;
+}
+
+TEST(Mapper, ChannelComponentsAreExactlyZeroWhileOff) {
+    Settings s = channel_settings();
+    s.set(P::pressure_weight, 0.5);  // a weight, but no DC actuator
+    Mapper mapper;
+    mapper.prepare(s, 345.0);
+    const ControlFrame c = mapper.map(frame(100, -6, 800, 0.5, true));
+    EXPECT_EQ(c.flutter_amplitude, 0.0);
+    EXPECT_EQ(c.pressure, 0.0);
+    EXPECT_GT(c.amplitude, 0.0);
+}
+
+TEST(Mapper, FlutterIsWeightTimesLevelAndEqualisedByInnervation) {
+    Settings s = channel_settings();
+    s.set(P::flutter_weight, 0.8);
+    Mapper mapper;
+    mapper.prepare(s, 345.0);
+    ControlFrame c = mapper.map(frame(100, -15, 800, 0.5, false));
+    EXPECT_NEAR(c.flutter_amplitude, 0.8 * 0.75, 1e-12);
+    // 800 Hz, half way up 100 ... 6400 on a log scale: the geometric middle of 5 ... 40 Hz.
+    EXPECT_NEAR(c.flutter_hz, std::sqrt(5.0 * 40.0), 1e-9);
+    s.set(P::flutter_equalize, 1);
+    mapper.prepare(s, 345.0);
+    c = mapper.map(frame(100, -15, 800, 0.5, false));
+    EXPECT_NEAR(c.flutter_amplitude, 0.8 * 0.75 * 21.0 / 140.0, 1e-12);
+    // Below the gate the flutter stops and its rate holds.
+    const ControlFrame quiet = mapper.map(frame(200, -100, 6400, 0.5, false));
+    EXPECT_EQ(quiet.flutter_amplitude, 0.0);
+    EXPECT_EQ(quiet.flutter_hz, c.flutter_hz);
+}
+
+TEST(Mapper, PressureIsAFractionOfTheCeiling) {
+    Settings s = channel_settings();
+    s.set(P::pressure_weight, 0.4);
+    s.set(P::actuator_dc, 1);
+    s.set(P::post_ceiling_db, -6);
+    Mapper mapper;
+    mapper.prepare(s, 345.0);
+    EXPECT_NEAR(mapper.map(frame(100, -15, 800, 0.5, false)).pressure,
+                0.4 * 0.75 * std::pow(10.0, -6.0 / 20), 1e-12);
+    EXPECT_EQ(mapper.map(frame(101, -100, 800, 0.5, false)).pressure, 0.0);
+}
+
+TEST(Mapper, PressureStepsWithHysteresis) {
+    Settings s = channel_settings();
+    s.set(P::pressure_weight, 0.5);
+    s.set(P::actuator_dc, 1);
+    s.set(P::pressure_steps, 4);
+    Mapper mapper;
+    mapper.prepare(s, 345.0);
+    const auto pressure_at = [&](double level) {
+        return mapper.map(frame(0, -60 + 60 * level, 800, 0.5, false)).pressure;
+    };
+    EXPECT_EQ(pressure_at(0.1), 0.0);
+    EXPECT_NEAR(pressure_at(0.3), 0.5 * 0.25, 1e-12);   // 1.2 steps: step 1
+    EXPECT_NEAR(pressure_at(0.36), 0.5 * 0.25, 1e-12);  // 1.44: still 1
+    EXPECT_NEAR(pressure_at(0.39), 0.5 * 0.25, 1e-12);  // 1.56: within the hysteresis
+    EXPECT_NEAR(pressure_at(0.42), 0.5 * 0.5, 1e-12);   // 1.68: step 2
+    EXPECT_NEAR(pressure_at(0.36), 0.5 * 0.5, 1e-12);   // 1.44: held at 2
+    EXPECT_NEAR(pressure_at(0.32), 0.5 * 0.25, 1e-12);  // 1.28: back to 1
+    EXPECT_NEAR(pressure_at(1.0), 0.5, 1e-12);
 }
 
 }  // namespace

@@ -2,17 +2,24 @@
 // the final safety clip does not have to act on full-scale signals (the limiter's 1 dB margin
 // is meant to absorb the last band-limit's ringing); non-finite input gives finite output;
 // latency is the limiter's; below the limiter threshold the chain is the product of its filters.
+// Channel components: with flutter and pressure on the output still never exceeds the ceiling
+// and the final clip does not act; the flutter passes 2-40 Hz (last high-pass at
+// post.flutter_low_hz) through the 30 Hz peaking filter; the pressure arrives unfiltered; while
+// they are off their buffers change nothing, bit for bit.
 #include "tactus/post/post_chain.hpp"
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
 
 #include "support/signals.hpp"
 #include "tactus/core/units.hpp"
+#include "tactus/perception/channels.hpp"
 
 namespace tactus {
 namespace {
@@ -143,6 +150,118 @@ TEST(PostChain, QuietSineIsShapedOnlyByTheFiltersAndDrive) {
             EXPECT_NEAR(measured, expected, 0.05) << f << " Hz, drive " << drive_db << " dB";
         }
     }
+}
+
+Settings with_channels(double pressure_weight) {
+    Settings s;
+    s.set(P::flutter_weight, 1.0);
+    s.set(P::pressure_weight, pressure_weight);
+    s.set(P::actuator_dc, 1);
+    s.set(P::post_flutter_peak_db, -3);
+    return s;
+}
+
+// Flutter and pressure at their largest: a full-scale 20 Hz square flutter, and the pressure
+// at its weight x ceiling (what the mapping stage can send at most), stepping on and off.
+void expect_ceiling_holds_with_channels(const std::vector<float>& carrier, double fs,
+                                        double ceiling_db, double drive_db, double pressure_weight,
+                                        bool expect_no_clipping, const std::string& what) {
+    Settings settings = with_channels(pressure_weight);
+    settings.set(P::post_ceiling_db, ceiling_db);
+    settings.set(P::post_drive_db, drive_db);
+    PostChain chain;
+    chain.prepare(fs, settings);
+    const size_t n = carrier.size();
+    std::vector<float> y = carrier, flutter(n), pressure(n);
+    const double most_pressure = pressure_weight * chain.ceiling();
+    for (size_t i = 0; i < n; ++i) {
+        flutter[i] = std::fmod(double(i) * 20.0 / fs, 1.0) < 0.5 ? 1.0f : -1.0f;
+        pressure[i] = (i / static_cast<size_t>(0.3 * fs)) % 2 ? float_at_most(most_pressure) : 0;
+    }
+    chain.process(y.data(), flutter.data(), pressure.data(), static_cast<int>(n));
+    EXPECT_LE(test::peak(y), static_cast<float>(chain.ceiling())) << what;
+    if (expect_no_clipping) {
+        EXPECT_EQ(chain.clipped_samples(), 0) << what;
+    }
+}
+
+TEST(PostChain, CeilingHoldsWithFlutterAndPressure) {
+    const double fs = 48000;
+    for (double pressure_weight : {0.1, 0.5}) {
+        for (double ceiling_db : {0.0, -6.0, -20.0})
+            for (double drive_db : {0.0, 20.0})
+                for (auto& [name, input] : loud_inputs(fs))
+                    expect_ceiling_holds_with_channels(
+                        input, fs, ceiling_db, drive_db, pressure_weight, false,
+                        name + ", ceiling " + std::to_string(ceiling_db) + " dB, drive " +
+                            std::to_string(drive_db) + " dB, pressure " +
+                            std::to_string(pressure_weight));
+        for (double drive_db : {0.0, 12.0, 20.0})
+            for (auto& [name, input] : full_scale_inputs(fs))
+                expect_ceiling_holds_with_channels(input, fs, 0.0, drive_db, pressure_weight, true,
+                                                   name + " (the final clip must not act), drive " +
+                                                       std::to_string(drive_db) + " dB, pressure " +
+                                                       std::to_string(pressure_weight));
+    }
+}
+
+// Gain of the chain for a quiet sine entering as flutter (carrier and pressure silent).
+double flutter_gain_db(PostChain& chain, double frequency_hz, double fs) {
+    chain.reset();
+    std::vector<float> flutter;
+    return test::measured_gain_db(
+        [&](float* x, int n) {
+            flutter.assign(x, x + n);
+            std::fill(x, x + n, 0.0f);
+            chain.process(x, flutter.data(), nullptr, n);
+        },
+        frequency_hz, fs, 3.0, 1.0, 0.05);
+}
+
+TEST(PostChain, FlutterPassesTheNpiBandThroughThe30HzPeak) {
+    const double npi_low_hz = perception::info(perception::Channel::NPI).range_low_hz;
+    for (double fs : {4000.0, 48000.0}) {
+        Settings settings = with_channels(0.0);
+        settings.set(P::post_drive_db, 0);
+        settings.set(P::post_flutter_low_hz, 1);
+        PostChain chain;
+        chain.prepare(fs, settings);
+        BandLimit last;
+        last.prepare(fs, 1, settings[P::post_band_high_hz], PostChain::kLastBandOrder);
+        const BiquadCoefficients peak = BiquadCoefficients::peaking(30, 2, -3, fs);
+        for (double f : {npi_low_hz, 8.0, 20.0, 30.0, 40.0}) {
+            const double expected = last.magnitude_db(f) + peak.magnitude_db(f, fs);
+            EXPECT_NEAR(flutter_gain_db(chain, f, fs), expected, 0.05) << f << " Hz at " << fs;
+        }
+        EXPECT_NEAR(flutter_gain_db(chain, 30, fs), -3.0, 0.1) << fs;
+        EXPECT_GT(flutter_gain_db(chain, npi_low_hz, fs), -1.0) << "2 Hz must pass at " << fs;
+    }
+}
+
+TEST(PostChain, PressureArrivesUnfiltered) {
+    PostChain chain;
+    chain.prepare(48000, with_channels(0.5));
+    std::vector<float> carrier(48000, 0.0f), flutter(48000, 0.0f), pressure(48000, 0.3f);
+    chain.process(carrier.data(), flutter.data(), pressure.data(), 48000);
+    for (float v : carrier) ASSERT_EQ(v, 0.3f);
+}
+
+TEST(PostChain, ComponentsThatAreOffChangeNothing) {
+    const double fs = 48000;
+    test::DrumSignal drums = test::drum_pattern(fs, 2.0, 5);
+    Settings settings;                      // flutter weight 0
+    settings.set(P::pressure_weight, 0.5);  // a weight without a DC actuator
+    settings.set(P::post_flutter_peak_db, 6);
+    PostChain plain, given_buffers;
+    plain.prepare(fs, Settings{});
+    given_buffers.prepare(fs, settings);
+    std::vector<float> a = drums.audio, b = drums.audio;
+    std::vector<float> flutter = test::white_noise(a.size(), 9), pressure(a.size(), 0.4f);
+    plain.process(a.data(), static_cast<int>(a.size()));
+    given_buffers.process(b.data(), flutter.data(), pressure.data(), static_cast<int>(b.size()));
+    ASSERT_GT(test::peak(a), 0.05);
+    for (size_t i = 0; i < a.size(); ++i)
+        ASSERT_EQ(std::bit_cast<uint32_t>(a[i]), std::bit_cast<uint32_t>(b[i])) << i;
 }
 
 }  // namespace

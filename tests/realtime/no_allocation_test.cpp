@@ -4,7 +4,8 @@
 // pthread_mutex_lock, and counts the calls made while a thread-local guard is set. The guard is
 // set only around process() calls on long, varied input (drum-like hits, silence, quiet passages,
 // NaN/Inf/denormal samples, odd block sizes) at several sample rates: no allocation and no mutex
-// lock may happen. Sanity tests prove the guard does see allocations and locks.
+// lock may happen. Sanity tests prove the guard does see allocations and locks. The channel
+// components (NPI flutter, NPIII pressure on a DC actuator: the four-channel preset) run too.
 #include <dlfcn.h>
 #include <gtest/gtest.h>
 #include <pthread.h>
@@ -13,12 +14,14 @@
 #include <cerrno>
 #include <cstddef>
 #include <cstdlib>
+#include <filesystem>
 #include <limits>
 #include <mutex>
 #include <new>
 #include <vector>
 
 #include "support/signals.hpp"
+#include "tactus/core/preset.hpp"
 #include "tactus/engine/engine.hpp"
 
 extern "C" {
@@ -325,6 +328,20 @@ TEST(RealTime, AtOtherRatesAndSettings) {
     s.set(P::amplitude_smoothing_ms, 20);
     s.set(P::post_drive_db, 20);
     expect_process_is_real_time_safe(44100, s);
+}
+
+TEST(RealTime, FourChannelComponents) {
+    Settings s;
+    apply_preset_file(s,
+                      std::filesystem::path(TACTUS_SOURCE_DIR) / "presets" / "four-channel.toml");
+    s.set(P::actuator_dc, 1);
+    ASSERT_GT(s[P::flutter_weight], 0.0);
+    ASSERT_GT(s[P::pressure_weight], 0.0);
+    expect_process_is_real_time_safe(48000, s);
+    expect_process_is_real_time_safe(8000, s);
+    s.set(P::post_flutter_peak_db, 0);
+    s.set(P::pressure_steps, 0);
+    expect_process_is_real_time_safe(96000, s);
 }
 
 }  // namespace

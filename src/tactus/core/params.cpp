@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "tactus/perception/channels.hpp"
+
 namespace tactus {
 namespace {
 
@@ -16,9 +18,14 @@ using enum ParamCurve;
 
 constexpr std::span<const std::string_view> kSources{kFeatureSourceNames};
 constexpr std::span<const std::string_view> kCurves{kCurveNames};
+constexpr std::span<const std::string_view> kSwitch{kSwitchNames};
 
 constexpr double kLastSource = kFeatureSourceNames.size() - 1;
 constexpr double kLastCurve = kCurveNames.size() - 1;
+
+// Channel bands (paper Table 1) that bound the flutter and pressure settings.
+constexpr double kNpiHighHz = perception::info(perception::Channel::NPI).range_high_hz;
+constexpr double kNpiLowHz = perception::info(perception::Channel::NPI).range_low_hz;
 
 // clang-format off
 const ParamSpec kTable[] = {
@@ -82,10 +89,61 @@ const ParamSpec kTable[] = {
      "time from peak to -60 dB below it (towards the sustain level)"},
     {"envelope.sustain", "", number, 0, 1, 0, lin,
      "level the envelope decays to, so sustained sounds stay felt (0 = discrete pulses)"},
+    // Synthesis: one component per further channel of touch (paper §5.2, §5.4). Off by default.
+    {"flutter.weight", "", number, 0, 1, 0, lin,
+     "NPI flutter (2-40 Hz) level at mapped level 1, full scale (0 = off; paper 5.2)"},
+    {"flutter.equalize", "", choice, 0, 1, 0, lin,
+     "scale the flutter by the P/NPI innervation ratio 21/140 (-16.5 dB) so both channels are "
+     "engaged about equally loudly (paper 5.2)", kSwitch},
+    {"mapping.flutter_level.source", "", choice, 0, kLastSource, 0, lin,
+     "feature mapped to the flutter level", kSources},
+    {"mapping.flutter_level.in_min", "", number, -1e6, 1e6, -60, lin, "source value mapped to out_min"},
+    {"mapping.flutter_level.in_max", "", number, -1e6, 1e6, 0, lin, "source value mapped to out_max"},
+    {"mapping.flutter_level.out_min", "", number, 0, 1, 0.03, lin, "flutter level at in_min (0 ... 1)"},
+    {"mapping.flutter_level.out_max", "", number, 0, 1, 1, lin, "flutter level at in_max (0 ... 1)"},
+    {"mapping.flutter_level.curve", "", choice, 0, kLastCurve, 2, lin,
+     "lin, log (ratio to ratio) or exp (dB to amplitude)", kCurves},
+    {"mapping.flutter_level.smoothing_ms", "ms", number, 0, 1000, 40, lin,
+     "one-pole time constant applied to the mapped flutter level"},
+    {"mapping.flutter_rate.source", "", choice, 0, kLastSource, 1, lin,
+     "feature mapped to the flutter rate", kSources},
+    {"mapping.flutter_rate.in_min", "", number, -1e6, 1e6, 100, lin, "source value mapped to out_min"},
+    {"mapping.flutter_rate.in_max", "", number, -1e6, 1e6, 6000, lin, "source value mapped to out_max"},
+    {"mapping.flutter_rate.out_min", "Hz", number, kNpiLowHz, kNpiHighHz, 8, log,
+     "flutter rate at in_min (inside NPI's 2-40 Hz)"},
+    {"mapping.flutter_rate.out_max", "Hz", number, kNpiLowHz, kNpiHighHz, 30, log,
+     "flutter rate at in_max (inside NPI's 2-40 Hz)"},
+    {"mapping.flutter_rate.curve", "", choice, 0, kLastCurve, 1, lin,
+     "lin, log (ratio to ratio) or exp (dB to amplitude)", kCurves},
+    {"mapping.flutter_rate.smoothing_ms", "ms", number, 0, 1000, 20, lin,
+     "one-pole time constant applied to the mapped flutter rate"},
+    {"pressure.weight", "", number, 0, 0.5, 0, lin,
+     "NPIII pressure offset at mapped level 1, as a fraction of the output ceiling; the vibration "
+     "gives up this much headroom (0 = off; needs actuator.dc; paper 5.4)"},
+    {"pressure.steps", "", number, 0, 8, 0, lin,
+     "sustained pressure levels above 0, rounded (0 = continuous; paper 5.4 step functions)"},
+    {"mapping.pressure_level.source", "", choice, 0, kLastSource, 0, lin,
+     "feature mapped to the pressure level", kSources},
+    {"mapping.pressure_level.in_min", "", number, -1e6, 1e6, -60, lin, "source value mapped to out_min"},
+    {"mapping.pressure_level.in_max", "", number, -1e6, 1e6, 0, lin, "source value mapped to out_max"},
+    {"mapping.pressure_level.out_min", "", number, 0, 1, 0, lin, "pressure level at in_min (0 ... 1)"},
+    {"mapping.pressure_level.out_max", "", number, 0, 1, 1, lin, "pressure level at in_max (0 ... 1)"},
+    {"mapping.pressure_level.curve", "", choice, 0, kLastCurve, 0, lin,
+     "lin, log (ratio to ratio) or exp (dB to amplitude)", kCurves},
+    {"mapping.pressure_level.smoothing_ms", "ms", number, 0, 5000, 300, lin,
+     "one-pole time constant applied to the mapped pressure level"},
+    // Actuator capabilities.
+    {"actuator.dc", "", choice, 0, 1, 0, lin,
+     "the actuator holds a sustained offset (DC); without it the pressure component is silent "
+     "(paper 5.4)", kSwitch},
     // Post-processing in the paper's order (§6).
     {"post.band_low_hz", "Hz", number, 1, 200, 30, log, "lower edge of the vibrotactile band"},
     {"post.band_high_hz", "Hz", number, 200, 2000, 1000, log,
      "upper edge of the vibrotactile band; also the oscillator's harmonic limit"},
+    {"post.flutter_low_hz", "Hz", number, 0.5, 30, 1, log,
+     "high-pass edge of the last band-limit when the flutter is on (NPI starts at 2 Hz)"},
+    {"post.flutter_peak_db", "dB", number, -12, 12, 0, lin,
+     "peaking filter at 30 Hz on the flutter, for NPI's notch (paper 5.2 note 4; 0 = none)"},
     {"post.flatten_strength", "", number, 0, 1, 1, lin,
      "fraction of the P-channel threshold curve the flattening filter compensates"},
     {"post.flatten_range_db", "dB", number, 0, 40, 30, lin,

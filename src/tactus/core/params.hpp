@@ -46,6 +46,9 @@ enum class FeatureSource {
 inline constexpr std::array<std::string_view, 3> kCurveNames = {"lin", "log", "exp"};
 enum class MappingCurve { lin, log, exp };
 
+// On/off settings (ParamKind::choice): the value is 0 (off) or 1 (on).
+inline constexpr std::array<std::string_view, 2> kSwitchNames = {"off", "on"};
+
 // Parameter identifiers, in table order.
 enum class P : int {
     analysis_window_ms,
@@ -66,12 +69,22 @@ enum class P : int {
     TACTUS_MAPPING_IDS(amplitude),
     TACTUS_MAPPING_IDS(frequency),
     TACTUS_MAPPING_IDS(square_mix),
-#undef TACTUS_MAPPING_IDS
     envelope_attack_ms,
     envelope_decay_ms,
     envelope_sustain,
+    flutter_weight,
+    flutter_equalize,
+    TACTUS_MAPPING_IDS(flutter_level),
+    TACTUS_MAPPING_IDS(flutter_rate),
+    pressure_weight,
+    pressure_steps,
+    TACTUS_MAPPING_IDS(pressure_level),
+#undef TACTUS_MAPPING_IDS
+    actuator_dc,
     post_band_low_hz,
     post_band_high_hz,
+    post_flutter_low_hz,
+    post_flutter_peak_db,
     post_flatten_strength,
     post_flatten_range_db,
     post_drive_db,

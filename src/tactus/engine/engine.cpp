@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "tactus/engine/denormals.hpp"
+#include "tactus/synthesis/components.hpp"
 
 namespace tactus {
 
@@ -22,6 +23,8 @@ void Engine::prepare(double sample_rate_hz, int max_block) {
     mapper_.prepare(settings_, sample_rate_hz / analyzer_.hop_samples());
     voice_.prepare(sample_rate_hz, settings_[P::post_band_high_hz]);
     post_.prepare(sample_rate_hz, settings_);
+    flutter_.assign(flutter_enabled(settings_) ? static_cast<size_t>(max_block) : 0, 0.0f);
+    pressure_.assign(pressure_enabled(settings_) ? static_cast<size_t>(max_block) : 0, 0.0f);
     reset();
 }
 
@@ -35,10 +38,13 @@ void Engine::reset() noexcept {
 void Engine::process(const float* in, float* out, int count) noexcept {
     const ScopedFlushDenormals no_denormals;
     int done = 0;  // `in` is read before `out` is written, chunk by chunk: they may alias
+    float* const flutter = flutter_.empty() ? nullptr : flutter_.data();
+    float* const pressure = pressure_.empty() ? nullptr : pressure_.data();
     while (done < count) {
         const int chunk = std::min(count - done, analyzer_.samples_to_next_frame());
         const bool frame_due = analyzer_.write(in + done, chunk);
-        voice_.render(out + done, chunk);
+        voice_.render(out + done, flutter ? flutter + done : nullptr,
+                      pressure ? pressure + done : nullptr, chunk);
         if (frame_due) {
             const Features& features = analyzer_.analyse();
             const ControlFrame control = mapper_.map(features);
@@ -47,7 +53,7 @@ void Engine::process(const float* in, float* out, int count) noexcept {
         }
         done += chunk;
     }
-    post_.process(out, count);
+    post_.process(out, flutter, pressure, count);
 }
 
 }  // namespace tactus

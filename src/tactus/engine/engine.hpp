@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "tactus/analysis/analyzer.hpp"
 #include "tactus/core/params.hpp"
@@ -49,6 +50,8 @@ class Engine {
     Mapper mapper_;
     Voice voice_;
     PostChain post_;
+    // One block of each low-frequency channel component, sized only when it is on.
+    std::vector<float> flutter_, pressure_;
     FrameObserver* observer_ = nullptr;
 };
 

@@ -15,6 +15,10 @@ struct ControlFrame {
     double attack_ms = 1;
     double decay_ms = 150;  // peak to -60 dB
     double sustain = 0;     // level the envelope decays to, 0 ... 1
+    // Further channels of touch (paper §5.2, §5.4), each 0 when its component is off.
+    double flutter_hz = 0;         // NPI flutter rate, 2 ... 40 Hz
+    double flutter_amplitude = 0;  // full scale, weight and innervation equalisation applied
+    double pressure = 0;           // NPIII offset, full scale, >= 0 (0 without actuator.dc)
 };
 
 }  // namespace tactus

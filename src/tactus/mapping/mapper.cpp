@@ -1,15 +1,39 @@
 #include "tactus/mapping/mapper.hpp"
 
+#include <cmath>
+
+#include "tactus/core/units.hpp"
+#include "tactus/perception/channels.hpp"
+#include "tactus/synthesis/components.hpp"
+
 namespace tactus {
+namespace {
+using perception::Channel;
+// Innervation density P / NPI, human fingerpad (paper Table 1).
+constexpr double kFlutterEqualizeGain = perception::info(Channel::P).innervation_per_cm2 /
+                                        perception::info(Channel::NPI).innervation_per_cm2;
+constexpr double kStepHysteresis = 0.1;  // of one step
+}  // namespace
 
 void Mapper::prepare(const Settings& s, double frames_per_second) {
     amplitude_.prepare(s, P::amplitude_source, frames_per_second);
     frequency_.prepare(s, P::frequency_source, frames_per_second);
     square_mix_.prepare(s, P::square_mix_source, frames_per_second);
+    flutter_level_.prepare(s, P::flutter_level_source, frames_per_second);
+    flutter_rate_.prepare(s, P::flutter_rate_source, frames_per_second);
+    pressure_level_.prepare(s, P::pressure_level_source, frames_per_second);
     gate_db_ = s[P::mapping_gate_db];
     envelope_.attack_ms = s[P::envelope_attack_ms];
     envelope_.decay_ms = s[P::envelope_decay_ms];
     envelope_.sustain = s[P::envelope_sustain];
+    flutter_gain_ =
+        flutter_enabled(s)
+            ? s[P::flutter_weight] * (s[P::flutter_equalize] != 0.0 ? kFlutterEqualizeGain : 1.0)
+            : 0.0;
+    // Pressure weight is a fraction of the output ceiling (the post chain keeps that headroom).
+    pressure_weight_ =
+        pressure_enabled(s) ? s[P::pressure_weight] * db_to_gain(s[P::post_ceiling_db]) : 0.0;
+    pressure_steps_ = static_cast<int>(std::lround(s[P::pressure_steps]));
     reset();
 }
 
@@ -17,6 +41,19 @@ void Mapper::reset() noexcept {
     amplitude_.reset(0.0);
     frequency_.reset(frequency_.shape(0.0));
     square_mix_.reset(square_mix_.shape(0.0));
+    flutter_level_.reset(0.0);
+    flutter_rate_.reset(flutter_rate_.shape(0.0));
+    pressure_level_.reset(0.0);
+    pressure_step_ = 0;
+}
+
+double Mapper::pressure_of(const Features& f) noexcept {
+    const double level = pressure_level_.map(f);
+    if (pressure_steps_ <= 0) return pressure_weight_ * level;
+    const double x = level * pressure_steps_;
+    if (std::abs(x - pressure_step_) > 0.5 + kStepHysteresis)
+        pressure_step_ = static_cast<int>(std::lround(x));
+    return pressure_weight_ * pressure_step_ / pressure_steps_;
 }
 
 ControlFrame Mapper::map(const Features& f) noexcept {
@@ -27,11 +64,18 @@ ControlFrame Mapper::map(const Features& f) noexcept {
         frame.frequency_hz = frequency_.map(f);
         frame.square_mix = square_mix_.map(f);
         frame.trigger = f.onset;
+        frame.flutter_amplitude = flutter_gain_ * flutter_level_.map(f);
+        frame.flutter_hz = flutter_rate_.map(f);
+        frame.pressure = pressure_of(f);
     } else {
         amplitude_.reset(0.0);
+        flutter_level_.reset(0.0);
+        pressure_level_.reset(0.0);
+        pressure_step_ = 0;
         frame.amplitude = 0.0;
         frame.frequency_hz = frequency_.current();
         frame.square_mix = square_mix_.current();
+        frame.flutter_hz = flutter_rate_.current();
     }
     return frame;
 }

@@ -2,6 +2,15 @@
 // Amplitude, frequency and square mix each come from a FeatureMapping; onsets become envelope
 // triggers. Below the loudness gate the amplitude is 0 and frequency and mix hold their values,
 // so silence (and the noise floor) never sets the carrier.
+// The further channels (paper §5: features mapped onto weighted combinations of channels) come
+// from their own FeatureMappings: NPI flutter level and rate, NPIII pressure level, each times
+// its weight. Flutter equalisation (§5.2): "if all vibration channels are to be engaged equally
+// loudly, average vibration intensity should be de-emphasized" in NPI's range, if innervation
+// sets perceived magnitude; we take magnitude proportional to the number of fibres excited, so
+// the flutter amplitude is scaled by the innervation ratio P / NPI = 21 / 140 (-16.5 dB, Table
+// 1). Pressure steps (§5.4: "multiple levels of sustained pressure") quantise the level to
+// `pressure.steps` levels above 0 with a hysteresis of 0.1 step, so a level near a boundary
+// does not chatter. Without actuator.dc the pressure is exactly 0.
 #pragma once
 
 #include "tactus/analysis/features.hpp"
@@ -17,7 +26,12 @@ class Mapper {
     ControlFrame map(const Features& features) noexcept;
 
   private:
+    double pressure_of(const Features& features) noexcept;
+
     FeatureMapping amplitude_, frequency_, square_mix_;
+    FeatureMapping flutter_level_, flutter_rate_, pressure_level_;
+    double flutter_gain_ = 0, pressure_weight_ = 0;
+    int pressure_steps_ = 0, pressure_step_ = 0;
     double gate_db_ = -70;
     ControlFrame envelope_;  // attack, decay, sustain from settings
 };

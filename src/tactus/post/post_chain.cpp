@@ -1,35 +1,66 @@
 #include "tactus/post/post_chain.hpp"
 
+#include <cmath>
+
 #include "tactus/core/units.hpp"
+#include "tactus/synthesis/components.hpp"
 
 namespace tactus {
+namespace {
+// NPI's "notch at 30 Hz" (paper Table 1 note 3, §5.2 note 4); its width spans the prime
+// sensitivity range 25-40 Hz: Q = 30 / (40 - 25) = 2.
+constexpr double kFlutterPeakHz = 30.0;
+constexpr double kFlutterPeakQ = 2.0;
+// With the flutter on, the last high-pass (1 Hz) rings for seconds after the sound stops; below
+// -180 dBFS its output is set to 0, so silence still ends in exact zeros.
+constexpr float kSilentOutput = 1e-9f;
+}  // namespace
 
 void PostChain::prepare(double sample_rate_hz, const Settings& s) {
     const double low_hz = s[P::post_band_low_hz], high_hz = s[P::post_band_high_hz];
+    flutter_on_ = flutter_enabled(s);
+    pressure_on_ = pressure_enabled(s);
+    flutter_peak_on_ = flutter_on_ && s[P::post_flutter_peak_db] != 0.0;
     first_band_.prepare(sample_rate_hz, low_hz, high_hz, kFirstBandOrder);
     flatten_.prepare(sample_rate_hz, low_hz, high_hz, s[P::post_flatten_strength],
                      s[P::post_flatten_range_db]);
+    flutter_peak_.set(BiquadCoefficients::peaking(kFlutterPeakHz, kFlutterPeakQ,
+                                                  s[P::post_flutter_peak_db], sample_rate_hz));
     ceiling_ = db_to_gain(s[P::post_ceiling_db]);
+    const double pressure_headroom = pressure_on_ ? s[P::pressure_weight] * ceiling_ : 0.0;
     limiter_.prepare(sample_rate_hz, s[P::post_lookahead_ms], s[P::post_release_ms],
                      s[P::post_drive_db], s[P::post_limiter_threshold_db],
-                     ceiling_ * db_to_gain(-kRingingMarginDb));
-    last_band_.prepare(sample_rate_hz, low_hz, high_hz, kLastBandOrder);
+                     (ceiling_ - pressure_headroom) * db_to_gain(-kRingingMarginDb));
+    last_band_.prepare(sample_rate_hz, flutter_on_ ? s[P::post_flutter_low_hz] : low_hz, high_hz,
+                       kLastBandOrder);
     reset();
 }
 
 void PostChain::reset() noexcept {
     first_band_.reset();
     flatten_.reset();
+    flutter_peak_.reset();
     limiter_.reset();
     last_band_.reset();
     clipped_ = 0;
 }
 
-void PostChain::process(float* samples, int count) noexcept {
+void PostChain::process(float* samples, float* flutter, const float* pressure, int count) noexcept {
     first_band_.process(samples, count);
     flatten_.process(samples, count);
+    if (flutter_on_ && flutter) {
+        if (flutter_peak_on_)
+            for (int i = 0; i < count; ++i)
+                flutter[i] = static_cast<float>(flutter_peak_.process(flutter[i]));
+        for (int i = 0; i < count; ++i) samples[i] += flutter[i];
+    }
     limiter_.process(samples, count);
     last_band_.process(samples, count);
+    if (flutter_on_)
+        for (int i = 0; i < count; ++i)
+            if (std::abs(samples[i]) < kSilentOutput) samples[i] = 0.0f;
+    if (pressure_on_ && pressure)
+        for (int i = 0; i < count; ++i) samples[i] += pressure[i];
     const float ceiling = float_at_most(ceiling_);
     for (int i = 0; i < count; ++i) {
         if (samples[i] > ceiling)

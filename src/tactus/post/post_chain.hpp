@@ -2,6 +2,16 @@
 // flattening, peak limiter, band-limit again. The limiter's ceiling sits 1 dB under the output
 // ceiling to leave room for the last band-limit's ringing; a final clip at the ceiling makes the
 // bound absolute and counts how often it had to act (it should not: see clipped_samples()).
+// Routing of the low-frequency channel components (synthesis/voice.hpp), which the band-limit
+// (30 Hz high-pass) and the P flattening filter would remove or distort:
+//   carrier -> band-limit -> P flattening -(+ flutter)-> limiter -> band-limit -(+ pressure)-> clip
+// The NPI flutter (2-40 Hz, already confined to its band by synthesis) joins after the
+// flattening, through an optional 30 Hz peaking filter (paper §5.2 note 4), so the limiter
+// guards the sum; the last band-limit's high-pass then sits at post.flutter_low_hz. The NPIII
+// pressure (a slow offset) joins after the last band-limit; the limiter's ceiling is lowered by
+// the pressure's largest value (its weight times the ceiling), so the sum stays under the ceiling.
+// It is not delayed by the limiter's look-ahead (1.5 ms against NPIII's >= 330 ms periods). With
+// both off the chain is exactly the paper's.
 #pragma once
 
 #include <cstdint>
@@ -21,7 +31,11 @@ class PostChain {
 
     void prepare(double sample_rate_hz, const Settings& settings);  // may allocate
     void reset() noexcept;
-    void process(float* samples, int count) noexcept;
+    // The carrier alone (flutter and pressure off).
+    void process(float* samples, int count) noexcept { process(samples, nullptr, nullptr, count); }
+    // carrier: in place, becomes the output. flutter (filtered in place) and pressure may be
+    // null; each is used only when its component is on (synthesis/components.hpp).
+    void process(float* carrier, float* flutter, const float* pressure, int count) noexcept;
     int latency_samples() const { return limiter_.latency_samples(); }
     int64_t clipped_samples() const { return clipped_; }
     double ceiling() const { return ceiling_; }
@@ -31,6 +45,8 @@ class PostChain {
     BandLimit first_band_, last_band_;
     FlatteningFilter flatten_;
     PeakLimiter limiter_;
+    Biquad flutter_peak_;
+    bool flutter_on_ = false, flutter_peak_on_ = false, pressure_on_ = false;
     double ceiling_ = 1.0;
     int64_t clipped_ = 0;
 };

@@ -12,6 +12,8 @@ constexpr double kSilentAmplitude = 1e-9;
 void Voice::prepare(double sample_rate_hz, double harmonic_limit_hz) {
     oscillator_.prepare(sample_rate_hz, harmonic_limit_hz);
     envelope_.prepare(sample_rate_hz);
+    flutter_.prepare(sample_rate_hz);
+    pressure_.prepare(sample_rate_hz);
     glide_ = one_pole_coefficient(kGlideMs, sample_rate_hz);
     reset();
 }
@@ -19,6 +21,8 @@ void Voice::prepare(double sample_rate_hz, double harmonic_limit_hz) {
 void Voice::reset() noexcept {
     oscillator_.reset();
     envelope_.reset();
+    flutter_.reset();
+    pressure_.reset();
     target_ = {};
     amplitude_ = 0;
     frequency_hz_ = 0;
@@ -27,6 +31,8 @@ void Voice::reset() noexcept {
 
 void Voice::apply(const ControlFrame& frame) noexcept {
     target_ = frame;
+    flutter_.apply(frame);
+    pressure_.apply(frame);
     envelope_.set_shape(frame.attack_ms, frame.decay_ms, frame.sustain);
     if (frame.trigger) {
         if (envelope_.level() < kQuietEnvelope) {
@@ -54,6 +60,12 @@ void Voice::render(float* out, int count) noexcept {
     amplitude_ = amplitude;
     frequency_hz_ = frequency;
     square_mix_ = mix;
+}
+
+void Voice::render(float* carrier, float* flutter, float* pressure, int count) noexcept {
+    render(carrier, count);
+    if (flutter) flutter_.render(flutter, count);
+    if (pressure) pressure_.render(pressure, count);
 }
 
 }  // namespace tactus
