@@ -7,8 +7,11 @@ namespace tactus {
 void PostChain::prepare(double sample_rate_hz, const Settings& s) {
     const double low_hz = s[P::post_band_low_hz], high_hz = s[P::post_band_high_hz];
     first_band_.prepare(sample_rate_hz, low_hz, high_hz, kFirstBandOrder);
-    flatten_.prepare(sample_rate_hz, low_hz, high_hz, s[P::post_flatten_strength],
-                     s[P::post_flatten_range_db]);
+    flatten_.prepare(sample_rate_hz, low_hz, high_hz,
+                     {.strength = s[P::post_flatten_strength],
+                      .range_db = s[P::post_flatten_range_db],
+                      .contact_area_cm2 = s[P::perception_contact_area_cm2],
+                      .level_db = s[P::post_flatten_level_db]});
     ceiling_ = db_to_gain(s[P::post_ceiling_db]);
     limiter_.prepare(sample_rate_hz, s[P::post_lookahead_ms], s[P::post_release_ms],
                      s[P::post_drive_db], s[P::post_limiter_threshold_db],
