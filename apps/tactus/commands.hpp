@@ -9,5 +9,6 @@ void add_render(CLI::App& app);
 void add_analyze(CLI::App& app);
 void add_onsets(CLI::App& app);
 void add_presets(CLI::App& app);
+void add_meter(CLI::App& app);
 
 }  // namespace tactus::cli

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <optional>
 
+#include "actuator_option.hpp"
 #include "commands.hpp"
 #include "common.hpp"
 #include "pipeline_options.hpp"
@@ -16,6 +17,7 @@ namespace {
 struct RenderOptions {
     std::string input, output;
     int channels = 1;
+    std::string actuator;
     PipelineOptions pipeline;
 };
 
@@ -31,6 +33,7 @@ void render(const RenderOptions& o) {
     const Settings settings = o.pipeline.resolve();
     refuse_overwriting_input(o.input, o.output);
     Engine engine(settings);
+    if (!o.actuator.empty()) engine.set_actuator(load_actuator_for(o.actuator, settings));
     OnsetCounter counter;
     engine.set_observer(&counter);
     std::optional<AudioWriter> writer;  // opened at the input's sample rate
@@ -64,6 +67,9 @@ void add_render(CLI::App& app) {
     command->add_option("--channels,-c", options->channels, "identical actuator channels")
         ->check(CLI::Range(1, 64))
         ->capture_default_str();
+    add_actuator_option(*command, options->actuator,
+                        "actuator profile (name in actuators/ or FILE.toml): compensate its "
+                        "response, respect its max drive, warn about what it cannot do");
     options->pipeline.add_to(*command);
     command->callback([options] { render(*options); });
 }

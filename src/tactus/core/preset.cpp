@@ -4,8 +4,9 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <stdexcept>
+
+#include "tactus/core/search_path.hpp"
 
 #ifndef TACTUS_PRESET_DIR
 #define TACTUS_PRESET_DIR "presets"
@@ -67,18 +68,7 @@ std::string description_of(const fs::path& path) {
 }  // namespace
 
 std::vector<fs::path> preset_search_path() {
-    std::vector<fs::path> dirs;
-    if (const char* env = std::getenv("TACTUS_PRESET_PATH")) {
-        std::string_view rest = env;
-        while (!rest.empty()) {
-            const size_t colon = rest.find(':');
-            if (colon != 0) dirs.emplace_back(rest.substr(0, colon));
-            if (colon == std::string_view::npos) break;
-            rest.remove_prefix(colon + 1);
-        }
-    }
-    dirs.emplace_back(TACTUS_PRESET_DIR);
-    return dirs;
+    return search_path("TACTUS_PRESET_PATH", TACTUS_PRESET_DIR);
 }
 
 std::vector<PresetInfo> list_presets() {

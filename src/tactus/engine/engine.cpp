@@ -21,7 +21,7 @@ void Engine::prepare(double sample_rate_hz, int max_block) {
     analyzer_.prepare(sample_rate_hz, settings_);
     mapper_.prepare(settings_, sample_rate_hz / analyzer_.hop_samples());
     voice_.prepare(sample_rate_hz, settings_[P::post_band_high_hz]);
-    post_.prepare(sample_rate_hz, settings_);
+    post_.prepare(sample_rate_hz, settings_, actuator_ ? &*actuator_ : nullptr);
     reset();
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "tactus/analysis/analyzer.hpp"
 #include "tactus/core/params.hpp"
@@ -28,6 +29,8 @@ class Engine {
     static constexpr int kMaxBlock = 4096;
 
     explicit Engine(Settings settings = {}) : settings_(settings) {}
+    // The actuator the output drives (compensation, max drive); none by default. Before prepare.
+    void set_actuator(std::optional<ActuatorProfile> actuator) { actuator_ = std::move(actuator); }
 
     // May allocate. Throws std::invalid_argument for a sample rate outside 8-192 kHz.
     void prepare(double sample_rate_hz, int max_block);
@@ -44,6 +47,7 @@ class Engine {
 
   private:
     Settings settings_;
+    std::optional<ActuatorProfile> actuator_;
     double sample_rate_hz_ = 0;
     Analyzer analyzer_;
     Mapper mapper_;
