@@ -126,23 +126,7 @@ std::vector<fs::path> actuator_search_path() {
 }
 
 fs::path resolve_actuator(std::string_view name_or_path) {
-    const fs::path given(name_or_path);
-    if (given.extension() == ".toml" || given.has_parent_path()) {
-        if (!fs::is_regular_file(given))
-            throw std::runtime_error(fmt::format("actuator file '{}' not found", name_or_path));
-        return given;
-    }
-    std::string known;
-    for (const auto& dir : actuator_search_path()) {
-        if (fs::is_regular_file(dir / (given.string() + ".toml")))
-            return dir / (given.string() + ".toml");
-        std::error_code ec;
-        for (const auto& entry : fs::directory_iterator(dir, ec))
-            if (entry.path().extension() == ".toml")
-                known += (known.empty() ? "" : ", ") + entry.path().stem().string();
-    }
-    throw std::runtime_error(
-        fmt::format("no actuator named '{}' (known: {})", name_or_path, known));
+    return resolve_toml(name_or_path, actuator_search_path(), "actuator");
 }
 
 ActuatorProfile parse_actuator(std::string_view toml_text, std::string_view origin) {

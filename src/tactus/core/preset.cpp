@@ -89,18 +89,7 @@ std::vector<PresetInfo> list_presets() {
 }
 
 fs::path resolve_preset(std::string_view name_or_path) {
-    const fs::path given(name_or_path);
-    if (given.extension() == ".toml" || given.has_parent_path()) {
-        if (!fs::is_regular_file(given))
-            throw std::runtime_error(fmt::format("preset file '{}' not found", name_or_path));
-        return given;
-    }
-    for (const auto& dir : preset_search_path())
-        if (fs::is_regular_file(dir / (given.string() + ".toml")))
-            return dir / (given.string() + ".toml");
-    std::string known;
-    for (const auto& p : list_presets()) known += (known.empty() ? "" : ", ") + p.name;
-    throw std::runtime_error(fmt::format("no preset named '{}' (known: {})", name_or_path, known));
+    return resolve_toml(name_or_path, preset_search_path(), "preset");
 }
 
 void apply_preset_text(Settings& settings, std::string_view toml_text, std::string_view origin) {

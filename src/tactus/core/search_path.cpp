@@ -1,7 +1,11 @@
 #include "tactus/core/search_path.hpp"
 
+#include <fmt/format.h>
+
 #include <cstdlib>
-#include <string_view>
+#include <set>
+#include <stdexcept>
+#include <string>
 
 namespace tactus {
 
@@ -19,6 +23,31 @@ std::vector<std::filesystem::path> search_path(const char* environment_variable,
     }
     dirs.push_back(fallback);
     return dirs;
+}
+
+std::filesystem::path resolve_toml(std::string_view name_or_path,
+                                   const std::vector<std::filesystem::path>& dirs,
+                                   std::string_view kind) {
+    namespace fs = std::filesystem;
+    const fs::path given(name_or_path);
+    if (given.extension() == ".toml" || given.has_parent_path()) {
+        if (!fs::is_regular_file(given))
+            throw std::runtime_error(fmt::format("{} file '{}' not found", kind, name_or_path));
+        return given;
+    }
+    for (const auto& dir : dirs)
+        if (fs::is_regular_file(dir / (given.string() + ".toml")))
+            return dir / (given.string() + ".toml");
+    std::set<std::string> names;
+    for (const auto& dir : dirs) {
+        std::error_code ec;
+        for (const auto& entry : fs::directory_iterator(dir, ec))
+            if (entry.path().extension() == ".toml") names.insert(entry.path().stem().string());
+    }
+    std::string known;
+    for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+    throw std::runtime_error(
+        fmt::format("no {} named '{}' (known: {})", kind, name_or_path, known));
 }
 
 }  // namespace tactus
