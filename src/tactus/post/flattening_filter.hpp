@@ -25,6 +25,11 @@ class FlatteningFilter {
   public:
     void prepare(double sample_rate_hz, double low_hz, double high_hz,
                  const FlatteningDesign& design);  // may allocate (design)
+    // The threshold curve at the reference contact.
+    void prepare(double sample_rate_hz, double low_hz, double high_hz, double strength,
+                 double range_db) {
+        prepare(sample_rate_hz, low_hz, high_hz, {.strength = strength, .range_db = range_db});
+    }
     void reset() noexcept { eq_.reset(); }
     void process(float* samples, int count) noexcept { eq_.process(samples, count); }
 
