@@ -96,7 +96,7 @@ void add_meter(CLI::App& app) {
     command->add_option("-o,--output", options->output,
                         "FILE.csv: sensation levels every 10 ms (dB SL, 0 = not engaged)");
     add_actuator_option(*command, options->actuator,
-                        "actuator profile (name in actuators/ or FILE.toml)");
+                        "actuator profile (name in actuators/ or FILE.toml; default voice-coil)");
     command
         ->add_option("--contact-area", options->contact_area_cm2,
                      "skin contact area, cm2 (P channel spatial summation)")

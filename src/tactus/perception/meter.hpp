@@ -3,7 +3,7 @@
 // The signal (full scale 1) becomes skin displacement through an actuator calibration, um peak
 // per full-scale sine vs frequency (0 where the actuator cannot move, e.g. DC without DC
 // capability). Each channel is one detector integrating stimulus energy across its frequencies
-// [assumed for NP channels; P: paper §5.1 citing Bolanowski et al.]: a short-time spectrum
+// [P: paper §5.1 and its reference [2]; assumed for NP channels]: a short-time spectrum
 // (Hann window, 8 frames per window) is weighted per bin by (displacement / threshold)^2, the
 // channel's threshold curve at the contact area (threshold.hpp, 1 s curve), and summed, so a
 // steady sine of peak displacement A reads 20 log10 A - T_c(f). P integrates energy over 1 s

@@ -14,7 +14,6 @@
 // [recalled] levels are named constants below; the curve shapes are what tests hold tightly.
 #pragma once
 
-#include <array>
 #include <cmath>
 
 #include "tactus/perception/channels.hpp"
