@@ -10,6 +10,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "support/temp_dir.hpp"
 
@@ -213,13 +214,41 @@ TEST_F(Cli, ActuatorWarningsAndErrors) {
     EXPECT_EQ(fs::file_size(dir_ / "in.flac"), fs::file_size(kAmen));
 }
 
-TEST_F(Cli, AnalyzeHasSensationColumns) {
-    const Result csv = run("analyze " + kAmen);
+// Split a CSV line into numbers.
+std::vector<double> numbers(const std::string& line) {
+    std::vector<double> v;
+    std::istringstream s(line);
+    std::string cell;
+    while (std::getline(s, cell, ',')) v.push_back(std::stod(cell));
+    return v;
+}
+
+TEST_F(Cli, AnalyzeSensationColumnsAgreeWithTheMeter) {
+    const Result csv = run("analyze " + kAmen + " --actuator voice-coil");
     ASSERT_EQ(csv.exit_code, 0) << csv.err;
-    const std::string header = csv.out.substr(0, csv.out.find('\n'));
+    std::istringstream rows(csv.out);
+    std::string header, line;
+    std::getline(rows, header);
     EXPECT_NE(header.find(",P_sl_db,NPI_sl_db,NPII_sl_db,NPIII_sl_db,combined_sl_db"),
               std::string::npos)
         << header;
+    // The row just after 3 s carries the meter's reading at 3.00 s for the same vibration.
+    std::vector<double> analyzed;
+    while (std::getline(rows, line))
+        if (analyzed = numbers(line); analyzed[0] >= 3.0) break;
+    const fs::path vibration = dir_ / "amen.wav", meter_csv = dir_ / "meter.csv";
+    ASSERT_EQ(
+        run("render " + kAmen + " -o " + vibration.string() + " --actuator voice-coil").exit_code,
+        0);
+    ASSERT_EQ(run("meter " + vibration.string() + " -o " + meter_csv.string()).exit_code, 0);
+    std::ifstream f(meter_csv);
+    std::vector<double> metered;
+    while (std::getline(f, line))
+        if (line[0] != 't' && (metered = numbers(line))[0] >= 3.0 - 1e-9) break;
+    ASSERT_EQ(metered.size(), 6u);
+    EXPECT_GT(metered[1], 10.0);  // P engaged
+    for (size_t c = 0; c < 5; ++c)
+        EXPECT_NEAR(analyzed[analyzed.size() - 5 + c], metered[1 + c], 0.006) << c;
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <utility>
 
 #include "tactus/analysis/analyzer.hpp"
 #include "tactus/core/params.hpp"
