@@ -25,10 +25,9 @@ struct MeterOptions {
 void print_summary(const MeterOptions& o, const ActuatorProfile& a, double seconds,
                    const perception::MeterSummary& s) {
     std::cout << fmt::format(
-        "{}: {:.2f} s through {} ({:g} um at {:g} Hz full scale, {}), "
-        "contact {:g} cm2\n",
-        o.input, seconds, a.name, a.displacement_um, a.reference_hz, a.dc ? "DC capable" : "no DC",
-        o.contact_area_cm2);
+        "{}: {:.2f} s through {} ({}, {:g} um at {:g} Hz full scale, {}), contact {:g} cm2\n",
+        o.input, seconds, a.name, type_name(a.type), a.displacement_um, a.reference_hz,
+        a.dc ? "DC capable" : "no DC", o.contact_area_cm2);
     std::cout << fmt::format("{:<9}{:<11}{:>10}{:>11}{:>14}\n", "channel", "sensation", "max_dB_SL",
                              "engaged_%", "median_dB_SL");
     const auto row = [](std::string_view name, std::string_view sensation,
