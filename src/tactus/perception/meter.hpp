@@ -9,12 +9,13 @@
 // steady sine of peak displacement A reads 20 log10 A - T_c(f). P integrates energy over 1 s
 // (temporal summation, -3 dB per doubling of duration up to ~1 s: Verrillo 1965 [recalled],
 // Gescheider 1976): its frame values are averaged over the last second, so a burst of d < 1 s
-// reads 10 log10(d / 1 s) lower, which is P's duration law; NP channels do not sum over time and
-// read their window alone (bursts shorter than ~3/8 of the window read low). Windows resolve
-// each channel's lowest frequencies: 0.4 s (P, NPI: 2.5 Hz bins), 0.08 s (NPII, from 100 Hz),
-// 5.12 s (NPIII, from 0.4 Hz). Readings are causal, every 10 ms; a static offset reads 3 dB high
-// (its peak equals its RMS). Sensation levels are dB SL, 0 = below threshold (not engaged); the
-// combined column is perception::combined_sensation_db (Hollins & Roy 1996).
+// reads 10 log10(d / 1 s) lower, which is P's duration law (applied in full at every frequency
+// and contact area, where threshold.hpp weakens it below 80 Hz and for small contacts); NP channels
+// do not sum over time and read their window alone (bursts shorter than ~3/8 of the window read
+// low). Windows resolve each channel's lowest frequencies: 0.4 s (P, NPI: 2.5 Hz bins), 0.08 s
+// (NPII, from 100 Hz), 5.12 s (NPIII, from 0.4 Hz). Readings are causal, every 10 ms; a static
+// offset reads 3 dB high (its peak equals its RMS). Sensation levels are dB SL, 0 = below threshold
+// (not engaged); the combined column is perception::combined_sensation_db (Hollins & Roy 1996).
 #pragma once
 
 #include <array>
