@@ -15,8 +15,9 @@ build: setup
 
 demo: build
 	mkdir -p out
-	$(TACTUS) render $(AMEN) -o out/amen.vibration.wav
-	$(TACTUS) analyze $(AMEN) -o out/amen.features.csv
+	$(TACTUS) render $(AMEN) -o out/amen.vibration.wav --actuator voice-coil
+	$(TACTUS) analyze $(AMEN) -o out/amen.features.csv --actuator voice-coil
+	$(TACTUS) meter out/amen.vibration.wav -o out/amen.meter.csv
 
 test: build
 	ctest --preset release -j $(JOBS)

@@ -1,33 +1,44 @@
-// tactus analyze IN [-o FILE.csv|FILE.json]: every analysis frame's features and the vibration
-// parameters mapped from them. Streams: constant memory for any length.
+// tactus analyze IN [-o FILE.csv|FILE.json]: every analysis frame's features, the vibration
+// parameters mapped from them, and the sensation level each channel of touch receives from the
+// vibration through an actuator (perception/meter.hpp; readings are causal, every 10 ms).
+// Streams: constant memory for any length.
 #include <fmt/format.h>
 
+#include <array>
+#include <cmath>
+#include <deque>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
+#include "actuator_option.hpp"
 #include "commands.hpp"
 #include "common.hpp"
 #include "pipeline_options.hpp"
 #include "tactus/io/text_output.hpp"
+#include "tactus/perception/meter.hpp"
 
 namespace tactus::cli {
 namespace {
 
 struct AnalyzeOptions {
-    std::string input, output, format;
+    std::string input, output, format, actuator;
     PipelineOptions pipeline;
 };
 
 constexpr const char* kColumns[] = {
-    "time_s",    "loudness_db", "brightness_hz", "noisiness",    "pitch_hz",   "pitch_confidence",
-    "onset_odf", "onset",       "onset_time_s",  "frequency_hz", "amplitude",  "square_mix",
-    "trigger",   "attack_ms",   "decay_ms",      "sustain",      "flutter_hz", "flutter_amplitude",
-    "pressure"};
+    "time_s",    "loudness_db", "brightness_hz", "noisiness",    "pitch_hz",    "pitch_confidence",
+    "onset_odf", "onset",       "onset_time_s",  "frequency_hz", "amplitude",   "square_mix",
+    "trigger",   "attack_ms",   "decay_ms",      "sustain",      "flutter_hz",  "flutter_amplitude",
+    "pressure",  "P_sl_db",     "NPI_sl_db",     "NPII_sl_db",   "NPIII_sl_db", "combined_sl_db"};
+constexpr size_t kMeterColumns = 5;
+using Row = std::array<double, std::size(kColumns)>;
 
+// Holds each frame's row until the meter has seen the vibration up to the frame's time.
 class FrameWriter final : public FrameObserver {
   public:
-    FrameWriter(std::ostream& out, bool json, const Engine& engine)
-        : out_(out), json_(json), engine_(engine) {
+    FrameWriter(std::ostream& out, bool json, const Engine& engine, ActuatorProfile actuator)
+        : out_(out), json_(json), engine_(engine), actuator_(std::move(actuator)) {
         if (json_) {
             out_ << "[\n";
         } else {
@@ -35,32 +46,55 @@ class FrameWriter final : public FrameObserver {
             out_ << '\n';
         }
     }
+    void start(double sample_rate_hz) {
+        meter_.prepare(
+            sample_rate_hz, [this](double f) { return actuator_.displacement_um_at(f); },
+            engine_.settings()[P::perception_contact_area_cm2]);
+    }
+    void vibration(const float* samples, int count) {
+        meter_.write(samples, count,
+                     [this](const perception::MeterReading& r) { readings_.push_back(r); });
+        metered_samples_ += count;
+        write_rows_up_to(static_cast<double>(metered_samples_));
+    }
     void finish() {
+        write_rows_up_to(INFINITY);
         if (json_) out_ << "\n]\n";
     }
 
     void on_frame(const Features& f, const ControlFrame& c) noexcept override {
         const double sample_rate_hz = engine_.sample_rate_hz();
-        const double values[] = {f.frame_end_sample / sample_rate_hz,
-                                 f.loudness_db,
-                                 f.brightness_hz,
-                                 f.noisiness,
-                                 f.pitch_hz,
-                                 f.pitch_confidence,
-                                 f.onset_odf,
-                                 f.onset ? 1.0 : 0.0,
-                                 f.onset ? f.onset_sample / sample_rate_hz : 0.0,
-                                 c.frequency_hz,
-                                 c.amplitude,
-                                 c.square_mix,
-                                 c.trigger ? 1.0 : 0.0,
-                                 c.attack_ms,
-                                 c.decay_ms,
-                                 c.sustain,
-                                 c.flutter_hz,
-                                 c.flutter_amplitude,
-                                 c.pressure};
+        pending_.push_back({f.frame_end_sample / sample_rate_hz, f.loudness_db, f.brightness_hz,
+                            f.noisiness, f.pitch_hz, f.pitch_confidence, f.onset_odf,
+                            f.onset ? 1.0 : 0.0, f.onset ? f.onset_sample / sample_rate_hz : 0.0,
+                            c.frequency_hz, c.amplitude, c.square_mix, c.trigger ? 1.0 : 0.0,
+                            c.attack_ms, c.decay_ms, c.sustain, c.flutter_hz, c.flutter_amplitude,
+                            c.pressure});
         onsets_ += f.onset;
+    }
+    size_t rows() const { return rows_; }
+    size_t onsets() const { return onsets_; }
+
+  private:
+    // Writes the pending rows whose time (in samples) the meter has reached, each with the
+    // latest reading at or before it.
+    void write_rows_up_to(double samples) {
+        const double sample_rate_hz = engine_.sample_rate_hz();
+        while (!pending_.empty() && pending_.front()[0] * sample_rate_hz <= samples + 0.5) {
+            Row values = pending_.front();
+            pending_.pop_front();
+            while (!readings_.empty() && readings_.front().time_s <= values[0] + 1e-9) {
+                current_ = readings_.front();
+                readings_.pop_front();
+            }
+            const size_t first = values.size() - kMeterColumns;
+            for (size_t i = 0; i < current_.level_db.size(); ++i)
+                values[first + i] = current_.level_db[i];
+            values[first + current_.level_db.size()] = current_.combined_db;
+            write_row(values);
+        }
+    }
+    void write_row(const Row& values) {
         if (json_) {
             nlohmann::ordered_json row;
             for (size_t i = 0; i < std::size(kColumns); ++i) row[kColumns[i]] = values[i];
@@ -72,13 +106,16 @@ class FrameWriter final : public FrameObserver {
         }
         ++rows_;
     }
-    size_t rows() const { return rows_; }
-    size_t onsets() const { return onsets_; }
 
-  private:
     std::ostream& out_;
     bool json_;
     const Engine& engine_;
+    ActuatorProfile actuator_;
+    perception::SensationMeter meter_;
+    std::deque<Row> pending_;
+    std::deque<perception::MeterReading> readings_;
+    perception::MeterReading current_;
+    int64_t metered_samples_ = 0;
     size_t rows_ = 0, onsets_ = 0;
 };
 
@@ -90,10 +127,19 @@ void analyze(const AnalyzeOptions& o) {
     if (!o.output.empty() && o.output != "-") refuse_overwriting_input(o.input, o.output);
 
     Engine engine(settings);
+    // The vibration drives the named actuator (compensated, as render does) or, by default, is
+    // metered through the default one as rendered.
+    std::optional<ActuatorProfile> actuator;
+    if (!o.actuator.empty()) actuator = load_actuator_for(o.actuator, settings);
+    engine.set_actuator(actuator);
     TextOutput output(out_path);
-    FrameWriter writer(output.stream(), format == "json", engine);
+    FrameWriter writer(output.stream(), format == "json", engine,
+                       actuator ? *actuator : load_actuator(resolve_actuator(kDefaultActuator)));
     engine.set_observer(&writer);
-    run_with_progress(o.input, engine, "analyze");
+    run_with_progress(
+        o.input, engine, "analyze",
+        {.on_output = [&](const float* v, int n) { writer.vibration(v, n); },
+         .on_start = [&](double sample_rate_hz, int) { writer.start(sample_rate_hz); }});
     writer.finish();
     output.commit();
     if (!o.output.empty() && o.output != "-")
@@ -115,6 +161,9 @@ void add_analyze(CLI::App& app) {
                         "FILE.csv or FILE.json (default: CSV on stdout)");
     command->add_option("--format", options->format, "csv or json (default: from -o's extension)")
         ->check(CLI::IsMember({"csv", "json"}));
+    add_actuator_option(*command, options->actuator,
+                        "actuator profile (name or FILE.toml): compensate for it as render does "
+                        "and meter through it (default: meter through voice-coil)");
     options->pipeline.add_to(*command);
     command->callback([options] { analyze(*options); });
 }

@@ -10,5 +10,6 @@ void add_analyze(CLI::App& app);
 void add_onsets(CLI::App& app);
 void add_presets(CLI::App& app);
 void add_placement(CLI::App& app);
+void add_meter(CLI::App& app);
 
 }  // namespace tactus::cli

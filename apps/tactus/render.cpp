@@ -9,6 +9,7 @@
 #include <optional>
 #include <thread>
 
+#include "actuator_option.hpp"
 #include "batch.hpp"
 #include "commands.hpp"
 #include "common.hpp"
@@ -28,6 +29,7 @@ struct RenderOptions {
     std::string output, output_dir;
     int channels = 1;
     int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    std::string actuator;
     PipelineOptions pipeline;
 };
 
@@ -68,9 +70,11 @@ std::vector<Job> plan(const RenderOptions& o) {
 }
 
 // Renders one file; returns its one-line summary. On failure the output is not written.
-std::string render_one(const Job& job, const Settings& settings, int channels,
+std::string render_one(const Job& job, const Settings& settings,
+                       const std::optional<ActuatorProfile>& actuator, int channels,
                        const RunCallbacks& progress) {
     Engine engine(settings);
+    engine.set_actuator(actuator);
     OnsetCounter counter;
     engine.set_observer(&counter);
     std::optional<AudioWriter> writer;  // opened at the input's sample rate
@@ -104,6 +108,8 @@ int64_t total_frames(const std::vector<Job>& jobs) {
 void render(const RenderOptions& o) {
     const Settings settings = o.pipeline.resolve();
     const std::vector<Job> jobs = plan(o);
+    std::optional<ActuatorProfile> actuator;
+    if (!o.actuator.empty()) actuator = load_actuator_for(o.actuator, settings);
     if (std::error_code error; !o.output_dir.empty() && !fs::is_directory(o.output_dir) &&
                                !fs::create_directories(o.output_dir, error))
         throw std::runtime_error(fmt::format("{}: cannot create the output directory: {}",
@@ -118,7 +124,7 @@ void render(const RenderOptions& o) {
                 add_frames(done - reported);
                 reported = done;
             }};
-            summaries[i] = render_one(jobs[i], settings, o.channels, progress);
+            summaries[i] = render_one(jobs[i], settings, actuator, o.channels, progress);
         });
     size_t failed = 0;
     for (size_t i = 0; i < jobs.size(); ++i) {
@@ -160,6 +166,9 @@ void add_render(CLI::App& app) {
     command->add_option("--channels,-c", options->channels, "identical actuator channels")
         ->check(CLI::Range(1, 64))
         ->capture_default_str();
+    add_actuator_option(*command, options->actuator,
+                        "actuator profile (name in actuators/ or FILE.toml): compensate its "
+                        "response, respect its max drive, warn about what it cannot do");
     options->pipeline.add_to(*command);
     command->callback([options] { render(*options); });
 }

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -67,7 +68,8 @@ std::vector<std::string> names_in(const fs::path& dir) {
 }
 
 TEST_F(Cli, HelpEverywhere) {
-    for (const char* command : {"", "render ", "analyze ", "onsets ", "presets ", "placement "}) {
+    for (const char* command :
+         {"", "render ", "analyze ", "onsets ", "presets ", "placement ", "meter "}) {
         const Result r = run(std::string(command) + "--help");
         EXPECT_EQ(r.exit_code, 0) << command;
         EXPECT_NE(r.out.find("Usage"), std::string::npos) << command;
@@ -262,6 +264,110 @@ TEST_F(Cli, BatchRefusesAmbiguousOutputs) {
     EXPECT_NE(run("render " + kAmen).exit_code, 0);  // neither -o nor -O
     EXPECT_FALSE(fs::exists(out));
     EXPECT_FALSE(fs::exists(dir_ / "x.wav"));
+}
+
+// ---- Perception: tactus meter, --actuator ----
+
+TEST_F(Cli, MeterAmenThroughTheVoiceCoil) {
+    const fs::path vibration = dir_ / "amen.wav", csv = dir_ / "amen.meter.csv";
+    const Result render =
+        run("render " + kAmen + " -o " + vibration.string() + " --actuator voice-coil");
+    ASSERT_EQ(render.exit_code, 0) << render.err;
+    EXPECT_EQ(render.err.find("warning"), std::string::npos) << render.err;
+    const Result r = run("meter " + vibration.string() + " -o " + csv.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    // Summary rows: channel, sensation, max dB SL, engaged %, median dB SL (or "not engaged").
+    std::istringstream lines(r.out);
+    std::string line;
+    std::map<std::string, std::pair<double, std::string>> rows;
+    while (std::getline(lines, line)) {
+        std::istringstream words(line);
+        std::string channel, sensation, max_db, engaged, median;
+        words >> channel >> sensation >> max_db >> engaged;
+        std::getline(words, median);
+        if (channel == "P" || channel == "NPI" || channel == "NPII" || channel == "NPIII")
+            rows[channel] = {std::stod(max_db), median};
+    }
+    ASSERT_EQ(rows.size(), 4u) << r.out;
+    EXPECT_GE(rows["P"].first, 10.0) << r.out;     // the hits engage P
+    EXPECT_EQ(rows["NPIII"].first, 0.0) << r.out;  // a voice coil holds no offset
+    EXPECT_NE(rows["NPIII"].second.find("not engaged"), std::string::npos);
+    std::ifstream f(csv);
+    std::string header;
+    std::getline(f, header);
+    EXPECT_EQ(header, "time_s,P_sl_db,NPI_sl_db,NPII_sl_db,NPIII_sl_db,combined_sl_db");
+    int count = 0;
+    while (std::getline(f, line)) ++count;
+    const double seconds = static_cast<double>(info_of(kAmen).frames) / info_of(kAmen).samplerate;
+    EXPECT_NEAR(count, seconds / 0.01 + 40, 2);  // every 10 ms, and 0.4 s of tail
+    for (const auto& entry : fs::directory_iterator(dir_))
+        EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos);
+}
+
+TEST_F(Cli, ActuatorWarningsAndErrors) {
+    const fs::path out = dir_ / "out.wav";
+    const Result lra = run("render " + kAmen + " -o " + out.string() + " --actuator lra-175");
+    ASSERT_EQ(lra.exit_code, 0) << lra.err;
+    EXPECT_NE(lra.err.find("warning: lra-175: the preset asks for 40 Hz"), std::string::npos)
+        << lra.err;
+    fs::remove(out);
+
+    const Result unknown = run("render " + kAmen + " -o " + out.string() + " --actuator nonesuch");
+    EXPECT_NE(unknown.exit_code, 0);
+    EXPECT_NE(unknown.err.find("no actuator named 'nonesuch'"), std::string::npos) << unknown.err;
+    EXPECT_EQ(std::count(unknown.err.begin(), unknown.err.end(), '\n'), 1);
+    EXPECT_FALSE(fs::exists(out));
+
+    const fs::path bad = dir_ / "bad.toml";
+    std::ofstream(bad) << "displacement_um = 10\nreference_hz = 100\nband_low_hz = 20\n"
+                          "band_high_hz = 500\nq = 3\n";
+    const Result invalid = run("meter " + kAmen + " --actuator " + bad.string());
+    EXPECT_NE(invalid.exit_code, 0);
+    EXPECT_NE(invalid.err.find(bad.string() + ":5:5: q: unknown key"), std::string::npos)
+        << invalid.err;
+
+    fs::copy_file(kAmen, dir_ / "in.flac");
+    EXPECT_NE(run("meter " + (dir_ / "in.flac").string() + " -o " + (dir_ / "in.flac").string())
+                  .exit_code,
+              0);
+    EXPECT_EQ(fs::file_size(dir_ / "in.flac"), fs::file_size(kAmen));
+}
+
+// Split a CSV line into numbers.
+std::vector<double> numbers(const std::string& line) {
+    std::vector<double> v;
+    std::istringstream s(line);
+    std::string cell;
+    while (std::getline(s, cell, ',')) v.push_back(std::stod(cell));
+    return v;
+}
+
+TEST_F(Cli, AnalyzeSensationColumnsAgreeWithTheMeter) {
+    const Result csv = run("analyze " + kAmen + " --actuator voice-coil");
+    ASSERT_EQ(csv.exit_code, 0) << csv.err;
+    std::istringstream rows(csv.out);
+    std::string header, line;
+    std::getline(rows, header);
+    EXPECT_NE(header.find(",P_sl_db,NPI_sl_db,NPII_sl_db,NPIII_sl_db,combined_sl_db"),
+              std::string::npos)
+        << header;
+    // The row just after 3 s carries the meter's reading at 3.00 s for the same vibration.
+    std::vector<double> analyzed;
+    while (std::getline(rows, line))
+        if (analyzed = numbers(line); analyzed[0] >= 3.0) break;
+    const fs::path vibration = dir_ / "amen.wav", meter_csv = dir_ / "meter.csv";
+    ASSERT_EQ(
+        run("render " + kAmen + " -o " + vibration.string() + " --actuator voice-coil").exit_code,
+        0);
+    ASSERT_EQ(run("meter " + vibration.string() + " -o " + meter_csv.string()).exit_code, 0);
+    std::ifstream f(meter_csv);
+    std::vector<double> metered;
+    while (std::getline(f, line))
+        if (line[0] != 't' && (metered = numbers(line))[0] >= 3.0 - 1e-9) break;
+    ASSERT_EQ(metered.size(), 6u);
+    EXPECT_GT(metered[1], 10.0);  // P engaged
+    for (size_t c = 0; c < 5; ++c)
+        EXPECT_NEAR(analyzed[analyzed.size() - 5 + c], metered[1 + c], 0.006) << c;
 }
 
 }  // namespace

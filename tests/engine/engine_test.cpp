@@ -21,6 +21,7 @@
 
 #include "support/signals.hpp"
 #include "support/watchdog.hpp"
+#include "tactus/actuator/profile.hpp"
 #include "tactus/core/preset.hpp"
 #include "tactus/core/units.hpp"
 #include "tactus/io/audio_reader.hpp"
@@ -325,6 +326,32 @@ TEST(Engine, ComponentsThatAreOffLeaveTheOutputBitIdentical) {
     EXPECT_EQ(first_difference(render(drums.audio, fs, {512}, off), reference), -1);
     // And switched on, they do change it.
     EXPECT_NE(first_difference(render(drums.audio, fs, {512}, four_channel(false)), reference), -1);
+}
+
+// An actuator profile decides whether the NPIII pressure is felt: its `dc` replaces actuator.dc,
+// so the voice coil (AC-coupled) drops the pressure even when the setting asks for it.
+TEST(Engine, ActuatorProfileDecidesThePressure) {
+    const double fs = 48000;
+    const test::DrumSignal drums = test::drum_pattern(fs, 3.0, 4);
+    const auto mean_with = [&](std::optional<ActuatorProfile> actuator) {
+        Engine engine(four_channel(true));
+        engine.set_actuator(std::move(actuator));
+        engine.prepare(fs, 512);
+        std::vector<float> y(drums.audio.size());
+        for (size_t done = 0; done < y.size(); done += 512)
+            engine.process(drums.audio.data() + done, y.data() + done,
+                           static_cast<int>(std::min<size_t>(512, y.size() - done)));
+        double sum = 0;
+        for (float v : y) sum += v;
+        return sum / static_cast<double>(y.size());
+    };
+    const ActuatorProfile holds_offset = parse_actuator(
+        "displacement_um = 100\nreference_hz = 10\ndc = true\nband_low_hz = 0\n"
+        "band_high_hz = 1000\n",
+        "dc.toml");
+    EXPECT_GT(mean_with(std::nullopt), 0.02);  // actuator.dc = on in the settings
+    EXPECT_GT(mean_with(holds_offset), 0.02);
+    EXPECT_LT(std::abs(mean_with(load_actuator(resolve_actuator("voice-coil")))), 0.005);
 }
 
 }  // namespace

@@ -2,7 +2,8 @@
 // follows target_db() within 1 dB over the P channel's 40-500 Hz at several sample rates (the
 // largest deviation is printed), magnitude_db() describes what process() does, the filter never
 // boosts in the band, the target is the inverted P-threshold curve, scaled by strength and
-// bounded by range_db.
+// bounded by range_db; designed for a contact area or an equal-sensation level, the measured
+// response matches the model computed here from the perception functions within 1 dB (printed).
 #include "tactus/post/flattening_filter.hpp"
 
 #include <gtest/gtest.h>
@@ -12,6 +13,7 @@
 #include <iostream>
 
 #include "support/signals.hpp"
+#include "tactus/perception/sensation.hpp"
 #include "tactus/perception/threshold.hpp"
 
 namespace tactus {
@@ -84,6 +86,75 @@ TEST(FlatteningFilter, TargetIsTheInvertedThresholdCurve) {
     filter.prepare(48000.0, 20.0, 1000.0, 1.0, 12.0);
     for (double f = 20.0; f <= 1000.0; f *= 1.1) EXPECT_GE(filter.target_db(f), -12.0 - 1e-9);
     EXPECT_NEAR(filter.target_db(250.0), -12.0, 1e-9);
+}
+
+// The model's target for a contact area and a level above threshold, computed here from the
+// perception functions: the P threshold curve (held below 40 Hz), relief scaled by the contour
+// fraction, inverted so the least sensitive frequency is at 0 dB.
+double model_target_db(double f, double area_cm2, double level_db, double range_db) {
+    const auto contour = [&](double g) {
+        return perception::threshold_db(perception::Channel::P, std::max(g, 40.0),
+                                        {.contact_area_cm2 = area_cm2});
+    };
+    double highest = -1e9;
+    for (double g = 20.0; g <= 1000.0; g *= 1.001) highest = std::max(highest, contour(g));
+    highest = std::max(highest, contour(1000.0));
+    return -std::min((highest - contour(f)) * perception::contour_relief_fraction(level_db),
+                     range_db);
+}
+
+TEST(FlatteningFilter, DesignedFromTheModelForAreaAndLevel) {
+    const double fs = 48000.0;
+    double worst = 0.0;
+    for (double area : {0.02, 0.5, 2.9}) {
+        for (double level : {0.0, 20.0, 40.0}) {
+            const FlatteningDesign d{.range_db = 40.0, .contact_area_cm2 = area, .level_db = level};
+            FlatteningFilter design;
+            design.prepare(fs, 20.0, 1000.0, d);
+            for (int i = 0; i <= 24; ++i) {
+                const double f = 40.0 * std::pow(500.0 / 40.0, i / 24.0);
+                EXPECT_NEAR(design.target_db(f), model_target_db(f, area, level, 40.0), 1e-3)
+                    << f << " Hz, " << area << " cm2, " << level << " dB SL";
+                FlatteningFilter filter;
+                filter.prepare(fs, 20.0, 1000.0, d);
+                const double measured =
+                    test::measured_gain_db([&](float* x, int n) { filter.process(x, n); }, f, fs);
+                const double deviation = std::abs(measured - model_target_db(f, area, level, 40.0));
+                worst = std::max(worst, deviation);
+                EXPECT_LE(deviation, 1.0) << f << " Hz, " << area << " cm2, " << level << " dB SL";
+            }
+        }
+    }
+    std::cout << "[ flatten  ] model designs (0.02/0.5/2.9 cm2 x 0/20/40 dB SL): max |measured - "
+                 "model| over 40-500 Hz = "
+              << worst << " dB\n";
+}
+
+TEST(FlatteningFilter, ContoursFlattenAsLevelRises) {
+    // Relief 40 Hz vs 250 Hz: the full threshold relief at threshold, less at higher levels.
+    double previous = 1e9;
+    for (double level : {0.0, 20.0, 40.0, 60.0}) {
+        FlatteningFilter filter;
+        filter.prepare(48000.0, 20.0, 1000.0, {.range_db = 40.0, .level_db = level});
+        const double relief = filter.target_db(40.0) - filter.target_db(250.0);
+        EXPECT_LT(relief, previous) << level;
+        previous = relief;
+    }
+    FlatteningFilter threshold;
+    threshold.prepare(48000.0, 20.0, 1000.0, {.range_db = 40.0});
+    EXPECT_NEAR(threshold.target_db(40.0) - threshold.target_db(250.0),
+                perception::p_threshold_db(40.0) - perception::p_threshold_db(250.0), 1e-9);
+}
+
+TEST(FlatteningFilter, SmallerContactFlattensLessBelow80Hz) {
+    // Spatial summation is absent at 40 Hz and full from 80 Hz, so a small contact raises the
+    // threshold at 250 Hz but not at 40 Hz: less relief to compensate.
+    FlatteningFilter large, small;
+    large.prepare(48000.0, 20.0, 1000.0, {.range_db = 40.0});
+    small.prepare(48000.0, 20.0, 1000.0, {.range_db = 40.0, .contact_area_cm2 = 0.1});
+    const double large_relief = large.target_db(40.0) - large.target_db(250.0);
+    const double small_relief = small.target_db(40.0) - small.target_db(250.0);
+    EXPECT_NEAR(large_relief - small_relief, 3.0 * std::log2(2.9 / 0.1), 1e-6);
 }
 
 TEST(FlatteningFilter, ZeroStrengthIsFlat) {

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -262,6 +263,66 @@ TEST(PostChain, ComponentsThatAreOffChangeNothing) {
     ASSERT_GT(test::peak(a), 0.05);
     for (size_t i = 0; i < a.size(); ++i)
         ASSERT_EQ(std::bit_cast<uint32_t>(a[i]), std::bit_cast<uint32_t>(b[i])) << i;
+}
+
+TEST(PostChain, WithoutAnActuatorItIsExactlyThePapersFourStages) {
+    // Bit for bit: band-limit, flattening, limiter, band-limit and the final clip run by hand.
+    const double fs = 44100;
+    const Settings s;
+    BandLimit first, last;
+    first.prepare(fs, s[P::post_band_low_hz], s[P::post_band_high_hz], PostChain::kFirstBandOrder);
+    last.prepare(fs, s[P::post_band_low_hz], s[P::post_band_high_hz], PostChain::kLastBandOrder);
+    FlatteningFilter flatten;
+    flatten.prepare(
+        fs, s[P::post_band_low_hz], s[P::post_band_high_hz],
+        {.strength = s[P::post_flatten_strength], .range_db = s[P::post_flatten_range_db]});
+    PeakLimiter limiter;
+    limiter.prepare(fs, s[P::post_lookahead_ms], s[P::post_release_ms], s[P::post_drive_db],
+                    s[P::post_limiter_threshold_db],
+                    db_to_gain(s[P::post_ceiling_db] - PostChain::kRingingMarginDb));
+    test::DrumSignal drums = test::drum_pattern(fs, 3.0, 5);
+    std::vector<float> by_hand = drums.audio, chained = drums.audio;
+    const int n = static_cast<int>(by_hand.size());
+    first.process(by_hand.data(), n);
+    flatten.process(by_hand.data(), n);
+    limiter.process(by_hand.data(), n);
+    last.process(by_hand.data(), n);
+    for (auto& v : by_hand) v = std::clamp(v, -1.0f, 1.0f);
+    PostChain chain;
+    chain.prepare(fs, s, nullptr);
+    chain.process(chained.data(), n);
+    EXPECT_EQ(chained, by_hand);
+}
+
+TEST(PostChain, ActuatorCompensationAndMaxDrive) {
+    const double fs = 48000;
+    const ActuatorProfile lra = load_actuator(resolve_actuator("lra-175"));
+    Settings settings;
+    settings.set(P::post_drive_db, 20);
+    for (auto& [name, input] : loud_inputs(fs)) {
+        PostChain chain;
+        chain.prepare(fs, settings, &lra);
+        EXPECT_DOUBLE_EQ(chain.ceiling(), lra.max_drive);
+        std::vector<float> y = input;
+        chain.process(y.data(), static_cast<int>(y.size()));
+        EXPECT_LE(test::peak(y), static_cast<float>(lra.max_drive)) << name;
+    }
+    // Below the limiter threshold the compensation adds its own response, nothing else.
+    const ActuatorProfile voice_coil = load_actuator(resolve_actuator("voice-coil"));
+    Settings quiet;
+    quiet.set(P::post_drive_db, 0);
+    PostChain plain, compensated;
+    plain.prepare(fs, quiet);
+    compensated.prepare(fs, quiet, &voice_coil);
+    ActuatorCompensation compensation;
+    compensation.prepare(fs, voice_coil);
+    for (double f : {40.0, 200.0, 600.0}) {
+        const auto gain = [&](PostChain& chain) {
+            return test::measured_gain_db([&](float* x, int n) { chain.process(x, n); }, f, fs, 1.0,
+                                          0.5, 0.02);
+        };
+        EXPECT_NEAR(gain(compensated) - gain(plain), compensation.magnitude_db(f), 0.05) << f;
+    }
 }
 
 }  // namespace

@@ -15,14 +15,17 @@
 #include <cstddef>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <mutex>
 #include <new>
+#include <optional>
 #include <vector>
 
 #include "support/signals.hpp"
 #include "tactus/core/preset.hpp"
 #include "tactus/engine/engine.hpp"
+#include "tactus/perception/meter.hpp"
 
 extern "C" {
 void* __libc_malloc(size_t size);
@@ -294,10 +297,12 @@ std::vector<float> varied_input(double fs) {
     return x;
 }
 
-void expect_process_is_real_time_safe(double fs, const Settings& settings) {
+void expect_process_is_real_time_safe(double fs, const Settings& settings,
+                                      std::optional<ActuatorProfile> actuator = std::nullopt) {
     const std::vector<float> x = varied_input(fs);
     std::vector<float> y(x.size());
     Engine engine(settings);
+    engine.set_actuator(std::move(actuator));
     engine.prepare(fs, Engine::kMaxBlock);  // may allocate: outside the guard
     const int sizes[] = {1, 7, 64, 480, 4096, 13, 1024, 139, 2};
     reset_counts();
@@ -342,6 +347,31 @@ TEST(RealTime, FourChannelComponents) {
     s.set(P::post_flutter_peak_db, 0);
     s.set(P::pressure_steps, 0);
     expect_process_is_real_time_safe(96000, s);
+}
+
+TEST(RealTime, WithActuatorCompensation) {
+    for (const char* name : {"voice-coil", "lra-175", "erm"})
+        expect_process_is_real_time_safe(48000, Settings{}, load_actuator(resolve_actuator(name)));
+}
+
+// The sensation meter is an offline tool, but after prepare() it does not allocate either.
+TEST(RealTime, SensationMeterWriteNeitherAllocatesNorLocks) {
+    const std::vector<float> x = varied_input(48000);
+    perception::SensationMeter meter;
+    meter.prepare(
+        48000, [](double f) { return f > 0 ? 10.0 : 0.0; }, 2.9);
+    int readings = 0;
+    const std::function<void(const perception::MeterReading&)> count =
+        [&](const perception::MeterReading&) { ++readings; };
+    reset_counts();
+    for (size_t done = 0; done < x.size(); done += 1000) {
+        Guard guard;
+        meter.write(x.data() + done, static_cast<int>(std::min<size_t>(1000, x.size() - done)),
+                    count);
+    }
+    EXPECT_EQ(g_allocator_calls.load(), 0);
+    EXPECT_EQ(g_mutex_locks.load(), 0);
+    EXPECT_GT(readings, 1000);
 }
 
 }  // namespace

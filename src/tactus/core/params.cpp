@@ -148,6 +148,9 @@ const ParamSpec kTable[] = {
      "fraction of the P-channel threshold curve the flattening filter compensates"},
     {"post.flatten_range_db", "dB", number, 0, 40, 30, lin,
      "largest level difference the flattening filter applies across the band"},
+    {"post.flatten_level_db", "dB", number, 0, 70, 0, lin,
+     "sensation level whose equal-sensation contour is flattened (0 = threshold curve; contours "
+     "flatten as level rises)"},
     {"post.drive_db", "dB", number, -40, 40, 12, lin, "gain into the peak limiter"},
     {"post.limiter_threshold_db", "dB", number, -40, 0, -6, lin,
      "level, relative to the ceiling, where the limiter's soft knee starts"},
@@ -155,6 +158,9 @@ const ParamSpec kTable[] = {
      "hard ceiling of the output peak, dB full scale"},
     {"post.lookahead_ms", "ms", number, 0.1, 20, 1.5, log, "limiter look-ahead (adds latency)"},
     {"post.release_ms", "ms", number, 1, 2000, 80, log, "limiter gain recovery time constant"},
+    // Perception model (perception.md): conditions the thresholds depend on.
+    {"perception.contact_area_cm2", "cm2", number, 0.005, 20, 2.9, log,
+     "skin contact area of the actuator (P channel spatial summation; 2.9 = reference curves)"},
 };
 // clang-format on
 

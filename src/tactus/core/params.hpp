@@ -87,11 +87,13 @@ enum class P : int {
     post_flutter_peak_db,
     post_flatten_strength,
     post_flatten_range_db,
+    post_flatten_level_db,
     post_drive_db,
     post_limiter_threshold_db,
     post_ceiling_db,
     post_lookahead_ms,
     post_release_ms,
+    perception_contact_area_cm2,
     count
 };
 

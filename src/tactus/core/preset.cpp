@@ -4,8 +4,9 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <stdexcept>
+
+#include "tactus/core/search_path.hpp"
 
 #ifndef TACTUS_PRESET_DIR
 #define TACTUS_PRESET_DIR "presets"
@@ -67,18 +68,7 @@ std::string description_of(const fs::path& path) {
 }  // namespace
 
 std::vector<fs::path> preset_search_path() {
-    std::vector<fs::path> dirs;
-    if (const char* env = std::getenv("TACTUS_PRESET_PATH")) {
-        std::string_view rest = env;
-        while (!rest.empty()) {
-            const size_t colon = rest.find(':');
-            if (colon != 0) dirs.emplace_back(rest.substr(0, colon));
-            if (colon == std::string_view::npos) break;
-            rest.remove_prefix(colon + 1);
-        }
-    }
-    dirs.emplace_back(TACTUS_PRESET_DIR);
-    return dirs;
+    return search_path("TACTUS_PRESET_PATH", TACTUS_PRESET_DIR);
 }
 
 std::vector<PresetInfo> list_presets() {
@@ -99,18 +89,7 @@ std::vector<PresetInfo> list_presets() {
 }
 
 fs::path resolve_preset(std::string_view name_or_path) {
-    const fs::path given(name_or_path);
-    if (given.extension() == ".toml" || given.has_parent_path()) {
-        if (!fs::is_regular_file(given))
-            throw std::runtime_error(fmt::format("preset file '{}' not found", name_or_path));
-        return given;
-    }
-    for (const auto& dir : preset_search_path())
-        if (fs::is_regular_file(dir / (given.string() + ".toml")))
-            return dir / (given.string() + ".toml");
-    std::string known;
-    for (const auto& p : list_presets()) known += (known.empty() ? "" : ", ") + p.name;
-    throw std::runtime_error(fmt::format("no preset named '{}' (known: {})", name_or_path, known));
+    return resolve_toml(name_or_path, preset_search_path(), "preset");
 }
 
 void apply_preset_text(Settings& settings, std::string_view toml_text, std::string_view origin) {

@@ -10,6 +10,11 @@
 
 namespace tactus {
 
+void Engine::set_actuator(std::optional<ActuatorProfile> actuator) {
+    if (actuator) settings_.set(P::actuator_dc, actuator->dc ? 1.0 : 0.0);
+    actuator_ = std::move(actuator);
+}
+
 void Engine::prepare(double sample_rate_hz, int max_block) {
     if (!(sample_rate_hz >= kMinSampleRateHz && sample_rate_hz <= kMaxSampleRateHz))
         throw std::invalid_argument(
@@ -22,7 +27,7 @@ void Engine::prepare(double sample_rate_hz, int max_block) {
     analyzer_.prepare(sample_rate_hz, settings_);
     mapper_.prepare(settings_, sample_rate_hz / analyzer_.hop_samples());
     voice_.prepare(sample_rate_hz, settings_[P::post_band_high_hz]);
-    post_.prepare(sample_rate_hz, settings_);
+    post_.prepare(sample_rate_hz, settings_, actuator_ ? &*actuator_ : nullptr);
     flutter_.assign(flutter_enabled(settings_) ? static_cast<size_t>(max_block) : 0, 0.0f);
     pressure_.assign(pressure_enabled(settings_) ? static_cast<size_t>(max_block) : 0, 0.0f);
     reset();

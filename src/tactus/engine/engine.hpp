@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "tactus/analysis/analyzer.hpp"
@@ -29,6 +31,10 @@ class Engine {
     static constexpr int kMaxBlock = 4096;
 
     explicit Engine(Settings settings = {}) : settings_(settings) {}
+    // The actuator the output drives (compensation, max drive, and whether it holds an offset:
+    // its `dc` replaces the actuator.dc setting, which gates the NPIII pressure); none by
+    // default. Before prepare.
+    void set_actuator(std::optional<ActuatorProfile> actuator);
 
     // May allocate. Throws std::invalid_argument for a sample rate outside 8-192 kHz.
     void prepare(double sample_rate_hz, int max_block);
@@ -45,6 +51,7 @@ class Engine {
 
   private:
     Settings settings_;
+    std::optional<ActuatorProfile> actuator_;
     double sample_rate_hz_ = 0;
     Analyzer analyzer_;
     Mapper mapper_;

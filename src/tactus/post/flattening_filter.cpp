@@ -1,130 +1,38 @@
 #include "tactus/post/flattening_filter.hpp"
 
 #include <algorithm>
-#include <cmath>
 
-#include "tactus/perception/threshold.hpp"
+#include "tactus/perception/sensation.hpp"
 
 namespace tactus {
 namespace {
-
-constexpr int kGridPoints = 96;
-constexpr double kSectionQ = 1.41;  // one-octave bandwidth at half-octave spacing: smooth sums
-constexpr int kIterations = 8;
-
-// Solves the n x n system a x = b in place (Gaussian elimination, partial pivoting).
-std::vector<double> solve(std::vector<double> a, std::vector<double> b, int n) {
-    for (int c = 0; c < n; ++c) {
-        int pivot = c;
-        for (int r = c + 1; r < n; ++r)
-            if (std::abs(a[r * n + c]) > std::abs(a[pivot * n + c])) pivot = r;
-        for (int k = 0; k < n; ++k) std::swap(a[c * n + k], a[pivot * n + k]);
-        std::swap(b[c], b[pivot]);
-        for (int r = c + 1; r < n; ++r) {
-            const double f = a[r * n + c] / a[c * n + c];
-            for (int k = c; k < n; ++k) a[r * n + k] -= f * a[c * n + k];
-            b[r] -= f * b[c];
-        }
-    }
-    std::vector<double> x(static_cast<size_t>(n));
-    for (int r = n - 1; r >= 0; --r) {
-        double s = b[r];
-        for (int k = r + 1; k < n; ++k) s -= a[r * n + k] * x[k];
-        x[r] = s / a[r * n + r];
-    }
-    return x;
-}
-
+constexpr double kScanRatio = 1.001;
 }  // namespace
 
+double FlatteningFilter::contour_db(double frequency_hz) const {
+    return perception::threshold_db(perception::Channel::P,
+                                    std::max(frequency_hz, perception::kPLowEdgeHz),
+                                    {.contact_area_cm2 = design_.contact_area_cm2});
+}
+
 double FlatteningFilter::target_db(double frequency_hz) const {
-    const double f = std::max(frequency_hz, perception::kPLowEdgeHz);
-    const double spread = reference_db_ - perception::p_threshold_db(f);
-    return -std::min(strength_ * spread, range_db_);
+    const double spread = (reference_db_ - contour_db(frequency_hz)) *
+                          perception::contour_relief_fraction(design_.level_db);
+    return -std::min(design_.strength * spread, design_.range_db);
 }
 
 void FlatteningFilter::prepare(double sample_rate_hz, double low_hz, double high_hz,
-                               double strength, double range_db) {
-    sample_rate_hz_ = sample_rate_hz;
-    strength_ = strength;
-    range_db_ = range_db;
-    low_hz_ = low_hz;
-    high_hz_ = std::min(high_hz, 0.45 * sample_rate_hz);
-
-    std::vector<double> grid(kGridPoints);
-    for (int i = 0; i < kGridPoints; ++i)
-        grid[i] = low_hz_ * std::pow(high_hz_ / low_hz_, i / (kGridPoints - 1.0));
+                               const FlatteningDesign& design) {
+    design_ = design;
+    // The contour's largest value in the band: on the fitting grid and, for a maximum between
+    // its points (small contacts: the summation ramp at 40-80 Hz), on a finer scan.
+    high_hz = FittedEq::highest_fitted_hz(high_hz, sample_rate_hz);
     reference_db_ = -1e9;
-    for (double f : grid)
-        reference_db_ = std::max(reference_db_,
-                                 perception::p_threshold_db(std::max(f, perception::kPLowEdgeHz)));
-
-    // Half-octave centres across the band.
-    std::vector<double> centres;
-    for (double f = low_hz_; f <= high_hz_ * 1.001 && centres.size() < kMaxSections;
-         f *= std::sqrt(2.0))
-        centres.push_back(f);
-    count_ = static_cast<int>(centres.size());
-    const int unknowns = count_ + 1;  // section gains and an overall gain, dB
-
-    std::vector<double> gains_db(static_cast<size_t>(unknowns), 0.0);
-    auto response_db = [&](const std::vector<double>& g, double f) {
-        double db = g[count_];
-        for (int s = 0; s < count_; ++s)
-            db += BiquadCoefficients::peaking(centres[s], kSectionQ, g[s], sample_rate_hz)
-                      .magnitude_db(f, sample_rate_hz);
-        return db;
-    };
-    constexpr double kProbeDb = 0.01, kDamping = 1e-4;
-    for (int iteration = 0; iteration < kIterations; ++iteration) {
-        std::vector<double> jacobian(static_cast<size_t>(kGridPoints * unknowns));
-        std::vector<double> error(kGridPoints);
-        for (int i = 0; i < kGridPoints; ++i) {
-            const double now = response_db(gains_db, grid[i]);
-            error[i] = target_db(grid[i]) - now;
-            for (int u = 0; u < unknowns; ++u) {
-                std::vector<double> probe = gains_db;
-                probe[u] += kProbeDb;
-                jacobian[i * unknowns + u] = (response_db(probe, grid[i]) - now) / kProbeDb;
-            }
-        }
-        std::vector<double> normal(static_cast<size_t>(unknowns * unknowns), 0.0);
-        std::vector<double> rhs(static_cast<size_t>(unknowns), 0.0);
-        for (int i = 0; i < kGridPoints; ++i)
-            for (int u = 0; u < unknowns; ++u) {
-                rhs[u] += jacobian[i * unknowns + u] * error[i];
-                for (int v = 0; v < unknowns; ++v)
-                    normal[u * unknowns + v] +=
-                        jacobian[i * unknowns + u] * jacobian[i * unknowns + v];
-            }
-        for (int u = 0; u < unknowns; ++u) normal[u * unknowns + u] += kDamping;
-        const std::vector<double> step = solve(normal, rhs, unknowns);
-        for (int u = 0; u < unknowns; ++u) gains_db[u] += step[u];
-    }
-    for (int s = 0; s < count_; ++s)
-        sections_[s].set(
-            BiquadCoefficients::peaking(centres[s], kSectionQ, gains_db[s], sample_rate_hz));
-    gain_ = db_to_gain(gains_db[count_]);
-    reset();
-}
-
-void FlatteningFilter::reset() noexcept {
-    for (auto& s : sections_) s.reset();
-}
-
-void FlatteningFilter::process(float* samples, int count) noexcept {
-    for (int i = 0; i < count; ++i) {
-        double x = samples[i] * gain_;
-        for (int s = 0; s < count_; ++s) x = sections_[s].process(x);
-        samples[i] = static_cast<float>(x);
-    }
-}
-
-double FlatteningFilter::magnitude_db(double frequency_hz) const {
-    double db = gain_to_db(gain_);
-    for (int s = 0; s < count_; ++s)
-        db += sections_[s].coefficients().magnitude_db(frequency_hz, sample_rate_hz_);
-    return db;
+    for (double f : FittedEq::grid(low_hz, high_hz))
+        reference_db_ = std::max(reference_db_, contour_db(f));
+    for (double f = low_hz; f < high_hz; f *= kScanRatio)
+        reference_db_ = std::max(reference_db_, contour_db(f));
+    eq_.design(sample_rate_hz, low_hz, high_hz, [this](double f) { return target_db(f); });
 }
 
 }  // namespace tactus

@@ -1,39 +1,46 @@
 // P-channel flattening filter (paper §6: "a frequency flattening function to compensate for the
-// non-linear response of the upper ranges of vibrotaction (P channel)").
-// Target: equal sensation at threshold, i.e. gain(f) = strength * (T_P(f) - T_max) where T_P is
-// the P threshold curve (perception/threshold.hpp), held flat below 40 Hz (there NPI sets the
-// threshold, flat 20-40 Hz: paper §3.2) and T_max is the largest in the band: the filter only
-// attenuates, the least sensitive frequency passes at unity. The level spread is bounded by
-// range_db. Realised as a cascade of half-octave peaking biquads whose gains are fitted to the
-// target by damped Gauss-Newton least squares in dB on a log-frequency grid (the "accurate
-// graphic equaliser" design idea of Välimäki & Liski 2017).
+// non-linear response of the upper ranges of vibrotaction (P channel)"), designed from the
+// perception model: the P threshold curve for the contact area (perception/threshold.hpp), or
+// the equal-sensation contour at a level above threshold, whose relief shrinks as level rises
+// (perception/sensation.hpp).
+// Target: gain(f) = -min(strength * (C_max - C(f)), range_db), C the contour, held flat below
+// 40 Hz (there NPI sets the threshold, flat 20-40 Hz: paper §3.2) and C_max its largest value in
+// the band: the filter only attenuates, the least sensitive frequency passes at unity; the
+// level spread is bounded by range_db. Realised by FittedEq (peaking biquads fitted in dB).
 #pragma once
 
-#include <array>
-#include <vector>
-
-#include "tactus/post/biquad.hpp"
+#include "tactus/perception/threshold.hpp"
+#include "tactus/post/fitted_eq.hpp"
 
 namespace tactus {
 
+struct FlatteningDesign {
+    double strength = 1.0;   // fraction of the contour compensated
+    double range_db = 30.0;  // largest attenuation
+    double contact_area_cm2 = perception::kReferenceAreaCm2;
+    double level_db = 0.0;  // SL of the equal-sensation contour (0: threshold)
+};
+
 class FlatteningFilter {
   public:
-    static constexpr int kMaxSections = 16;
-
+    void prepare(double sample_rate_hz, double low_hz, double high_hz,
+                 const FlatteningDesign& design);  // may allocate (design)
+    // The threshold curve at the reference contact.
     void prepare(double sample_rate_hz, double low_hz, double high_hz, double strength,
-                 double range_db);  // may allocate (design)
-    void reset() noexcept;
-    void process(float* samples, int count) noexcept;
+                 double range_db) {
+        prepare(sample_rate_hz, low_hz, high_hz, {.strength = strength, .range_db = range_db});
+    }
+    void reset() noexcept { eq_.reset(); }
+    void process(float* samples, int count) noexcept { eq_.process(samples, count); }
 
-    double target_db(double frequency_hz) const;     // what the design aims for
-    double magnitude_db(double frequency_hz) const;  // what it achieves
+    double target_db(double frequency_hz) const;  // what the design aims for
+    double magnitude_db(double frequency_hz) const { return eq_.magnitude_db(frequency_hz); }
 
   private:
-    double sample_rate_hz_ = 48000, strength_ = 1, range_db_ = 30, reference_db_ = 0;
-    double low_hz_ = 20, high_hz_ = 1000;
-    std::array<Biquad, kMaxSections> sections_;
-    int count_ = 0;
-    double gain_ = 1.0;
+    double contour_db(double frequency_hz) const;
+    FlatteningDesign design_;
+    double reference_db_ = 0;
+    FittedEq eq_;
 };
 
 }  // namespace tactus

@@ -1,5 +1,6 @@
 #include "tactus/post/post_chain.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "tactus/core/units.hpp"
@@ -16,17 +17,23 @@ constexpr double kFlutterPeakQ = 2.0;
 constexpr float kSilentOutput = 1e-9f;
 }  // namespace
 
-void PostChain::prepare(double sample_rate_hz, const Settings& s) {
+void PostChain::prepare(double sample_rate_hz, const Settings& s, const ActuatorProfile* actuator) {
     const double low_hz = s[P::post_band_low_hz], high_hz = s[P::post_band_high_hz];
     flutter_on_ = flutter_enabled(s);
     pressure_on_ = pressure_enabled(s);
     flutter_peak_on_ = flutter_on_ && s[P::post_flutter_peak_db] != 0.0;
     first_band_.prepare(sample_rate_hz, low_hz, high_hz, kFirstBandOrder);
-    flatten_.prepare(sample_rate_hz, low_hz, high_hz, s[P::post_flatten_strength],
-                     s[P::post_flatten_range_db]);
+    flatten_.prepare(sample_rate_hz, low_hz, high_hz,
+                     {.strength = s[P::post_flatten_strength],
+                      .range_db = s[P::post_flatten_range_db],
+                      .contact_area_cm2 = s[P::perception_contact_area_cm2],
+                      .level_db = s[P::post_flatten_level_db]});
     flutter_peak_.set(BiquadCoefficients::peaking(kFlutterPeakHz, kFlutterPeakQ,
                                                   s[P::post_flutter_peak_db], sample_rate_hz));
+    compensate_ = actuator != nullptr;
+    if (actuator) compensation_.prepare(sample_rate_hz, *actuator);
     ceiling_ = db_to_gain(s[P::post_ceiling_db]);
+    if (actuator) ceiling_ = std::min(ceiling_, actuator->max_drive);
     const double pressure_headroom = pressure_on_ ? s[P::pressure_weight] * ceiling_ : 0.0;
     limiter_.prepare(sample_rate_hz, s[P::post_lookahead_ms], s[P::post_release_ms],
                      s[P::post_drive_db], s[P::post_limiter_threshold_db],
@@ -40,6 +47,7 @@ void PostChain::reset() noexcept {
     first_band_.reset();
     flatten_.reset();
     flutter_peak_.reset();
+    compensation_.reset();
     limiter_.reset();
     last_band_.reset();
     clipped_ = 0;
@@ -54,6 +62,7 @@ void PostChain::process(float* samples, float* flutter, const float* pressure, i
                 flutter[i] = static_cast<float>(flutter_peak_.process(flutter[i]));
         for (int i = 0; i < count; ++i) samples[i] += flutter[i];
     }
+    if (compensate_) compensation_.process(samples, count);
     limiter_.process(samples, count);
     last_band_.process(samples, count);
     if (flutter_on_)

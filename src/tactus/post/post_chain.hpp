@@ -2,20 +2,26 @@
 // flattening, peak limiter, band-limit again. The limiter's ceiling sits 1 dB under the output
 // ceiling to leave room for the last band-limit's ringing; a final clip at the ceiling makes the
 // bound absolute and counts how often it had to act (it should not: see clipped_samples()).
+// With an actuator profile, its compensation follows the flattening (so the limiter bounds what
+// the actuator receives) and the ceiling is at most the actuator's max drive; without one the
+// chain is unchanged.
 // Routing of the low-frequency channel components (synthesis/voice.hpp), which the band-limit
 // (30 Hz high-pass) and the P flattening filter would remove or distort:
-//   carrier -> band-limit -> P flattening -(+ flutter)-> limiter -> band-limit -(+ pressure)-> clip
+//   carrier -> band-limit -> P flattening -(+ flutter)-> actuator compensation -> limiter
+//           -> band-limit -(+ pressure)-> clip
 // The NPI flutter (2-40 Hz, already confined to its band by synthesis) joins after the
-// flattening, through an optional 30 Hz peaking filter (paper §5.2 note 4), so the limiter
-// guards the sum; the last band-limit's high-pass then sits at post.flutter_low_hz. The NPIII
-// pressure (a slow offset) joins after the last band-limit; the limiter's ceiling is lowered by
-// the pressure's largest value (its weight times the ceiling), so the sum stays under the ceiling.
-// It is not delayed by the limiter's look-ahead (1.5 ms against NPIII's >= 330 ms periods). With
-// both off the chain is exactly the paper's.
+// flattening, through an optional 30 Hz peaking filter (paper §5.2 note 4), so the actuator
+// compensation shapes and the limiter guards the sum; the last band-limit's high-pass then sits
+// at post.flutter_low_hz. The NPIII pressure (a slow offset) joins after the last band-limit; the
+// limiter's ceiling is lowered by the pressure's largest value (its weight times the ceiling),
+// so the sum stays under the ceiling. It is not delayed by the limiter's look-ahead (1.5 ms
+// against NPIII's >= 330 ms periods). With both off and no actuator the chain is exactly the
+// paper's.
 #pragma once
 
 #include <cstdint>
 
+#include "tactus/actuator/compensation.hpp"
 #include "tactus/core/params.hpp"
 #include "tactus/post/band_limit.hpp"
 #include "tactus/post/flattening_filter.hpp"
@@ -29,7 +35,9 @@ class PostChain {
     static constexpr int kLastBandOrder = 2;
     static constexpr double kRingingMarginDb = 1.0;
 
-    void prepare(double sample_rate_hz, const Settings& settings);  // may allocate
+    // May allocate. `actuator` may be null (no compensation).
+    void prepare(double sample_rate_hz, const Settings& settings,
+                 const ActuatorProfile* actuator = nullptr);
     void reset() noexcept;
     // The carrier alone (flutter and pressure off).
     void process(float* samples, int count) noexcept { process(samples, nullptr, nullptr, count); }
@@ -44,6 +52,8 @@ class PostChain {
   private:
     BandLimit first_band_, last_band_;
     FlatteningFilter flatten_;
+    ActuatorCompensation compensation_;
+    bool compensate_ = false;
     PeakLimiter limiter_;
     Biquad flutter_peak_;
     bool flutter_on_ = false, flutter_peak_on_ = false, pressure_on_ = false;

@@ -1,0 +1,108 @@
+// tactus meter FILE [--actuator NAME] [--contact-area CM2] [-o FILE.csv]: which channels of
+// touch a vibration file engages through an actuator, and how strongly (dB SL over time).
+#include "tactus/perception/meter.hpp"
+
+#include <fmt/format.h>
+
+#include <iostream>
+
+#include "actuator_option.hpp"
+#include "commands.hpp"
+#include "common.hpp"
+#include "tactus/io/audio_reader.hpp"
+#include "tactus/io/text_output.hpp"
+
+namespace tactus::cli {
+namespace {
+
+using perception::kChannels;
+
+struct MeterOptions {
+    std::string input, output, actuator = std::string(kDefaultActuator);
+    double contact_area_cm2 = Settings()[P::perception_contact_area_cm2];
+};
+
+void print_summary(const MeterOptions& o, const ActuatorProfile& a, double seconds,
+                   const perception::MeterSummary& s) {
+    std::cout << fmt::format(
+        "{}: {:.2f} s through {} ({}, {:g} um at {:g} Hz full scale, {}), contact {:g} cm2\n",
+        o.input, seconds, a.name, type_name(a.type), a.displacement_um, a.reference_hz,
+        a.dc ? "DC capable" : "no DC", o.contact_area_cm2);
+    std::cout << fmt::format("{:<9}{:<11}{:>10}{:>11}{:>14}\n", "channel", "sensation", "max_dB_SL",
+                             "engaged_%", "median_dB_SL");
+    const auto row = [](std::string_view name, std::string_view sensation,
+                        const perception::ChannelSummary& c) {
+        std::cout << fmt::format("{:<9}{:<11}{:>10.1f}{:>11.1f}{:>14}\n", name, sensation, c.max_db,
+                                 100 * c.engaged_fraction,
+                                 c.engaged_fraction > 0 ? fmt::format("{:.1f}", c.median_engaged_db)
+                                                        : std::string("not engaged"));
+    };
+    for (const auto& c : kChannels)
+        row(c.name, c.sensation, s.channels[static_cast<int>(c.channel)]);
+    row("combined", "", s.combined);
+}
+
+void meter(const MeterOptions& o) {
+    if (!o.output.empty() && o.output != "-") refuse_overwriting_input(o.input, o.output);
+    const ActuatorProfile actuator = load_actuator(resolve_actuator(o.actuator));
+    AudioReader reader(o.input);
+    perception::SensationMeter meter;
+    meter.prepare(
+        reader.sample_rate_hz(), [&](double f) { return actuator.displacement_um_at(f); },
+        o.contact_area_cm2);
+
+    std::optional<TextOutput> csv;
+    if (!o.output.empty()) {
+        csv.emplace(o.output);
+        csv->stream() << "time_s";
+        for (const auto& c : kChannels) csv->stream() << ',' << c.name << "_sl_db";
+        csv->stream() << ",combined_sl_db\n";
+    }
+    perception::MeterSummariser summariser;
+    const auto on_reading = [&](const perception::MeterReading& r) {
+        summariser.add(r);
+        if (!csv) return;
+        std::ostream& out = csv->stream();
+        out << fmt::format("{:.2f}", r.time_s);
+        for (double v : r.level_db) out << fmt::format(",{:.2f}", v);
+        out << fmt::format(",{:.2f}\n", r.combined_db);
+    };
+    Progress progress("meter");
+    std::vector<float> block(4096);
+    int64_t frames = 0;
+    while (const int got = reader.read(block.data(), static_cast<int>(block.size()))) {
+        meter.write(block.data(), got, on_reading);
+        frames += got;
+        progress.update(frames, reader.frames());
+    }
+    if (frames == 0) throw std::runtime_error(fmt::format("{}: no audio frames", o.input));
+    meter.finish(on_reading);
+    if (csv) csv->commit();
+    print_summary(o, actuator, frames / reader.sample_rate_hz(), summariser.summary());
+}
+
+}  // namespace
+
+void add_meter(CLI::App& app) {
+    auto options = std::make_shared<MeterOptions>();
+    CLI::App* command =
+        app.add_subcommand("meter",
+                           "sensation level of each channel of touch (P, NPI, NPII, NPIII) for a "
+                           "vibration file driving an actuator");
+    command->add_option("input", options->input, "vibration file (e.g. from `tactus render`)")
+        ->required()
+        ->check(CLI::ExistingFile);
+    command->add_option("-o,--output", options->output,
+                        "FILE.csv: sensation levels every 10 ms (dB SL, 0 = not engaged)");
+    add_actuator_option(*command, options->actuator,
+                        "actuator profile (name in actuators/ or FILE.toml; default voice-coil)");
+    command
+        ->add_option("--contact-area", options->contact_area_cm2,
+                     "skin contact area, cm2 (P channel spatial summation)")
+        ->check(CLI::Range(spec(P::perception_contact_area_cm2).min,
+                           spec(P::perception_contact_area_cm2).max))
+        ->capture_default_str();
+    command->callback([options] { meter(*options); });
+}
+
+}  // namespace tactus::cli

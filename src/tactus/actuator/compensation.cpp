@@ -1,0 +1,56 @@
+#include "tactus/actuator/compensation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tactus/core/units.hpp"
+
+namespace tactus {
+namespace {
+constexpr double kLowestFitHz = 1.0;
+constexpr double kWidestFitRatio = 181.0;  // 7.5 octaves: FittedEq's 16 half-octave sections
+}  // namespace
+
+double ActuatorCompensation::target_db(double frequency_hz) const {
+    const double f = std::clamp(frequency_hz, actuator_.band_low_hz, actuator_.band_high_hz);
+    return std::clamp(-actuator_.response_db(f), -kBoundDb, kBoundDb);
+}
+
+double ActuatorCompensation::notch_db(double frequency_hz) const {
+    return notch_on_ ? notch_.coefficients().magnitude_db(frequency_hz, sample_rate_hz_) +
+                           gain_to_db(notch_gain_)
+                     : 0.0;
+}
+
+double ActuatorCompensation::magnitude_db(double frequency_hz) const {
+    return notch_db(frequency_hz) + eq_.magnitude_db(frequency_hz);
+}
+
+void ActuatorCompensation::prepare(double sample_rate_hz, const ActuatorProfile& actuator) {
+    actuator_ = actuator;
+    sample_rate_hz_ = sample_rate_hz;
+    notch_on_ = actuator.resonance == ResonanceKind::band_pass &&
+                actuator.resonance_hz < 0.45 * sample_rate_hz;
+    if (notch_on_) {
+        const double q = actuator.q * std::pow(10.0, -kBoundDb / 40.0);
+        notch_.set(
+            BiquadCoefficients::peaking(actuator.resonance_hz, q, -kBoundDb, sample_rate_hz));
+        notch_gain_ = db_to_gain(kBoundDb - actuator.response_db(actuator.resonance_hz));
+    }
+    // Fitted an octave beyond the band on each side (the target holds its edge values there),
+    // so the response stays near the bound outside the band instead of drifting.
+    const double fit_low_hz = std::max(actuator.band_low_hz / 2, kLowestFitHz);
+    const double fit_high_hz = std::min(actuator.band_high_hz * 2, fit_low_hz * kWidestFitRatio);
+    eq_.design(sample_rate_hz, fit_low_hz, fit_high_hz,
+               [this](double f) { return target_db(f) - notch_db(f); });
+    reset();
+}
+
+void ActuatorCompensation::process(float* samples, int count) noexcept {
+    if (notch_on_)
+        for (int i = 0; i < count; ++i)
+            samples[i] = static_cast<float>(notch_gain_ * notch_.process(samples[i]));
+    eq_.process(samples, count);
+}
+
+}  // namespace tactus

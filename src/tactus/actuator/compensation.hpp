@@ -1,0 +1,40 @@
+// Output compensation for an actuator profile: the inverse of its displacement response inside
+// its usable band (relative to reference_hz), so that equal signal levels give equal skin
+// displacement there, bounded to +-kBoundDb. A band-pass resonance (an LRA) is inverted by a
+// peaking cut of kBoundDb at f0 with Q' = Q 10^(-kBoundDb/40) and kBoundDb of gain: exactly
+// |s^2 + s/Q + 1| / |s^2 + s/Q'' + 1| scaled, the inverse resonance levelling off at the bound
+// away from f0 (Android's HapticGenerator notches its LRA's f0 likewise: perception.md). What
+// remains (tables, low-pass resonances) is fitted by FittedEq over the usable band.
+#pragma once
+
+#include "tactus/actuator/profile.hpp"
+#include "tactus/post/biquad.hpp"
+#include "tactus/post/fitted_eq.hpp"
+
+namespace tactus {
+
+class ActuatorCompensation {
+  public:
+    static constexpr double kBoundDb = 12.0;
+
+    void prepare(double sample_rate_hz, const ActuatorProfile& actuator);  // may allocate
+    void reset() noexcept {
+        notch_.reset();
+        eq_.reset();
+    }
+    void process(float* samples, int count) noexcept;
+
+    double target_db(double frequency_hz) const;
+    double magnitude_db(double frequency_hz) const;
+
+  private:
+    double notch_db(double frequency_hz) const;  // the resonance's inverse, with its gain
+    ActuatorProfile actuator_;
+    double sample_rate_hz_ = 48000;
+    bool notch_on_ = false;
+    Biquad notch_;
+    double notch_gain_ = 1.0;
+    FittedEq eq_;
+};
+
+}  // namespace tactus

@@ -1,0 +1,142 @@
+#include "tactus/perception/meter.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tactus/analysis/real_fft.hpp"
+#include "tactus/core/units.hpp"
+
+namespace tactus::perception {
+
+struct SensationMeter::ChannelState {
+    Channel channel = Channel::P;
+    int hop_steps = 1;
+    int window_samples = 0;
+    RealFft fft;
+    std::vector<float> window;
+    std::vector<double> weight;  // per bin: 2 g_k (D / thr)^2 / (M sum w^2)
+    std::vector<double> frames;  // P: the last second of frame values
+    size_t next_frame = 0;
+    double value = 0;  // latest (peak displacement / threshold)^2
+};
+
+SensationMeter::SensationMeter() = default;
+SensationMeter::~SensationMeter() = default;
+
+void SensationMeter::prepare(double sample_rate_hz, const Calibration& displacement_um,
+                             double contact_area_cm2) {
+    sample_rate_hz_ = sample_rate_hz;
+    step_samples_ = static_cast<int>(std::lround(kStepS * sample_rate_hz));
+    channels_.clear();
+    size_t longest = 0;
+    for (const auto& info : kChannels) {
+        auto c = std::make_unique<ChannelState>();
+        c->channel = info.channel;
+        c->hop_steps = kHopSteps[static_cast<int>(info.channel)];
+        c->window_samples = 8 * c->hop_steps * step_samples_;
+        longest = std::max(longest, static_cast<size_t>(c->window_samples));
+        c->fft.prepare(next_power_of_two(c->window_samples));
+        const int n = c->window_samples, m = c->fft.size();
+        c->window.resize(static_cast<size_t>(n));
+        double window_power = 0;
+        for (int i = 0; i < n; ++i) {
+            const double s = std::sin(kPi * (i + 0.5) / n);  // periodic-symmetric Hann
+            c->window[i] = static_cast<float>(s * s);
+            window_power += double(c->window[i]) * c->window[i];
+        }
+        c->weight.assign(static_cast<size_t>(c->fft.bins()), 0.0);
+        const Stimulus stimulus{.contact_area_cm2 = contact_area_cm2};
+        for (int k = 0; k < c->fft.bins(); ++k) {
+            const double f = k * sample_rate_hz / m;
+            const double ratio =
+                displacement_um(f) / std::pow(10.0, threshold_db(info.channel, f, stimulus) / 20);
+            const double one_sided = (k == 0 || k == m / 2) ? 1.0 : 2.0;
+            const double w = 2.0 * one_sided * ratio * ratio / (m * window_power);
+            c->weight[k] = std::isfinite(w) ? w : 0.0;
+        }
+        const int frames_per_second =
+            info.channel == Channel::P
+                ? static_cast<int>(std::lround(kPIntegrationS / (c->hop_steps * kStepS)))
+                : 1;
+        c->frames.assign(static_cast<size_t>(frames_per_second), 0.0);
+        channels_.push_back(std::move(c));
+    }
+    history_.assign(longest, 0.0f);
+    write_at_ = 0;
+    filled_ = 0;
+    steps_ = 0;
+}
+
+void SensationMeter::write(const float* samples, int count,
+                           const std::function<void(const MeterReading&)>& on_reading) {
+    for (int i = 0; i < count; ++i) {
+        history_[write_at_] = std::isfinite(samples[i]) ? samples[i] : 0.0f;
+        if (++write_at_ == history_.size()) write_at_ = 0;
+        if (++filled_ == step_samples_) {
+            filled_ = 0;
+            step(on_reading);
+        }
+    }
+}
+
+void SensationMeter::finish(const std::function<void(const MeterReading&)>& on_reading) {
+    const std::vector<float> silence(static_cast<size_t>(step_samples_), 0.0f);
+    const int steps = 8 * std::max(kHopSteps[0], kHopSteps[1]);
+    for (int s = 0; s < steps; ++s) write(silence.data(), step_samples_, on_reading);
+}
+
+void SensationMeter::step(const std::function<void(const MeterReading&)>& on_reading) {
+    ++steps_;
+    MeterReading reading;
+    reading.time_s = static_cast<double>(steps_ * step_samples_) / sample_rate_hz_;
+    for (auto& c : channels_) {
+        if (steps_ % c->hop_steps == 0) {
+            const size_t n = static_cast<size_t>(c->window_samples), size = history_.size();
+            float* time = c->fft.time();
+            size_t from = (write_at_ + size - n) % size;
+            for (size_t i = 0; i < n; ++i) {
+                time[i] = history_[from] * c->window[i];
+                if (++from == size) from = 0;
+            }
+            std::fill(time + n, time + c->fft.size(), 0.0f);
+            c->fft.forward();
+            const std::complex<float>* x = c->fft.spectrum();
+            double power = 0;
+            for (int k = 0; k < c->fft.bins(); ++k) power += c->weight[k] * std::norm(x[k]);
+            c->frames[c->next_frame] = power;
+            if (++c->next_frame == c->frames.size()) c->next_frame = 0;
+            double sum = 0;
+            for (double v : c->frames) sum += v;
+            c->value = sum / static_cast<double>(c->frames.size());
+        }
+        reading.level_db[static_cast<int>(c->channel)] =
+            c->value > 1.0 ? power_to_db(c->value) : 0.0;
+    }
+    reading.combined_db = combined_sensation_db(reading.level_db);
+    on_reading(reading);
+}
+
+void MeterSummariser::add(const MeterReading& r) {
+    for (size_t c = 0; c < r.level_db.size(); ++c) levels_[c].push_back(r.level_db[c]);
+    levels_[4].push_back(r.combined_db);
+}
+
+MeterSummary MeterSummariser::summary() const {
+    MeterSummary s;
+    s.readings = static_cast<int64_t>(levels_[0].size());
+    for (size_t c = 0; c < levels_.size(); ++c) {
+        ChannelSummary& out = c < 4 ? s.channels[c] : s.combined;
+        std::vector<double> engaged;
+        for (double v : levels_[c]) {
+            out.max_db = std::max(out.max_db, v);
+            if (v > 0) engaged.push_back(v);
+        }
+        if (engaged.empty()) continue;
+        out.engaged_fraction = double(engaged.size()) / double(levels_[c].size());
+        std::nth_element(engaged.begin(), engaged.begin() + engaged.size() / 2, engaged.end());
+        out.median_engaged_db = engaged[engaged.size() / 2];
+    }
+    return s;
+}
+
+}  // namespace tactus::perception

@@ -1,0 +1,121 @@
+#include "tactus/post/fitted_eq.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace tactus {
+namespace {
+
+constexpr double kSectionQ = 1.41;  // one-octave bandwidth at half-octave spacing: smooth sums
+constexpr int kIterations = 8;
+
+// Solves the n x n system a x = b in place (Gaussian elimination, partial pivoting).
+std::vector<double> solve(std::vector<double> a, std::vector<double> b, int n) {
+    for (int c = 0; c < n; ++c) {
+        int pivot = c;
+        for (int r = c + 1; r < n; ++r)
+            if (std::abs(a[r * n + c]) > std::abs(a[pivot * n + c])) pivot = r;
+        for (int k = 0; k < n; ++k) std::swap(a[c * n + k], a[pivot * n + k]);
+        std::swap(b[c], b[pivot]);
+        for (int r = c + 1; r < n; ++r) {
+            const double f = a[r * n + c] / a[c * n + c];
+            for (int k = c; k < n; ++k) a[r * n + k] -= f * a[c * n + k];
+            b[r] -= f * b[c];
+        }
+    }
+    std::vector<double> x(static_cast<size_t>(n));
+    for (int r = n - 1; r >= 0; --r) {
+        double s = b[r];
+        for (int k = r + 1; k < n; ++k) s -= a[r * n + k] * x[k];
+        x[r] = s / a[r * n + r];
+    }
+    return x;
+}
+
+}  // namespace
+
+std::vector<double> FittedEq::grid(double low_hz, double high_hz) {
+    std::vector<double> frequencies(kGridPoints);
+    for (int i = 0; i < kGridPoints; ++i)
+        frequencies[i] = low_hz * std::pow(high_hz / low_hz, i / (kGridPoints - 1.0));
+    return frequencies;
+}
+
+void FittedEq::design(double sample_rate_hz, double low_hz, double high_hz,
+                      const std::function<double(double)>& target_db) {
+    sample_rate_hz_ = sample_rate_hz;
+    high_hz = highest_fitted_hz(high_hz, sample_rate_hz);
+    const std::vector<double> frequencies = grid(low_hz, high_hz);
+    std::vector<double> target(kGridPoints);
+    for (int i = 0; i < kGridPoints; ++i) target[i] = target_db(frequencies[i]);
+
+    // Half-octave centres across the band.
+    std::vector<double> centres;
+    for (double f = low_hz; f <= high_hz * 1.001 && centres.size() < kMaxSections;
+         f *= std::sqrt(2.0))
+        centres.push_back(f);
+    count_ = static_cast<int>(centres.size());
+    const int unknowns = count_ + 1;  // section gains and an overall gain, dB
+
+    std::vector<double> gains_db(static_cast<size_t>(unknowns), 0.0);
+    auto response_db = [&](const std::vector<double>& g, double f) {
+        double db = g[count_];
+        for (int s = 0; s < count_; ++s)
+            db += BiquadCoefficients::peaking(centres[s], kSectionQ, g[s], sample_rate_hz)
+                      .magnitude_db(f, sample_rate_hz);
+        return db;
+    };
+    constexpr double kProbeDb = 0.01, kDamping = 1e-4;
+    for (int iteration = 0; iteration < kIterations; ++iteration) {
+        std::vector<double> jacobian(static_cast<size_t>(kGridPoints * unknowns));
+        std::vector<double> error(kGridPoints);
+        for (int i = 0; i < kGridPoints; ++i) {
+            const double now = response_db(gains_db, frequencies[i]);
+            error[i] = target[i] - now;
+            for (int u = 0; u < unknowns; ++u) {
+                std::vector<double> probe = gains_db;
+                probe[u] += kProbeDb;
+                jacobian[i * unknowns + u] = (response_db(probe, frequencies[i]) - now) / kProbeDb;
+            }
+        }
+        std::vector<double> normal(static_cast<size_t>(unknowns * unknowns), 0.0);
+        std::vector<double> rhs(static_cast<size_t>(unknowns), 0.0);
+        for (int i = 0; i < kGridPoints; ++i)
+            for (int u = 0; u < unknowns; ++u) {
+                rhs[u] += jacobian[i * unknowns + u] * error[i];
+                for (int v = 0; v < unknowns; ++v)
+                    normal[u * unknowns + v] +=
+                        jacobian[i * unknowns + u] * jacobian[i * unknowns + v];
+            }
+        for (int u = 0; u < unknowns; ++u) normal[u * unknowns + u] += kDamping;
+        const std::vector<double> step = solve(normal, rhs, unknowns);
+        for (int u = 0; u < unknowns; ++u) gains_db[u] += step[u];
+    }
+    for (int s = 0; s < count_; ++s)
+        sections_[s].set(
+            BiquadCoefficients::peaking(centres[s], kSectionQ, gains_db[s], sample_rate_hz));
+    gain_ = db_to_gain(gains_db[count_]);
+    reset();
+}
+
+void FittedEq::reset() noexcept {
+    for (auto& s : sections_) s.reset();
+}
+
+void FittedEq::process(float* samples, int count) noexcept {
+    for (int i = 0; i < count; ++i) {
+        double x = samples[i] * gain_;
+        for (int s = 0; s < count_; ++s) x = sections_[s].process(x);
+        samples[i] = static_cast<float>(x);
+    }
+}
+
+double FittedEq::magnitude_db(double frequency_hz) const {
+    double db = gain_to_db(gain_);
+    for (int s = 0; s < count_; ++s)
+        db += sections_[s].coefficients().magnitude_db(frequency_hz, sample_rate_hz_);
+    return db;
+}
+
+}  // namespace tactus
