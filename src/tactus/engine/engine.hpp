@@ -1,12 +1,17 @@
 // The whole pipeline of paper Figure 4 as one real-time processor:
 // audio -> analysis -> mapping -> synthesis -> post-processing -> vibration.
-// process() takes any block size and gives the same output for any split of the input.
+// Analysis runs at the input rate. Synthesis and post-processing run at an internal rate, the
+// input rate divided by an integer, at least kInternalRateOverBand times the band's upper edge
+// (the vibration has nothing above it), and an Upsampler brings the result back to the input
+// rate. process() takes any block size and gives the same output for any split of the input.
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "tactus/analysis/analyzer.hpp"
 #include "tactus/core/params.hpp"
+#include "tactus/engine/upsampler.hpp"
 #include "tactus/mapping/mapper.hpp"
 #include "tactus/post/post_chain.hpp"
 #include "tactus/synthesis/voice.hpp"
@@ -26,6 +31,9 @@ class Engine {
     static constexpr double kMinSampleRateHz = 8000;
     static constexpr double kMaxSampleRateHz = 192000;
     static constexpr int kMaxBlock = 4096;
+    // Internal rate / band upper edge: leaves the upsampler a transition band from the edge to
+    // 0.8 of the internal rate.
+    static constexpr double kInternalRateOverBand = 5.0;
 
     explicit Engine(Settings settings = {}) : settings_(settings) {}
 
@@ -34,13 +42,21 @@ class Engine {
     void reset() noexcept;
     // Mono in, mono vibration out (may alias). count <= max_block.
     void process(const float* in, float* out, int count) noexcept;
-    int latency() const { return post_.latency_samples(); }
+    // The limiter's look-ahead plus the upsampler's delay, in samples at the input rate. The
+    // upsampler's delay is taken out of the look-ahead, so this stays close to
+    // post.lookahead_ms.
+    int latency() const;
+    // Input samples per internal (synthesis and post-processing) sample.
+    int rate_divisor() const { return upsampler_.factor(); }
 
     void set_observer(FrameObserver* observer) { observer_ = observer; }
     const Settings& settings() const { return settings_; }
     double sample_rate_hz() const { return sample_rate_hz_; }
     int hop_samples() const { return analyzer_.hop_samples(); }
     const PostChain& post() const { return post_; }
+    // Output samples the final clip at the ceiling changed (it should not: the limiter leaves
+    // a margin), post-processing's own clips included.
+    int64_t clipped_samples() const { return post_.clipped_samples() + clipped_; }
 
   private:
     Settings settings_;
@@ -49,6 +65,11 @@ class Engine {
     Mapper mapper_;
     Voice voice_;
     PostChain post_;
+    Upsampler upsampler_;
+    std::vector<float> internal_;  // synthesis and post-processing output, one block
+    int64_t position_ = 0;         // input samples consumed since reset
+    float ceiling_ = 1.0f;
+    int64_t clipped_ = 0;
     FrameObserver* observer_ = nullptr;
 };
 
