@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace tactus {
 namespace {
@@ -46,21 +47,24 @@ void Loudness::reset() noexcept {
     highpass_.reset();
     std::fill(squares_.begin(), squares_.end(), 0.0);
     position_ = 0;
+    sum_ = 0.0;
 }
 
 void Loudness::write(const float* samples, int count) noexcept {
     const size_t length = squares_.size();
     for (int i = 0; i < count; ++i) {
         const double y = highpass_.process(shelf_.process(samples[i]));
+        sum_ += y * y - squares_[position_];
         squares_[position_] = y * y;
-        if (++position_ == length) position_ = 0;
+        if (++position_ == length) {  // re-sum once per window: no rounding drift
+            position_ = 0;
+            sum_ = std::accumulate(squares_.begin(), squares_.end(), 0.0);
+        }
     }
 }
 
 double Loudness::loudness_db() const noexcept {
-    double sum = 0.0;
-    for (double s : squares_) sum += s;
-    const double mean_square = sum / static_cast<double>(squares_.size());
+    const double mean_square = std::max(0.0, sum_) / static_cast<double>(squares_.size());
     if (mean_square <= 1e-12) return kFloorDb;
     return std::max(kFloorDb, kLkfsOffsetDb + power_to_db(mean_square));
 }

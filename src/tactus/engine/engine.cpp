@@ -29,8 +29,7 @@ void Engine::prepare(double sample_rate_hz, int max_block) {
     sample_rate_hz_ = sample_rate_hz;
     const double band_high_hz = settings_[P::post_band_high_hz];
     const int divisor =
-        std::clamp(static_cast<int>(sample_rate_hz / (kInternalRateOverBand * band_high_hz)), 1,
-                   Upsampler::kMaxFactor);
+        std::clamp(static_cast<int>(sample_rate_hz / kMinInternalRateHz), 1, Upsampler::kMaxFactor);
     const double internal_rate_hz = sample_rate_hz / divisor;
     const int max_internal_block = static_cast<int>(ceil_div(max_block, divisor)) + 1;
     upsampler_.prepare(divisor, max_internal_block);
@@ -58,6 +57,18 @@ void Engine::reset() noexcept {
     upsampler_.reset();
     position_ = 0;
     clipped_ = 0;
+}
+
+// Pitch is computed when the mapping or the observer reads it.
+void Engine::set_observer(FrameObserver* observer) {
+    observer_ = observer;
+    bool pitch_read = observer && observer->reads_features();
+    for (P source : {P::amplitude_source, P::frequency_source, P::square_mix_source}) {
+        const auto feature = static_cast<FeatureSource>(settings_[source]);
+        pitch_read |=
+            feature == FeatureSource::pitch_hz || feature == FeatureSource::pitch_confidence;
+    }
+    analyzer_.set_pitch_enabled(pitch_read);
 }
 
 int Engine::latency() const {

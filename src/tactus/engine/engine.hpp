@@ -1,9 +1,12 @@
 // The whole pipeline of paper Figure 4 as one real-time processor:
 // audio -> analysis -> mapping -> synthesis -> post-processing -> vibration.
 // Analysis runs at the input rate. Synthesis and post-processing run at an internal rate, the
-// input rate divided by an integer, at least kInternalRateOverBand times the band's upper edge
-// (the vibration has nothing above it), and an Upsampler brings the result back to the input
-// rate. process() takes any block size and gives the same output for any split of the input.
+// input rate divided by an integer, and an Upsampler brings the result back to the input rate.
+// The vibration has nothing above the band's upper edge (<= 2 kHz), but the envelope's attack
+// and the synthesis glides last only ~1 ms: at least kMinInternalRateHz keeps those transients,
+// and the low-frequency content they carry (which the flattening filter lifts by up to 28 dB),
+// as they are at 44.1 kHz. process() takes any block size and gives the same output for any
+// split of the input.
 #pragma once
 
 #include <cstdint>
@@ -24,6 +27,8 @@ class FrameObserver {
   public:
     virtual ~FrameObserver() = default;
     virtual void on_frame(const Features& features, const ControlFrame& control) noexcept = 0;
+    // False when on_frame() reads only the control frame: features nothing reads are skipped.
+    virtual bool reads_features() const noexcept { return true; }
 };
 
 class Engine {
@@ -31,11 +36,9 @@ class Engine {
     static constexpr double kMinSampleRateHz = 8000;
     static constexpr double kMaxSampleRateHz = 192000;
     static constexpr int kMaxBlock = 4096;
-    // Internal rate / band upper edge: leaves the upsampler a transition band from the edge to
-    // 0.8 of the internal rate.
-    static constexpr double kInternalRateOverBand = 5.0;
+    static constexpr double kMinInternalRateHz = 20000;
 
-    explicit Engine(Settings settings = {}) : settings_(settings) {}
+    explicit Engine(Settings settings = {}) : settings_(settings) { set_observer(nullptr); }
 
     // May allocate. Throws std::invalid_argument for a sample rate outside 8-192 kHz.
     void prepare(double sample_rate_hz, int max_block);
@@ -49,7 +52,7 @@ class Engine {
     // Input samples per internal (synthesis and post-processing) sample.
     int rate_divisor() const { return upsampler_.factor(); }
 
-    void set_observer(FrameObserver* observer) { observer_ = observer; }
+    void set_observer(FrameObserver* observer);
     const Settings& settings() const { return settings_; }
     double sample_rate_hz() const { return sample_rate_hz_; }
     int hop_samples() const { return analyzer_.hop_samples(); }

@@ -131,7 +131,7 @@ void Upsampler::process(const float* internal, int internal_count, float* out, i
         std::array<float, kMaxFactor> y{};
         for (int i = 0; i < K; ++i) {
             const float xi = x[-i];
-            for (int p = 0; p < kMaxFactor; ++p) y[p] += xi * taps_[i][p];
+            for (int p = 0; p < factor_; ++p) y[p] += xi * taps_[i][p];
         }
         const int n = std::min(factor_ - r, count - done);
         std::copy_n(y.data() + r, n, out + done);

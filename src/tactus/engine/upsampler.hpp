@@ -1,10 +1,10 @@
 // Integer-factor interpolation from the engine's internal rate back to the output rate: a
 // polyphase FIR (Crochiere & Rabiner 1983, ch. 3) with a minimum-phase Kaiser-windowed-sinc
-// low-pass. Synthesis and post-processing run at the internal rate because the vibrotactile
-// band ends at 1 kHz (perception.md: P-channel band); the low-pass passes that band (< 0.01 dB
-// ripple) and removes the images around multiples of the internal rate (> 60 dB down).
-// Minimum phase (homomorphic design, Oppenheim & Schafer 2010, §13.9): its delay is about 1.5
-// internal samples instead of the 4 of the linear-phase filter, so onsets stay prompt.
+// low-pass cut at the internal Nyquist frequency. The vibration has nothing above the band's
+// upper edge (<= 2 kHz), far below that: the low-pass passes it (< 0.01 dB ripple) and removes
+// the images around multiples of the internal rate (> 60 dB down when the internal rate is at
+// least 5 times the edge). Minimum phase (homomorphic design, Oppenheim & Schafer 2010, §13.9):
+// its delay is about 1.5 internal samples instead of the 4 of the linear-phase filter.
 // Output sample m = q F + r depends only on internal samples up to q: process() is causal and
 // gives the same output for any split of the stream.
 #pragma once
