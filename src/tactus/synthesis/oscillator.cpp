@@ -24,8 +24,8 @@ double Oscillator::next(double frequency_hz, double square_mix) noexcept {
 
     // Odd harmonics below the limit; each above the fundamental fades in linearly over the last
     // 2 f0 below the limit, so partials enter and leave without clicks as f0 moves.
-    const double two_cos = 2.0 * std::cos(2.0 * angle);
-    double previous = -fundamental, current = fundamental;  // sin(-x), sin(x)
+    const double two_cos = 2.0 - 4.0 * fundamental * fundamental;  // 2 cos 2x = 2 - 4 sin^2 x
+    double previous = -fundamental, current = fundamental;         // sin(-x), sin(x)
     double square = 0.0;
     constexpr double kMostHarmonics = 1e5;  // bounds the loop for absurdly low f0
     const int last_harmonic =
