@@ -52,15 +52,22 @@ void Loudness::reset() noexcept {
 
 void Loudness::write(const float* samples, int count) noexcept {
     const size_t length = squares_.size();
+    Biquad shelf = shelf_, highpass = highpass_;  // state in locals: kept in registers
+    double sum = sum_;
+    size_t position = position_;
     for (int i = 0; i < count; ++i) {
-        const double y = highpass_.process(shelf_.process(samples[i]));
-        sum_ += y * y - squares_[position_];
-        squares_[position_] = y * y;
-        if (++position_ == length) {  // re-sum once per window: no rounding drift
-            position_ = 0;
-            sum_ = std::accumulate(squares_.begin(), squares_.end(), 0.0);
+        const double y = highpass.process(shelf.process(samples[i]));
+        sum += y * y - squares_[position];
+        squares_[position] = y * y;
+        if (++position == length) {  // re-sum once per window: no rounding drift
+            position = 0;
+            sum = std::accumulate(squares_.begin(), squares_.end(), 0.0);
         }
     }
+    shelf_ = shelf;
+    highpass_ = highpass;
+    sum_ = sum;
+    position_ = position;
 }
 
 double Loudness::loudness_db() const noexcept {

@@ -123,6 +123,10 @@ void Upsampler::reset() noexcept {
 
 void Upsampler::process(const float* internal, int internal_count, float* out, int count) noexcept {
     constexpr int K = kTapsPerPhase;
+    if (factor_ == 1) {
+        std::copy_n(internal, count, out);
+        return;
+    }
     std::copy_n(internal, internal_count, line_.data() + K);
     // line_[K - 1 + j] is the j-th internal sample at or after the first output's time.
     const float* x = line_.data() + K - (phase_ != 0 ? 1 : 0);

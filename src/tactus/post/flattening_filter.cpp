@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "tactus/perception/threshold.hpp"
+#include "tactus/post/biquad_cascade.hpp"
 
 namespace tactus {
 namespace {
@@ -113,11 +114,7 @@ void FlatteningFilter::reset() noexcept {
 }
 
 void FlatteningFilter::process(float* samples, int count) noexcept {
-    for (int i = 0; i < count; ++i) {
-        double x = samples[i] * gain_;
-        for (int s = 0; s < count_; ++s) x = sections_[s].process(x);
-        samples[i] = static_cast<float>(x);
-    }
+    process_cascade(sections_.data(), count_, samples, count, gain_);
 }
 
 double FlatteningFilter::magnitude_db(double frequency_hz) const {
