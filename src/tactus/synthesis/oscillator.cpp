@@ -1,11 +1,20 @@
 #include "tactus/synthesis/oscillator.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "tactus/core/units.hpp"
 
 namespace tactus {
+namespace {
+// 1 / k for the odd harmonics k = 1, 3, 5 ... 1023 (f0 down to ~1 Hz under a 1 kHz limit).
+constexpr auto kOddReciprocals = [] {
+    std::array<double, 512> table{};
+    for (size_t i = 0; i < table.size(); ++i) table[i] = 1.0 / static_cast<double>(2 * i + 1);
+    return table;
+}();
+}  // namespace
 
 void Oscillator::prepare(double sample_rate_hz, double harmonic_limit_hz) {
     sample_rate_hz_ = sample_rate_hz;
@@ -30,11 +39,13 @@ double Oscillator::next(double frequency_hz, double square_mix) noexcept {
     constexpr double kMostHarmonics = 1e5;  // bounds the loop for absurdly low f0
     const int last_harmonic =
         std::max(1, static_cast<int>(std::min(harmonic_limit_hz_ / frequency_hz, kMostHarmonics)));
+    const double fade_per_hz = 0.5 / frequency_hz;  // multiplications: no division per harmonic
     for (int k = 1; k <= last_harmonic; k += 2) {
         const double weight =
-            k == 1 ? 1.0
-                   : std::min(1.0, (harmonic_limit_hz_ - k * frequency_hz) / (2.0 * frequency_hz));
-        square += weight * current / k;
+            k == 1 ? 1.0 : std::min(1.0, (harmonic_limit_hz_ - k * frequency_hz) * fade_per_hz);
+        const auto odd = static_cast<size_t>(k / 2);
+        square +=
+            weight * current * (odd < kOddReciprocals.size() ? kOddReciprocals[odd] : 1.0 / k);
         const double next_harmonic = two_cos * current - previous;
         previous = current;
         current = next_harmonic;
