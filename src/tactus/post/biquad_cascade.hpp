@@ -100,7 +100,7 @@ void run_wavefront(Biquad* sections, float* samples, int count, double gain) noe
 template <int N>
 void run(Biquad* sections, float* samples, int count, double gain) noexcept {
 #if defined(__SSE2__)
-    if constexpr (N >= 4) return run_wavefront<N>(sections, samples, count, gain);
+    if constexpr (N >= 2) return run_wavefront<N>(sections, samples, count, gain);
 #endif
     run_cascade<N>(sections, samples, count, gain);
 }
