@@ -14,6 +14,35 @@ constexpr auto kOddReciprocals = [] {
     for (size_t i = 0; i < table.size(); ++i) table[i] = 1.0 / static_cast<double>(2 * i + 1);
     return table;
 }();
+
+// sin(2 pi phase) for phase in [0, 1): the quarter-cycle reduction is exact in cycles, then a
+// Taylor polynomial of sin or cos on |x| <= pi/4 (truncation below 5e-17). Agrees with
+// std::sin(2 pi phase) to 1e-15 at a fraction of its cost.
+double sin_of_cycles(double phase) noexcept {
+    const auto quadrant = static_cast<int>(std::lround(4.0 * phase));  // 0 ... 4
+    const double x = 2.0 * kPi * (phase - 0.25 * quadrant);
+    const double z = x * x;
+    if (quadrant % 2 == 0) {
+        const double s =
+            x * (1.0 +
+                 z * (-1.0 / 6 +
+                      z * (1.0 / 120 +
+                           z * (-1.0 / 5040 +
+                                z * (1.0 / 362880 +
+                                     z * (-1.0 / 39916800 +
+                                          z * (1.0 / 6227020800 + z * (-1.0 / 1307674368000))))))));
+        return quadrant == 2 ? -s : s;
+    }
+    const double c =
+        1.0 + z * (-1.0 / 2 +
+                   z * (1.0 / 24 +
+                        z * (-1.0 / 720 +
+                             z * (1.0 / 40320 +
+                                  z * (-1.0 / 3628800 + z * (1.0 / 479001600 +
+                                                             z * (-1.0 / 87178291200 +
+                                                                  z * (1.0 / 20922789888000))))))));
+    return quadrant == 3 ? -c : c;
+}
 }  // namespace
 
 void Oscillator::prepare(double sample_rate_hz, double harmonic_limit_hz) {
@@ -24,11 +53,10 @@ void Oscillator::prepare(double sample_rate_hz, double harmonic_limit_hz) {
 
 double Oscillator::next(double frequency_hz, double square_mix) noexcept {
     if (!std::isfinite(frequency_hz)) frequency_hz = 0.0;  // never let NaN into the phase
-    const double angle = 2.0 * kPi * phase_;
+    const double fundamental = sin_of_cycles(phase_);
     phase_ += frequency_hz / sample_rate_hz_;
     phase_ -= std::floor(phase_);
 
-    const double fundamental = std::sin(angle);
     if (!(square_mix > 0.0 && frequency_hz > 0.0)) return fundamental;
 
     // Odd harmonics below the limit; each above the fundamental fades in linearly over the last
