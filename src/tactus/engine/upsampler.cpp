@@ -5,6 +5,7 @@
 #include <complex>
 #include <stdexcept>
 
+#include "tactus/analysis/real_fft.hpp"
 #include "tactus/core/units.hpp"
 
 namespace tactus {
@@ -12,7 +13,7 @@ namespace {
 
 constexpr double kKaiserBeta = 7.0;       // ~70 dB stop band at 8 taps per phase
 constexpr int kCepstrumSize = 8192;       // dense enough that the cepstrum does not alias
-constexpr double kMagnitudeFloor = 1e-8;  // -160 dB: keeps log() finite at the zeros
+constexpr float kMagnitudeFloor = 1e-8f;  // -160 dB: keeps log() finite at the zeros
 
 // Zeroth-order modified Bessel function of the first kind (power series).
 double bessel_i0(double x) {
@@ -23,30 +24,6 @@ double bessel_i0(double x) {
         if (term < 1e-17 * sum) break;
     }
     return sum;
-}
-
-// In-place radix-2 complex FFT (size a power of two); inverse without the 1/n scale.
-void fft(std::vector<std::complex<double>>& a, bool inverse) {
-    const size_t n = a.size();
-    for (size_t i = 1, j = 0; i < n; ++i) {
-        size_t bit = n >> 1;
-        for (; j & bit; bit >>= 1) j ^= bit;
-        j ^= bit;
-        if (i < j) std::swap(a[i], a[j]);
-    }
-    for (size_t length = 2; length <= n; length <<= 1) {
-        const double angle = (inverse ? 2.0 : -2.0) * kPi / static_cast<double>(length);
-        const std::complex<double> step = std::polar(1.0, angle);
-        for (size_t start = 0; start < n; start += length) {
-            std::complex<double> w = 1.0;
-            for (size_t k = 0; k < length / 2; ++k, w *= step) {
-                const std::complex<double> even = a[start + k];
-                const std::complex<double> odd = a[start + k + length / 2] * w;
-                a[start + k] = even + odd;
-                a[start + k + length / 2] = even - odd;
-            }
-        }
-    }
 }
 
 // Linear-phase low-pass cut at the internal Nyquist frequency, gain `factor` (interpolation).
@@ -69,22 +46,24 @@ std::vector<double> kaiser_lowpass(int factor, int length) {
 // The minimum-phase filter with the same magnitude response: fold the real cepstrum of
 // log|H| onto positive quefrencies and exponentiate back.
 std::vector<double> minimum_phase(const std::vector<double>& h) {
-    std::vector<std::complex<double>> x(kCepstrumSize);
-    std::copy(h.begin(), h.end(), x.begin());
-    fft(x, false);
-    for (auto& v : x) v = std::log(std::max(std::abs(v), kMagnitudeFloor));
-    fft(x, true);
-    for (int n = 0; n < kCepstrumSize; ++n) {
-        const double fold = n == 0 || n == kCepstrumSize / 2 ? 1.0
-                            : n < kCepstrumSize / 2          ? 2.0
-                                                             : 0.0;
-        x[n] = fold * x[n].real() / kCepstrumSize;
-    }
-    fft(x, false);
-    for (auto& v : x) v = std::exp(v);
-    fft(x, true);
+    RealFft fft;
+    fft.prepare(kCepstrumSize);
+    float* time = fft.time();
+    std::complex<float>* spectrum = fft.spectrum();
+    std::fill_n(time, kCepstrumSize, 0.0f);
+    std::copy(h.begin(), h.end(), time);
+    fft.forward();
+    for (int k = 0; k < fft.bins(); ++k)
+        spectrum[k] = std::log(std::max(std::abs(spectrum[k]), kMagnitudeFloor));
+    fft.inverse();  // the real cepstrum, times the size
+    for (int n = 1; n < kCepstrumSize / 2; ++n) time[n] *= 2.0f;
+    std::fill(time + kCepstrumSize / 2 + 1, time + kCepstrumSize, 0.0f);
+    for (int n = 0; n < kCepstrumSize; ++n) time[n] /= kCepstrumSize;
+    fft.forward();
+    for (int k = 0; k < fft.bins(); ++k) spectrum[k] = std::exp(spectrum[k]);
+    fft.inverse();
     std::vector<double> out(h.size());
-    for (size_t n = 0; n < h.size(); ++n) out[n] = x[n].real() / kCepstrumSize;
+    for (size_t n = 0; n < h.size(); ++n) out[n] = time[n] / double(kCepstrumSize);
     return out;
 }
 
