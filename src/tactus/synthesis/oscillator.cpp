@@ -16,31 +16,25 @@ constexpr auto kOddReciprocals = [] {
 }();
 
 // sin(2 pi phase) for phase in [0, 1): the quarter-cycle reduction is exact in cycles, then a
-// Taylor polynomial of sin or cos on |x| <= pi/4 (truncation below 5e-17). Agrees with
+// Taylor polynomial of sin or cos on |x| <= pi/4 (truncation below 5e-17), evaluated by
+// Estrin's scheme (independent pairs: half the dependent steps of Horner's rule). Agrees with
 // std::sin(2 pi phase) to 1e-15 at a fraction of its cost.
 double sin_of_cycles(double phase) noexcept {
     const auto quadrant = static_cast<int>(4.0 * phase + 0.5);  // nearest quarter, 0 ... 4
     const double x = 2.0 * kPi * (phase - 0.25 * quadrant);
-    const double z = x * x;
-    if (quadrant % 2 == 0) {
-        const double s =
-            x * (1.0 +
-                 z * (-1.0 / 6 +
-                      z * (1.0 / 120 +
-                           z * (-1.0 / 5040 +
-                                z * (1.0 / 362880 +
-                                     z * (-1.0 / 39916800 +
-                                          z * (1.0 / 6227020800 + z * (-1.0 / 1307674368000))))))));
+    const double z = x * x, z2 = z * z, z4 = z2 * z2;
+    if (quadrant % 2 == 0) {  // x (1 - z/3! + z^2/5! - ... - z^7/15!)
+        const double p01 = 1.0 - z / 6, p23 = 1.0 / 120 - z / 5040;
+        const double p45 = 1.0 / 362880 - z / 39916800;
+        const double p67 = 1.0 / 6227020800 - z / 1307674368000;
+        const double s = x * ((p01 + z2 * p23) + z4 * (p45 + z2 * p67));
         return quadrant == 2 ? -s : s;
     }
-    const double c =
-        1.0 + z * (-1.0 / 2 +
-                   z * (1.0 / 24 +
-                        z * (-1.0 / 720 +
-                             z * (1.0 / 40320 +
-                                  z * (-1.0 / 3628800 + z * (1.0 / 479001600 +
-                                                             z * (-1.0 / 87178291200 +
-                                                                  z * (1.0 / 20922789888000))))))));
+    // 1 - z/2! + z^2/4! - ... + z^8/16!
+    const double p01 = 1.0 - z / 2, p23 = 1.0 / 24 - z / 720;
+    const double p45 = 1.0 / 40320 - z / 3628800;
+    const double p67 = 1.0 / 479001600 - z / 87178291200;
+    const double c = (p01 + z2 * p23) + z4 * ((p45 + z2 * p67) + z4 * (1.0 / 20922789888000));
     return quadrant == 3 ? -c : c;
 }
 }  // namespace
