@@ -24,16 +24,16 @@ double sin_of_cycles(double phase) noexcept {
     const double x = 2.0 * kPi * (phase - 0.25 * quadrant);
     const double z = x * x, z2 = z * z, z4 = z2 * z2;
     if (quadrant % 2 == 0) {  // x (1 - z/3! + z^2/5! - ... - z^7/15!)
-        const double p01 = 1.0 - z / 6, p23 = 1.0 / 120 - z / 5040;
-        const double p45 = 1.0 / 362880 - z / 39916800;
-        const double p67 = 1.0 / 6227020800 - z / 1307674368000;
+        const double p01 = 1.0 - z * (1.0 / 6), p23 = 1.0 / 120 - z * (1.0 / 5040);
+        const double p45 = 1.0 / 362880 - z * (1.0 / 39916800);
+        const double p67 = 1.0 / 6227020800 - z * (1.0 / 1307674368000);
         const double s = x * ((p01 + z2 * p23) + z4 * (p45 + z2 * p67));
         return quadrant == 2 ? -s : s;
     }
     // 1 - z/2! + z^2/4! - ... + z^8/16!
-    const double p01 = 1.0 - z / 2, p23 = 1.0 / 24 - z / 720;
-    const double p45 = 1.0 / 40320 - z / 3628800;
-    const double p67 = 1.0 / 479001600 - z / 87178291200;
+    const double p01 = 1.0 - z * (1.0 / 2), p23 = 1.0 / 24 - z * (1.0 / 720);
+    const double p45 = 1.0 / 40320 - z * (1.0 / 3628800);
+    const double p67 = 1.0 / 479001600 - z * (1.0 / 87178291200);
     const double c = (p01 + z2 * p23) + z4 * ((p45 + z2 * p67) + z4 * (1.0 / 20922789888000));
     return quadrant == 3 ? -c : c;
 }
