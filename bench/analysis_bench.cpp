@@ -83,9 +83,10 @@ const Spectra& amen_spectra() {
 
 void Brightness(benchmark::State& state) {
     const Spectra& s = amen_spectra();
+    tactus::Brightness brightness;
+    brightness.prepare(s.bins, s.bin_hz);
     for (auto _ : state)
-        for (const auto& m : s.magnitudes)
-            benchmark::DoNotOptimize(spectral_centroid_hz(m, s.bin_hz));
+        for (const auto& m : s.magnitudes) benchmark::DoNotOptimize(brightness.centroid_hz(m));
     state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(s.magnitudes.size()));
     state.SetLabel("items = analysis frames");
 }

@@ -42,6 +42,7 @@ class OnsetCounter final : public FrameObserver {
     void on_frame(const Features&, const ControlFrame& control) noexcept override {
         onsets += control.trigger;
     }
+    bool reads_features() const noexcept override { return false; }
     int onsets = 0;
 };
 

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
-#include "tactus/analysis/brightness.hpp"
 #include "tactus/core/units.hpp"
 
 namespace tactus {
@@ -16,6 +16,7 @@ void Analyzer::prepare(double sample_rate_hz, const Settings& s) {
         std::max<int>(1, static_cast<int>(ms_to_samples(s[P::analysis_hop_ms], sample_rate_hz)));
     stft_.prepare(nearest_power_of_two(ms_to_samples(s[P::analysis_window_ms], sample_rate_hz)),
                   sample_rate_hz);
+    brightness_.prepare(stft_.bins(), stft_.bin_hz());
     noisiness_.prepare(stft_.bins(), stft_.bin_hz());
     loudness_.prepare(sample_rate_hz, s[P::loudness_window_ms]);
     pitch_.prepare(sample_rate_hz, s[P::pitch_min_hz],
@@ -41,9 +42,13 @@ void Analyzer::reset() noexcept {
 }
 
 bool Analyzer::write(const float* samples, int count) noexcept {
-    for (int i = 0; i < count; ++i)
-        clean_[i] =
-            std::isnormal(samples[i]) ? std::clamp(samples[i], -kMaxInput, kMaxInput) : 0.0f;
+    for (int i = 0; i < count; ++i) {  // comparisons, not std::isnormal: they vectorise
+        const float x = samples[i], magnitude = std::fabs(x);
+        clean_[i] = magnitude >= std::numeric_limits<float>::min() && magnitude <= kMaxInput ? x
+                    : magnitude > kMaxInput && magnitude <= std::numeric_limits<float>::max()
+                        ? std::copysign(kMaxInput, x)
+                        : 0.0f;
+    }
     history_.write(clean_.data(), count);
     loudness_.write(clean_.data(), count);
     filled_ += count;
@@ -56,9 +61,9 @@ const Features& Analyzer::analyse() noexcept {
     f.frame_end_sample = history_.written();
     f.loudness_db = loudness_.loudness_db();
     stft_.analyse(history_);
-    f.brightness_hz = spectral_centroid_hz(stft_.magnitudes(), stft_.bin_hz());
+    f.brightness_hz = brightness_.centroid_hz(stft_.magnitudes());
     f.noisiness = noisiness_.compute(stft_.powers());
-    if (frames_++ % pitch_every_frames_ == 0) {
+    if (frames_++ % pitch_every_frames_ == 0 && pitch_enabled_) {
         const Pitch pitch = pitch_.analyse(history_);
         f.pitch_hz = pitch.f0_hz;
         f.pitch_confidence = pitch.confidence;

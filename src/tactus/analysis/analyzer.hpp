@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "tactus/analysis/brightness.hpp"
 #include "tactus/analysis/features.hpp"
 #include "tactus/analysis/loudness.hpp"
 #include "tactus/analysis/noisiness.hpp"
@@ -22,6 +23,9 @@ class Analyzer {
     void reset() noexcept;
 
     int hop_samples() const { return hop_samples_; }
+    // Pitch costs as much as the other features together: when nothing reads it, it is not
+    // computed and reads 0 (unvoiced). On by default.
+    void set_pitch_enabled(bool enabled) noexcept { pitch_enabled_ = enabled; }
     // Samples that can be written before the next frame is due (1 ... hop).
     int samples_to_next_frame() const noexcept { return hop_samples_ - filled_; }
     // Writes at most samples_to_next_frame() samples; returns true when a frame is due.
@@ -37,6 +41,7 @@ class Analyzer {
   private:
     SampleHistory history_;
     StftFrame stft_;
+    Brightness brightness_;
     Loudness loudness_;
     Noisiness noisiness_;
     PitchYin pitch_;
@@ -45,6 +50,7 @@ class Analyzer {
     std::vector<float> clean_;  // sanitised input, one hop
     int hop_samples_ = 0, filled_ = 0;
     int pitch_every_frames_ = 1, frames_ = 0;
+    bool pitch_enabled_ = true;
 };
 
 }  // namespace tactus

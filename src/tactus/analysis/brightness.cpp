@@ -1,17 +1,24 @@
 #include "tactus/analysis/brightness.hpp"
 
+#include <algorithm>
 #include <cmath>
+
+#include "tactus/core/fast_math.hpp"
 
 namespace tactus {
 
-double spectral_centroid_hz(std::span<const float> magnitudes, double bin_hz) noexcept {
+void Brightness::prepare(int bins, double bin_hz) {
+    log_bin_.resize(static_cast<size_t>(std::max(0, bins - 1)));
+    for (size_t k = 0; k < log_bin_.size(); ++k) log_bin_[k] = std::log(static_cast<double>(k + 1));
+    bin_hz_ = bin_hz;
+}
+
+double Brightness::centroid_hz(std::span<const float> magnitudes) const noexcept {
     constexpr double kSilentMagnitudeSum = 1e-9;
-    double weighted_log = 0.0, total = 0.0;
-    for (size_t k = 1; k < magnitudes.size(); ++k) {
-        weighted_log += std::log(static_cast<double>(k)) * magnitudes[k];
-        total += magnitudes[k];
-    }
-    return total > kSilentMagnitudeSum ? bin_hz * std::exp(weighted_log / total) : 0.0;
+    const int n = static_cast<int>(std::min(log_bin_.size(), magnitudes.size() - 1));
+    const double total = sum_of(magnitudes.data() + 1, n);
+    const double weighted_log = dot(log_bin_.data(), magnitudes.data() + 1, n);
+    return total > kSilentMagnitudeSum ? bin_hz_ * std::exp(weighted_log / total) : 0.0;
 }
 
 }  // namespace tactus

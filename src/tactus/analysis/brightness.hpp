@@ -7,9 +7,18 @@
 #pragma once
 
 #include <span>
+#include <vector>
 
 namespace tactus {
 
-double spectral_centroid_hz(std::span<const float> magnitudes, double bin_hz) noexcept;
+class Brightness {
+  public:
+    void prepare(int bins, double bin_hz);  // may allocate (ln k per bin)
+    double centroid_hz(std::span<const float> magnitudes) const noexcept;
+
+  private:
+    std::vector<double> log_bin_;  // ln k, k = 1 ... bins - 1
+    double bin_hz_ = 1;
+};
 
 }  // namespace tactus

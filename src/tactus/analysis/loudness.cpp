@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace tactus {
 namespace {
@@ -46,21 +47,31 @@ void Loudness::reset() noexcept {
     highpass_.reset();
     std::fill(squares_.begin(), squares_.end(), 0.0);
     position_ = 0;
+    sum_ = 0.0;
 }
 
 void Loudness::write(const float* samples, int count) noexcept {
     const size_t length = squares_.size();
+    Biquad shelf = shelf_, highpass = highpass_;  // state in locals: kept in registers
+    double sum = sum_;
+    size_t position = position_;
     for (int i = 0; i < count; ++i) {
-        const double y = highpass_.process(shelf_.process(samples[i]));
-        squares_[position_] = y * y;
-        if (++position_ == length) position_ = 0;
+        const double y = highpass.process(shelf.process(samples[i]));
+        sum += y * y - squares_[position];
+        squares_[position] = y * y;
+        if (++position == length) {  // re-sum once per window: no rounding drift
+            position = 0;
+            sum = std::accumulate(squares_.begin(), squares_.end(), 0.0);
+        }
     }
+    shelf_ = shelf;
+    highpass_ = highpass;
+    sum_ = sum;
+    position_ = position;
 }
 
 double Loudness::loudness_db() const noexcept {
-    double sum = 0.0;
-    for (double s : squares_) sum += s;
-    const double mean_square = sum / static_cast<double>(squares_.size());
+    const double mean_square = std::max(0.0, sum_) / static_cast<double>(squares_.size());
     if (mean_square <= 1e-12) return kFloorDb;
     return std::max(kFloorDb, kLkfsOffsetDb + power_to_db(mean_square));
 }

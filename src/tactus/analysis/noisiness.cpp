@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "tactus/core/fast_math.hpp"
+
 namespace tactus {
 namespace {
 // Critical band edges in Hz (Zwicker 1961, Table 1).
@@ -26,8 +28,7 @@ double Noisiness::compute(std::span<const float> powers) const noexcept {
     if (bands_.empty()) return 0.0;
     double log_sum = 0.0, sum = 0.0;
     for (const Band& band : bands_) {
-        double power = 0.0;
-        for (int k = band.first_bin; k < band.end_bin; ++k) power += powers[k];
+        const double power = sum_of(powers.data() + band.first_bin, band.end_bin - band.first_bin);
         const double density = power / (band.end_bin - band.first_bin) + kSilentPower;
         log_sum += std::log(density);
         sum += density;

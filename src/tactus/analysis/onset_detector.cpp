@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tactus/core/fast_math.hpp"
 #include "tactus/core/units.hpp"
 
 namespace tactus {
@@ -19,6 +20,7 @@ void OnsetDetector::prepare(double sample_rate_hz, int hop_samples, const OnsetS
     end_bin_ = std::min(stft_.bins(), static_cast<int>(kTopHz / stft_.bin_hz()) + 1);
     previous_log_.assign(static_cast<size_t>(stft_.bins()), 0.0f);
     older_log_.assign(static_cast<size_t>(stft_.bins()), 0.0f);
+    rise_.assign(static_cast<size_t>(stft_.bins()), 0.0f);
     const auto history_frames =
         std::max<int64_t>(1, std::llround(s.history_ms * 1e-3 * sample_rate_hz / hop_samples));
     flux_history_.assign(static_cast<size_t>(history_frames), 0.0);
@@ -45,14 +47,14 @@ OnsetDecision OnsetDetector::analyse(const SampleHistory& history) noexcept {
     const auto& magnitudes = stft_.magnitudes();
     // Rise over the louder of the two previous frames (SuperFlux's temporal maximum, Böck &
     // Widmer 2013): a noise bin must beat both to count, a new sound beats both.
-    double flux = 0.0;
     for (int k = 0; k < end_bin_; ++k) {
-        const float log_magnitude = std::log1p(static_cast<float>(kLogCompression) * magnitudes[k]);
-        flux += std::max(0.0f, log_magnitude - std::max(previous_log_[k], older_log_[k]));
+        const float log_magnitude =
+            fast_log(1.0f + static_cast<float>(kLogCompression) * magnitudes[k]);
+        rise_[k] = std::max(0.0f, log_magnitude - std::max(previous_log_[k], older_log_[k]));
         older_log_[k] = previous_log_[k];
         previous_log_[k] = log_magnitude;
     }
-    flux *= 100.0 / end_bin_;  // per hundred bins: independent of window size
+    const double flux = sum_of(rise_.data(), end_bin_) * 100.0 / end_bin_;  // per 100 bins
 
     // Median of the recent flux: the background level, not raised by the hits themselves.
     std::copy(flux_history_.begin(), flux_history_.end(), scratch_.begin());

@@ -44,7 +44,7 @@ class OnsetDetector {
 
     OnsetSettings settings_;
     StftFrame stft_;
-    std::vector<float> previous_log_, older_log_, segment_;
+    std::vector<float> previous_log_, older_log_, rise_, segment_;  // rise_: per bin, this frame
     std::vector<double> flux_history_, scratch_, block_energy_;
     size_t history_position_ = 0;
     int hop_samples_ = 0, sub_block_samples_ = 0, end_bin_ = 0;

@@ -18,13 +18,22 @@ void SampleHistory::reset() noexcept {
 }
 
 void SampleHistory::write(const float* samples, int count) noexcept {
-    for (int i = 0; i < count; ++i) ring_[static_cast<uint64_t>(written_ + i) & mask_] = samples[i];
+    const auto skipped = std::max<int64_t>(0, count - static_cast<int64_t>(ring_.size()));
+    written_ += skipped;  // only the newest ring-full can be kept
+    samples += skipped;
+    count -= static_cast<int>(skipped);
+    const auto start = static_cast<uint64_t>(written_) & mask_;
+    const auto first = std::min<uint64_t>(static_cast<uint64_t>(count), ring_.size() - start);
+    std::copy_n(samples, first, ring_.data() + start);
+    std::copy_n(samples + first, count - first, ring_.data());
     written_ += count;
 }
 
 void SampleHistory::read_latest(float* out, int count) const noexcept {
-    const int64_t start = written_ - count;
-    for (int i = 0; i < count; ++i) out[i] = ring_[static_cast<uint64_t>(start + i) & mask_];
+    const auto start = static_cast<uint64_t>(written_ - count) & mask_;  // ring holds zeros
+    const auto first = std::min<uint64_t>(static_cast<uint64_t>(count), ring_.size() - start);
+    std::copy_n(ring_.data() + start, first, out);
+    std::copy_n(ring_.data(), count - first, out + first);
 }
 
 }  // namespace tactus

@@ -30,7 +30,8 @@ void StftFrame::analyse(const SampleHistory& history) noexcept {
     fft_.forward();
     const std::complex<float>* x = fft_.spectrum();
     for (int k = 0; k < fft_.bins(); ++k) {
-        powers_[k] = std::norm(x[k]);
+        const float re = x[k].real(), im = x[k].imag();
+        powers_[k] = re * re + im * im;
         magnitudes_[k] = std::sqrt(powers_[k]);
     }
 }

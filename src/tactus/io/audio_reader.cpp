@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace tactus {
@@ -25,15 +26,30 @@ AudioReader::~AudioReader() {
 
 int AudioReader::read(float* mono, int max_frames) {
     const int channels = info_.channels;
+    const auto samples = static_cast<size_t>(max_frames) * channels;
+    // 16-bit PCM is read as integers and scaled here: libsndfile's own conversion to float
+    // costs more than the whole WAV read.
+    const bool pcm16 = (info_.format & SF_FORMAT_SUBMASK) == SF_FORMAT_PCM_16 &&
+                       (info_.format & SF_FORMAT_TYPEMASK) != SF_FORMAT_FLAC;
     float* destination = mono;
-    if (channels > 1) {
-        interleaved_.resize(static_cast<size_t>(max_frames) * channels);
+    if (channels > 1 || pcm16) {
+        interleaved_.resize(samples);
         destination = interleaved_.data();
     }
-    const sf_count_t got = sf_readf_float(file_, destination, max_frames);
+    sf_count_t got = 0;
+    if (pcm16) {
+        pcm16_.resize(samples);
+        got = sf_readf_short(file_, pcm16_.data(), max_frames);
+        constexpr float kScale = 1.0f / 32768.0f;  // SFC_SET_NORM_FLOAT's scale for 16 bits
+        for (sf_count_t i = 0; i < std::max<sf_count_t>(0, got) * channels; ++i)
+            interleaved_[i] = pcm16_[i] * kScale;
+    } else {
+        got = sf_readf_float(file_, destination, max_frames);
+    }
     if (got < 0 || (got == 0 && sf_error(file_) != SF_ERR_NO_ERROR))
         throw std::runtime_error(
             fmt::format("{}: read error: {}", path_.string(), sf_strerror(file_)));
+    if (channels == 1 && pcm16) std::copy_n(interleaved_.data(), got, mono);
     if (channels > 1) {
         const float scale = 1.0f / static_cast<float>(channels);
         for (sf_count_t i = 0; i < got; ++i) {

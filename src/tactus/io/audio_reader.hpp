@@ -29,6 +29,7 @@ class AudioReader {
     SNDFILE* file_ = nullptr;
     SF_INFO info_{};
     std::vector<float> interleaved_;
+    std::vector<short> pcm16_;
 };
 
 // A whole file as mono samples, for tools and tests; streaming code uses AudioReader.

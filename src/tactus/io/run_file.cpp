@@ -11,7 +11,7 @@ namespace tactus {
 
 RunSummary run_file(const std::filesystem::path& input, Engine& engine,
                     const RunCallbacks& callbacks) {
-    constexpr int kBlock = 1024;
+    constexpr int kBlock = Engine::kMaxBlock;  // large reads: fewer system calls
     AudioReader reader(input);
     try {
         engine.prepare(reader.sample_rate_hz(), kBlock);

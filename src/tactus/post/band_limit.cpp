@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "tactus/post/biquad_cascade.hpp"
+
 namespace tactus {
 
 void BandLimit::prepare(double sample_rate_hz, double low_hz, double high_hz, int order) {
@@ -27,11 +29,7 @@ void BandLimit::reset() noexcept {
 }
 
 void BandLimit::process(float* samples, int count) noexcept {
-    for (int i = 0; i < count; ++i) {
-        double x = samples[i];
-        for (int s = 0; s < count_; ++s) x = sections_[s].process(x);
-        samples[i] = static_cast<float>(x);
-    }
+    process_cascade(sections_.data(), count_, samples, count);
 }
 
 double BandLimit::magnitude_db(double frequency_hz) const {

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <complex>
+#include <utility>
 
 #include "tactus/core/units.hpp"
 
@@ -32,6 +33,8 @@ class Biquad {
     void set(const BiquadCoefficients& c) { c_ = c; }
     const BiquadCoefficients& coefficients() const { return c_; }
     void reset() noexcept { s1_ = s2_ = 0.0; }
+    std::pair<double, double> state() const noexcept { return {s1_, s2_}; }
+    void set_state(std::pair<double, double> s) noexcept { s1_ = s.first, s2_ = s.second; }
 
     double process(double x) noexcept {
         const double y = c_.b0 * x + s1_;

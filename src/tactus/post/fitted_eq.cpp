@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "tactus/post/biquad_cascade.hpp"
+
 namespace tactus {
 namespace {
 
@@ -104,11 +106,7 @@ void FittedEq::reset() noexcept {
 }
 
 void FittedEq::process(float* samples, int count) noexcept {
-    for (int i = 0; i < count; ++i) {
-        double x = samples[i] * gain_;
-        for (int s = 0; s < count_; ++s) x = sections_[s].process(x);
-        samples[i] = static_cast<float>(x);
-    }
+    process_cascade(sections_.data(), count_, samples, count, gain_);
 }
 
 double FittedEq::magnitude_db(double frequency_hz) const {

@@ -26,6 +26,7 @@ void PeakLimiter::reset() noexcept {
     std::fill(held_gain_.begin(), held_gain_.end(), 1.0);
     minimum_head_ = minimum_size_ = 0;
     time_ = 0;
+    slot_ = 0;
     released_gain_ = 1.0;
     box_sum_ = static_cast<double>(lookahead_);
 }
@@ -50,13 +51,15 @@ void PeakLimiter::process(float* samples, int count) noexcept {
 
         // Sliding minimum of the wanted gain over the last lookahead + 1 samples: every gain
         // averaged into a sample's output below has seen that sample's wish.
+        // Ring positions wrap by comparison: no integer division per sample.
+        const auto wrap = [capacity](size_t i) { return i >= capacity ? i - capacity : i; };
         while (minimum_size_ > 0 &&
-               minimum_[(minimum_head_ + minimum_size_ - 1) % capacity].second >= wanted)
+               minimum_[wrap(minimum_head_ + minimum_size_ - 1)].second >= wanted)
             --minimum_size_;
-        minimum_[(minimum_head_ + minimum_size_) % capacity] = {time_, wanted};
+        minimum_[wrap(minimum_head_ + minimum_size_)] = {time_, wanted};
         ++minimum_size_;
         if (minimum_[minimum_head_].first < time_ - lookahead_) {
-            minimum_head_ = (minimum_head_ + 1) % capacity;
+            minimum_head_ = wrap(minimum_head_ + 1);
             --minimum_size_;
         }
         const double held = minimum_[minimum_head_].second;
@@ -65,7 +68,7 @@ void PeakLimiter::process(float* samples, int count) noexcept {
         released_gain_ = std::min(held, held + release_ * (released_gain_ - held));
 
         // Box average over the look-ahead, aligned with the delayed sample.
-        const size_t slot = static_cast<size_t>(time_) % length;
+        const size_t slot = slot_;
         box_sum_ += released_gain_ - held_gain_[slot];
         held_gain_[slot] = released_gain_;
         if (slot == length - 1)  // re-sum once per look-ahead: no rounding drift, O(1) a sample
@@ -77,6 +80,7 @@ void PeakLimiter::process(float* samples, int count) noexcept {
         const double y = std::clamp(delayed * gain, -ceiling_, ceiling_);
         samples[i] = static_cast<float>(y);
         ++time_;
+        if (++slot_ == length) slot_ = 0;
     }
 }
 

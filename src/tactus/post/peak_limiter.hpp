@@ -34,6 +34,7 @@ class PeakLimiter {
     std::vector<std::pair<int64_t, double>> minimum_;  // monotonic deque (ring) for sliding min
     size_t minimum_head_ = 0, minimum_size_ = 0;
     int64_t time_ = 0;
+    size_t slot_ = 0;  // time_ modulo the look-ahead
     double released_gain_ = 1, box_sum_ = 0;
 };
 
