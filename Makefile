@@ -15,8 +15,8 @@ build: setup
 
 demo: build
 	mkdir -p out
-	$(TACTUS) render $(AMEN) -o out/amen.vibration.wav
-	$(TACTUS) analyze $(AMEN) -o out/amen.features.csv
+	$(TACTUS) render $(AMEN) -o out/amen.vibration.wav --force
+	$(TACTUS) analyze $(AMEN) -o out/amen.features.csv --force
 
 test: build
 	ctest --preset release -j $(JOBS)

@@ -15,6 +15,7 @@ namespace {
 
 struct AnalyzeOptions {
     std::string input, output, format;
+    bool force = false;
     PipelineOptions pipeline;
 };
 
@@ -83,7 +84,7 @@ void analyze(const AnalyzeOptions& o) {
     const std::filesystem::path out_path = o.output;
     std::string format = o.format;
     if (format.empty()) format = out_path.extension() == ".json" ? "json" : "csv";
-    if (!o.output.empty() && o.output != "-") refuse_overwriting_input(o.input, o.output);
+    if (!o.output.empty() && o.output != "-") check_output(o.input, o.output, o.force);
 
     Engine engine(settings);
     TextOutput output(out_path);
@@ -111,6 +112,7 @@ void add_analyze(CLI::App& app) {
                         "FILE.csv or FILE.json (default: CSV on stdout)");
     command->add_option("--format", options->format, "csv or json (default: from -o's extension)")
         ->check(CLI::IsMember({"csv", "json"}));
+    add_force_option(*command, options->force);
     options->pipeline.add_to(*command);
     command->callback([options] { analyze(*options); });
 }

@@ -16,6 +16,7 @@ namespace {
 struct RenderOptions {
     std::string input, output;
     int channels = 1;
+    bool force = false;
     PipelineOptions pipeline;
 };
 
@@ -29,7 +30,7 @@ class OnsetCounter final : public FrameObserver {
 
 void render(const RenderOptions& o) {
     const Settings settings = o.pipeline.resolve();
-    refuse_overwriting_input(o.input, o.output);
+    check_output(o.input, o.output, o.force);
     Engine engine(settings);
     OnsetCounter counter;
     engine.set_observer(&counter);
@@ -64,6 +65,7 @@ void add_render(CLI::App& app) {
     command->add_option("--channels,-c", options->channels, "identical actuator channels")
         ->check(CLI::Range(1, 64))
         ->capture_default_str();
+    add_force_option(*command, options->force);
     options->pipeline.add_to(*command);
     command->callback([options] { render(*options); });
 }

@@ -1,50 +1,22 @@
 // The tactus command line, run as a user runs it: outputs on real files, exit codes, one-line
 // errors on stderr, and nothing written (or overwritten) when a run fails.
+#include "support/cli.hpp"
+
 #include <gtest/gtest.h>
 #include <sndfile.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
-#include "support/temp_dir.hpp"
-
 namespace {
 
 namespace fs = std::filesystem;
+using tactus::test::Cli;
+using tactus::test::info_of;
+using Result = tactus::test::CliResult;
 const std::string kAmen = "/usr/share/sonic-pi/samples/loop_amen_full.flac";
-
-struct Result {
-    int exit_code;
-    std::string out, err;
-};
-
-class Cli : public tactus::test::TempDirTest {
-  protected:
-    Result run(const std::string& arguments) const {
-        const fs::path err = dir_ / "stderr.txt";
-        const std::string command =
-            std::string(TACTUS_CLI) + " " + arguments + " 2>" + err.string();
-        FILE* pipe = popen(command.c_str(), "r");
-        std::string out;
-        char buffer[4096];
-        while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
-        const int status = pclose(pipe);
-        std::ifstream e(err);
-        std::stringstream s;
-        s << e.rdbuf();
-        return {WEXITSTATUS(status), out, s.str()};
-    }
-};
-
-SF_INFO info_of(const fs::path& path) {
-    SF_INFO info{};
-    SNDFILE* f = sf_open(path.c_str(), SFM_READ, &info);
-    if (f) sf_close(f);
-    return info;
-}
 
 TEST_F(Cli, HelpEverywhere) {
     for (const char* command : {"", "render ", "analyze ", "onsets ", "presets "}) {

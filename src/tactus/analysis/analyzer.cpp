@@ -26,6 +26,7 @@ void Analyzer::prepare(double sample_rate_hz, const Settings& s) {
     history_.prepare(
         std::max({stft_.window_samples(), pitch_.span_samples(), onsets_.span_samples()}));
     clean_.assign(static_cast<size_t>(hop_samples_), 0.0f);
+    dc_blocker_.prepare(sample_rate_hz);
     pitch_every_frames_ = std::max(
         1, static_cast<int>(std::lround(kPitchIntervalMs * 1e-3 * sample_rate_hz / hop_samples_)));
     reset();
@@ -34,6 +35,7 @@ void Analyzer::prepare(double sample_rate_hz, const Settings& s) {
 void Analyzer::reset() noexcept {
     history_.reset();
     loudness_.reset();
+    dc_blocker_.reset();
     onsets_.reset();
     features_ = {};
     filled_ = 0;
@@ -44,8 +46,9 @@ bool Analyzer::write(const float* samples, int count) noexcept {
     for (int i = 0; i < count; ++i)
         clean_[i] =
             std::isnormal(samples[i]) ? std::clamp(samples[i], -kMaxInput, kMaxInput) : 0.0f;
-    history_.write(clean_.data(), count);
     loudness_.write(clean_.data(), count);
+    dc_blocker_.process(clean_.data(), count);
+    history_.write(clean_.data(), count);
     filled_ += count;
     return filled_ >= hop_samples_;
 }

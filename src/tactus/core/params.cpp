@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "tactus/core/printable.hpp"
+
 namespace tactus {
 namespace {
 
@@ -135,6 +137,10 @@ std::optional<P> find_param(std::string_view key) {
 }
 
 std::string nearest_param(std::string_view key) {
+    // Edit distance costs length x length per key: a megabyte of typing must not hang the
+    // suggestion, and past the longest key's length it cannot change much.
+    constexpr size_t kComparedChars = 64;
+    key = key.substr(0, kComparedChars);
     std::string_view best;
     size_t best_distance = SIZE_MAX;
     for (const auto& s : kTable) {
@@ -167,12 +173,13 @@ void Settings::set_from_text(P id, std::string_view text) {
         std::string allowed;
         for (auto c : s.choices) allowed += (allowed.empty() ? "" : ", ") + std::string(c);
         throw std::invalid_argument(
-            fmt::format("{} = '{}' is not one of: {}", s.key, text, allowed));
+            fmt::format("{} = '{}' is not one of: {}", s.key, printable(text), allowed));
     }
     double value = 0;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (error != std::errc() || end != text.data() + text.size())
-        throw std::invalid_argument(fmt::format("{} = '{}' is not a number", s.key, text));
+        throw std::invalid_argument(
+            fmt::format("{} = '{}' is not a number", s.key, printable(text)));
     set(id, value);
 }
 
