@@ -124,3 +124,15 @@ for signal in INT TERM HUP KILL; do
   echo "| SIG$signal during render: files left | \`$(leftovers | sed 's/tmp-[0-9]*/tmp-PID/')\` | $code | $test |"
   rm -f .out.wav.tmp-* out.wav
 done
+# Hours-long input: streamed, so peak memory is that of a 10 s file.
+sox -n -r 8000 -b 16 short.wav synth 10 sine 60 tremolo 2 90
+sox -n -r 8000 -b 16 hour.wav synth 1:00:00 sine 60 tremolo 2 90
+for input in short.wav hour.wav; do
+  "$python" - "$tactus" "$input" <<'EOF2'
+import resource, subprocess, sys
+r = subprocess.run([sys.argv[1], "render", sys.argv[2], "-o", "out.wav"], capture_output=True, text=True)
+rss = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024
+print(f"| {sys.argv[2]} (8 kHz): peak RSS {rss:.1f} MiB | `{r.stderr.strip()}` | {r.returncode} | |")
+EOF2
+  rm -f out.wav
+done

@@ -150,6 +150,10 @@ std::string nearest_param(std::string_view key) {
     return std::string(best);
 }
 
+std::string range_text(const ParamSpec& s) {
+    return fmt::format("{} to {}{}{}", s.min, s.max, s.unit.empty() ? "" : " ", s.unit);
+}
+
 Settings::Settings() {
     for (size_t i = 0; i < std::size(kTable); ++i) values_[i] = kTable[i].default_value;
 }
@@ -157,9 +161,8 @@ Settings::Settings() {
 void Settings::set(P id, double value) {
     const ParamSpec& s = spec(id);
     if (!std::isfinite(value) || value < s.min || value > s.max) {
-        const std::string unit = s.unit.empty() ? "" : fmt::format(" {}", s.unit);
-        throw std::invalid_argument(fmt::format("{} = {} is out of range: allowed {} to {}{}",
-                                                s.key, value, s.min, s.max, unit));
+        throw std::invalid_argument(
+            fmt::format("{} = {} is out of range: allowed {}", s.key, value, range_text(s)));
     }
     if (s.kind == ParamKind::choice) value = std::round(value);
     values_[static_cast<int>(id)] = value;

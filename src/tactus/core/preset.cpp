@@ -49,9 +49,8 @@ void apply_node(Settings& settings, const std::string& key, const toml::node& no
             settings.set_from_text(*id, *node.value<std::string>());
         } else {
             if (!node.is_number())
-                throw std::invalid_argument(fmt::format("{} must be a number, {} to {}{}{}", key,
-                                                        s.min, s.max, s.unit.empty() ? "" : " ",
-                                                        s.unit));
+                throw std::invalid_argument(
+                    fmt::format("{} must be a number, {}", key, range_text(s)));
             settings.set(*id, *node.value<double>());
         }
     } catch (const std::invalid_argument& e) {

@@ -77,7 +77,8 @@ int AudioReader::read(float* mono, int max_frames) {
     // still holds the whole length) is truncated. One MPEG frame of slack (1152 samples, twice)
     // allows for an encoder's padding estimate.
     constexpr int64_t kSlackFrames = 2 * 1152;
-    if (got == 0 && info_.frames > 0 && frames_read_ + kSlackFrames < info_.frames)
+    const bool length_known = info_.frames > 0 && info_.frames != SF_COUNT_MAX;  // not a pipe
+    if (got == 0 && length_known && frames_read_ + kSlackFrames < info_.frames)
         throw std::runtime_error(fmt::format(
             "{}: truncated or corrupt: the header announces {} frames, only {} could be decoded",
             path_.string(), info_.frames, frames_read_));
