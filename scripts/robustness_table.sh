@@ -106,6 +106,8 @@ row "existing analyze -o, no --force" BadInput.ExistingOutputNeedsForce "$tactus
 row "output directory missing" BadInput.OutputDirectoryMissing "$tactus" render drums.wav -o nowhere/out.wav
 row "output is a directory" BadInput.OutputIsADirectory "$tactus" render drums.wav -o sub --force
 row "unwritable directory (not root)" BadInput.UnwritableDirectory $nobody "$tactus" render drums.wav -o locked/out.wav
+row "stdout on a full device (analyze > /dev/full)" BadInput.StdoutOnAFullDevice sh -c "'$tactus' analyze drums.wav >/dev/full"
+row "existing onsets -o, no --force" BadInput.ExistingOutputNeedsForce "$tactus" onsets drums.wav -o exists.wav
 if mkdir small && mount -t tmpfs -o size=64k tmpfs small 2>/dev/null; then
   row "full disk (64 KiB tmpfs), render" FullDisk.RenderAndAnalyzeReportNoSpaceAndLeaveNothing "$tactus" render long.wav -o small/out.wav
   row "full disk (64 KiB tmpfs), analyze" FullDisk.RenderAndAnalyzeReportNoSpaceAndLeaveNothing "$tactus" analyze long.wav -o small/out.csv

@@ -352,6 +352,10 @@ TEST_F(BadInput, ExistingOutputNeedsForce) {
     EXPECT_NE(run("analyze " + input.string() + " -o " + csv.string()).exit_code, 0);
     EXPECT_EQ(fs::file_size(csv), 7u);
 
+    const fs::path txt = write_text("onsets.txt", "keep me");
+    EXPECT_NE(run("onsets " + input.string() + " -o " + txt.string()).exit_code, 0);
+    EXPECT_EQ(fs::file_size(txt), 7u);
+
     ASSERT_EQ(render(input, "--force").exit_code, 0);
     EXPECT_EQ(rendered().size(), static_cast<size_t>(kRate));
     ASSERT_EQ(run("analyze " + input.string() + " -o " + csv.string() + " --force").exit_code, 0);
@@ -389,6 +393,16 @@ TEST_F(BadInput, UnwritableDirectory) {
         EXPECT_NE(r.err.find(out.string() + ": cannot write"), std::string::npos) << r.err;
         EXPECT_NE(r.err.find("Permission denied"), std::string::npos) << r.err;
         EXPECT_TRUE(fs::is_empty(locked));
+    }
+}
+
+TEST_F(BadInput, StdoutOnAFullDevice) {
+    const fs::path input = drums("in.wav", 3);
+    for (const char* command : {"analyze", "onsets"}) {
+        const CliResult r = run(std::string(command) + " " + input.string() + " >/dev/full");
+        EXPECT_NE(r.exit_code, 0) << command;
+        EXPECT_EQ(r.err, "tactus: error: stdout: write failed: No space left on device\n")
+            << command;
     }
 }
 

@@ -44,14 +44,14 @@ TextOutput::~TextOutput() {
 }
 
 void TextOutput::commit() {
+    // errno is not cleared first: a stream that failed mid-run keeps failing silently, and the
+    // reason is what the failing write left in errno.
     if (!file_) {
-        errno = 0;
         std::cout.flush();
         if (!std::cout)
             throw std::runtime_error(fmt::format("stdout: write failed{}", system_reason()));
         return;
     }
-    errno = 0;
     file_->flush();
     file_->close();
     if (file_->fail()) {
