@@ -1,22 +1,24 @@
 // The tactus command line, run as a user runs it: outputs on real files, exit codes, one-line
 // errors on stderr, and nothing written (or overwritten) when a run fails.
-#include "support/cli.hpp"
-
 #include <gtest/gtest.h>
 #include <sndfile.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
+#include "support/cli.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
+const std::string kAmen = "/usr/share/sonic-pi/samples/loop_amen_full.flac";
+
 using tactus::test::Cli;
 using tactus::test::info_of;
 using Result = tactus::test::CliResult;
-const std::string kAmen = "/usr/share/sonic-pi/samples/loop_amen_full.flac";
 
 TEST_F(Cli, HelpEverywhere) {
     for (const char* command : {"", "render ", "analyze ", "onsets ", "presets "}) {
