@@ -22,7 +22,7 @@
 #include <thread>
 #include <vector>
 
-#include "support/cli.hpp"
+#include "support/run_cli.hpp"
 #include "support/signals.hpp"
 #include "tactus/io/audio_reader.hpp"
 

@@ -9,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-#include "support/cli.hpp"
+#include "support/run_cli.hpp"
 
 namespace {
 
