@@ -4,7 +4,7 @@ JOBS ?= $(shell nproc)
 AMEN := /usr/share/sonic-pi/samples/loop_amen_full.flac
 TACTUS := $(BUILD)/apps/tactus/tactus
 
-.PHONY: setup build demo test eval bench bench-compare format clean
+.PHONY: setup build demo test test-asan fuzz eval bench bench-compare format clean
 
 setup:
 	bash scripts/setup.sh
@@ -15,12 +15,25 @@ build: setup
 
 demo: build
 	mkdir -p out
-	$(TACTUS) render $(AMEN) -o out/amen.vibration.wav --actuator voice-coil
-	$(TACTUS) analyze $(AMEN) -o out/amen.features.csv --actuator voice-coil
-	$(TACTUS) meter out/amen.vibration.wav -o out/amen.meter.csv
+	$(TACTUS) render $(AMEN) -o out/amen.vibration.wav --actuator voice-coil --force
+	$(TACTUS) analyze $(AMEN) -o out/amen.features.csv --actuator voice-coil --force
+	$(TACTUS) meter out/amen.vibration.wav -o out/amen.meter.csv --force
 
 test: build
 	ctest --preset release -j $(JOBS)
+
+# Every test again under AddressSanitizer + UndefinedBehaviorSanitizer (build/asan).
+test-asan: setup
+	cmake --preset asan
+	cmake --build --preset asan -j $(JOBS)
+	ctest --preset asan -j $(JOBS)
+
+# Each libFuzzer target for FUZZ_SECONDS (clang; build/fuzz, findings written there).
+FUZZ_SECONDS ?= 600
+fuzz: setup
+	cmake --preset fuzz -DTACTUS_FUZZ_SECONDS=$(FUZZ_SECONDS)
+	cmake --build --preset fuzz -j $(JOBS) --target fuzz_targets
+	ctest --preset fuzz -j $(JOBS)
 
 eval: build
 	/usr/bin/python3 eval/evaluate.py $(BUILD) --out eval/results.md

@@ -140,7 +140,7 @@ def main():
             per_file.append(file_scores)
             offsets.extend(file_offsets)
         out = renders / f"{name}.vibration.wav"
-        run([tactus, "render", str(wav), "-o", str(out), "--preset", args.preset])
+        run([tactus, "render", str(wav), "-o", str(out), "--force", "--preset", args.preset])
 
     per_kit = []
     all_latencies = []
@@ -151,7 +151,7 @@ def main():
         for instrument in ("kick", "snare"):
             wav = corpus / f"gain-{kit}-{instrument}.wav"
             out = renders / f"gain-{kit}-{instrument}.vibration.wav"
-            run([tactus, "render", str(wav), "-o", str(out), "--preset", args.preset])
+            run([tactus, "render", str(wav), "-o", str(out), "--force", "--preset", args.preset])
             y, rate = soundfile.read(out, dtype="float64")
             hits = read_hits(corpus / f"gain-{kit}-{instrument}.hits.csv")
             peaks, freqs = [], []
@@ -175,8 +175,8 @@ def main():
 
     silent = work / "silence.wav"
     soundfile.write(silent, np.zeros(44100 * 3), 44100, subtype="FLOAT")
-    run([tactus, "render", str(silent), "-o", str(work / "silence.vibration.wav"), "--preset",
-         args.preset])
+    run([tactus, "render", str(silent), "-o", str(work / "silence.vibration.wav"), "--force",
+         "--preset", args.preset])
     silence_out, _ = soundfile.read(work / "silence.vibration.wav")
     silence_exact = bool(np.all(silence_out == 0))
 

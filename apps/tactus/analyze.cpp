@@ -23,6 +23,7 @@ namespace {
 
 struct AnalyzeOptions {
     std::string input, output, format, actuator;
+    bool force = false;
     PipelineOptions pipeline;
 };
 
@@ -124,7 +125,7 @@ void analyze(const AnalyzeOptions& o) {
     const std::filesystem::path out_path = o.output;
     std::string format = o.format;
     if (format.empty()) format = out_path.extension() == ".json" ? "json" : "csv";
-    if (!o.output.empty() && o.output != "-") refuse_overwriting_input(o.input, o.output);
+    if (!o.output.empty() && o.output != "-") check_output(o.input, o.output, o.force);
 
     Engine engine(settings);
     // The vibration drives the named actuator (compensated, as render does) or, by default, is
@@ -164,6 +165,7 @@ void add_analyze(CLI::App& app) {
     add_actuator_option(*command, options->actuator,
                         "actuator profile (name or FILE.toml): compensate for it as render does "
                         "and meter through it (default: meter through voice-coil)");
+    add_force_option(*command, options->force);
     options->pipeline.add_to(*command);
     command->callback([options] { analyze(*options); });
 }

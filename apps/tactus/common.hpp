@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -19,6 +20,28 @@ inline void refuse_overwriting_input(const std::filesystem::path& input,
     if (std::filesystem::equivalent(input, output, error))
         throw std::runtime_error(
             fmt::format("{}: output would overwrite the input file", output.string()));
+}
+
+// Every command that writes a file checks its output with this before reading any audio: never
+// the input itself, never an existing file unless `force`, and a directory that exists.
+inline void check_output(const std::filesystem::path& input, const std::filesystem::path& output,
+                         bool force) {
+    refuse_overwriting_input(input, output);
+    std::error_code error;
+    if (std::filesystem::is_directory(output, error))
+        throw std::runtime_error(fmt::format("{}: is a directory", output.string()));
+    if (!force && std::filesystem::exists(output, error))
+        throw std::runtime_error(
+            fmt::format("{}: already exists (use --force to replace it)", output.string()));
+    const std::filesystem::path dir = output.has_parent_path() ? output.parent_path() : ".";
+    if (!std::filesystem::is_directory(dir, error))
+        throw std::runtime_error(fmt::format("{}: cannot write: directory '{}' does not exist",
+                                             output.string(), dir.string()));
+}
+
+// The --force flag of every command that writes a file.
+inline void add_force_option(CLI::App& command, bool& force) {
+    command.add_flag("--force", force, "replace an existing output file");
 }
 
 // Runs `engine` over `input` with a progress bar labelled `label`.

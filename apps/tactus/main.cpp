@@ -4,10 +4,15 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "tactus/io/temporary_path.hpp"
 
 int main(int argc, char** argv) {
     CLI::App app{"tactus: turns music into vibrotactile feedback (Birnbaum & Wanderley's system)"};
     app.require_subcommand(1);
+    app.failure_message([](const CLI::App*, const CLI::Error& e) {  // one line, like every error
+        return std::string("tactus: error: ") + e.what() + '\n';
+    });
+    tactus::remove_temporaries_on_signals();  // Ctrl-C or kill leaves no partial output
     tactus::cli::add_render(app);
     tactus::cli::add_analyze(app);
     tactus::cli::add_onsets(app);

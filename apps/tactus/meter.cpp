@@ -19,6 +19,7 @@ using perception::kChannels;
 
 struct MeterOptions {
     std::string input, output, actuator = std::string(kDefaultActuator);
+    bool force = false;
     double contact_area_cm2 = Settings()[P::perception_contact_area_cm2];
 };
 
@@ -43,7 +44,7 @@ void print_summary(const MeterOptions& o, const ActuatorProfile& a, double secon
 }
 
 void meter(const MeterOptions& o) {
-    if (!o.output.empty() && o.output != "-") refuse_overwriting_input(o.input, o.output);
+    if (!o.output.empty() && o.output != "-") check_output(o.input, o.output, o.force);
     const ActuatorProfile actuator = load_actuator(resolve_actuator(o.actuator));
     AudioReader reader(o.input);
     perception::SensationMeter meter;
@@ -94,6 +95,7 @@ void add_meter(CLI::App& app) {
         ->check(CLI::ExistingFile);
     command->add_option("-o,--output", options->output,
                         "FILE.csv: sensation levels every 10 ms (dB SL, 0 = not engaged)");
+    add_force_option(*command, options->force);
     add_actuator_option(*command, options->actuator,
                         "actuator profile (name in actuators/ or FILE.toml; default voice-coil)");
     command

@@ -12,6 +12,7 @@ namespace {
 
 struct OnsetsOptions {
     std::string input, output;
+    bool force = false;
     PipelineOptions pipeline;
 };
 
@@ -32,7 +33,7 @@ class OnsetWriter final : public FrameObserver {
 
 void onsets(const OnsetsOptions& o) {
     const Settings settings = o.pipeline.resolve();
-    if (!o.output.empty() && o.output != "-") refuse_overwriting_input(o.input, o.output);
+    if (!o.output.empty() && o.output != "-") check_output(o.input, o.output, o.force);
     Engine engine(settings);
     TextOutput output(o.output);
     OnsetWriter writer(output.stream(), engine);
@@ -51,6 +52,7 @@ void add_onsets(CLI::App& app) {
         ->required()
         ->check(CLI::ExistingFile);
     command->add_option("-o,--output", options->output, "file to write (default: stdout)");
+    add_force_option(*command, options->force);
     options->pipeline.add_to(*command);
     command->callback([options] { onsets(*options); });
 }

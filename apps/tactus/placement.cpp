@@ -18,6 +18,7 @@ namespace {
 
 struct PlacementOptions {
     std::string input, output;
+    bool force = false;
 };
 
 std::string mm(double value) {
@@ -42,7 +43,7 @@ void write_plot_csv(std::ostream& out, std::vector<Measurement> rows,
 void placement(const PlacementOptions& o) {
     const std::vector<Measurement> rows = read_measurements(o.input);
     const PlacementReport report = summarise_placement(rows);
-    if (!o.output.empty()) refuse_overwriting_input(o.input, o.output);
+    if (!o.output.empty()) check_output(o.input, o.output, o.force);
 
     std::cout << fmt::format("{:>8} {:>4} {:>8} {:>8} {:>8} {:>8} {:>8} {:>9}\n", "hole_mm", "n",
                              "subjects", "mean_mm", "sd_mm", "min_mm", "max_mm", "depth_mm");
@@ -83,6 +84,7 @@ void add_placement(CLI::App& app) {
         ->check(CLI::ExistingFile);
     command->add_option("-o,--output", options->output,
                         "plot-ready CSV: every measurement with its hole's mean, SD, n, depth");
+    add_force_option(*command, options->force);
     command->callback([options] { placement(*options); });
 }
 

@@ -30,6 +30,7 @@ struct RenderOptions {
     int channels = 1;
     int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     std::string actuator;
+    bool force = false;
     PipelineOptions pipeline;
 };
 
@@ -47,7 +48,8 @@ class OnsetCounter final : public FrameObserver {
 };
 
 // Where each input's vibration goes: -o for one input, DIR/<stem>.vibration.wav with -O. Refuses
-// (before any audio is read) an output that is its input or that two inputs would share.
+// (before any audio is read) an output that is its input, that two inputs would share, or that
+// exists already (unless --force).
 std::vector<Job> plan(const RenderOptions& o) {
     if (o.output.empty() == o.output_dir.empty())
         throw std::runtime_error("render: give either -o FILE (one input) or -O DIR");
@@ -64,7 +66,10 @@ std::vector<Job> plan(const RenderOptions& o) {
             throw std::runtime_error(fmt::format("{}: both {} and {} would write it",
                                                  output.string(), it->second.string(),
                                                  input.string()));
-        refuse_overwriting_input(input, output);
+        if (o.output_dir.empty() || fs::is_directory(o.output_dir))
+            check_output(input, output, o.force);
+        else
+            refuse_overwriting_input(input, output);  // DIR is made below: it holds nothing yet
         jobs.push_back({input, output});
     }
     return jobs;
@@ -170,6 +175,7 @@ void add_render(CLI::App& app) {
     add_actuator_option(*command, options->actuator,
                         "actuator profile (name in actuators/ or FILE.toml): compensate its "
                         "response, respect its max drive, warn about what it cannot do");
+    add_force_option(*command, options->force);
     options->pipeline.add_to(*command);
     command->callback([options] { render(*options); });
 }

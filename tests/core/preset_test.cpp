@@ -329,5 +329,28 @@ TEST_F(PresetPathEnvironment, ShippedPresetsAreFoundByName) {
     EXPECT_TRUE(fs::equivalent(tfd, kSourceDir / "presets" / "tfd.toml")) << tfd;
 }
 
+TEST(ApplyAssignment, ControlCharactersAreEscapedSoTheMessageIsOneLine) {
+    Settings s;
+    try {
+        apply_assignment(s, "a\nb\x01=1");
+        ADD_FAILURE() << "accepted an unknown key";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_THAT(e.what(), HasSubstr("unknown key 'a\\nb\\x01'"));
+        EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
+    }
+    try {
+        apply_assignment(s, "envelope.decay_ms=1\t2");
+        ADD_FAILURE() << "accepted a tab in a number";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_THAT(e.what(), HasSubstr("'1\\t2' is not a number"));
+    }
+}
+
+TEST(ApplyAssignment, AHugeKeyIsAnsweredQuickly) {
+    Settings s;
+    const std::string key(1 << 20, 'x');  // edit distance on a megabyte would take minutes
+    EXPECT_THROW(apply_assignment(s, key + "=1"), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace tactus

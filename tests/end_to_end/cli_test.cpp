@@ -12,42 +12,16 @@
 #include <string>
 #include <vector>
 
-#include "support/temp_dir.hpp"
+#include "support/run_cli.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 const std::string kAmen = "/usr/share/sonic-pi/samples/loop_amen_full.flac";
 
-struct Result {
-    int exit_code;
-    std::string out, err;
-};
-
-class Cli : public tactus::test::TempDirTest {
-  protected:
-    Result run(const std::string& arguments) const {
-        const fs::path err = dir_ / "stderr.txt";
-        const std::string command =
-            std::string(TACTUS_CLI) + " " + arguments + " 2>" + err.string();
-        FILE* pipe = popen(command.c_str(), "r");
-        std::string out;
-        char buffer[4096];
-        while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
-        const int status = pclose(pipe);
-        std::ifstream e(err);
-        std::stringstream s;
-        s << e.rdbuf();
-        return {WEXITSTATUS(status), out, s.str()};
-    }
-};
-
-SF_INFO info_of(const fs::path& path) {
-    SF_INFO info{};
-    SNDFILE* f = sf_open(path.c_str(), SFM_READ, &info);
-    if (f) sf_close(f);
-    return info;
-}
+using tactus::test::Cli;
+using tactus::test::info_of;
+using Result = tactus::test::CliResult;
 
 std::vector<float> samples_of(const fs::path& path) {
     SF_INFO info{};
@@ -220,7 +194,7 @@ TEST_F(Cli, RendersSeveralFilesIntoADirectory) {
                                         "loop_amen_full.vibration.wav"}));
     for (const std::string& input : inputs) {
         const fs::path alone = dir_ / "alone.wav";
-        ASSERT_EQ(run("render " + input + " -o " + alone.string()).exit_code, 0);
+        ASSERT_EQ(run("render " + input + " -o " + alone.string() + " --force").exit_code, 0);
         const fs::path batched = out / (fs::path(input).stem().string() + ".vibration.wav");
         EXPECT_EQ(info_of(batched).frames, info_of(input).frames) << input;
         const std::vector<float> expected = samples_of(alone);
@@ -243,6 +217,30 @@ TEST_F(Cli, BatchFailureIsReportedAndTheOthersComplete) {
     EXPECT_NE(r.err.find("1 of 3 files failed"), std::string::npos) << r.err;
     EXPECT_EQ(names_in(out), (std::vector<std::string>{"loop_amen.vibration.wav",
                                                        "loop_amen_full.vibration.wav"}));
+}
+
+// Every command that writes a file refuses one that exists, names it, leaves it as it was, and
+// replaces it with --force: a batch's outputs, the meter's CSV, the placement CSV.
+TEST_F(Cli, ExistingOutputsNeedForce) {
+    const fs::path out = dir_ / "out", vibration = out / "loop_amen_full.vibration.wav";
+    const fs::path meter_csv = dir_ / "meter.csv", placement_csv = dir_ / "placement.csv";
+    const std::string placement_input =
+        std::string(TACTUS_SOURCE_DIR) + "/examples/placement_synthetic.csv";
+    const std::vector<std::pair<std::string, fs::path>> commands = {
+        {"render " + kAmen + " -O " + out.string(), vibration},
+        {"meter " + vibration.string() + " -o " + meter_csv.string(), meter_csv},
+        {"placement " + placement_input + " -o " + placement_csv.string(), placement_csv}};
+    for (const auto& [command, output] : commands) {
+        ASSERT_EQ(run(command).exit_code, 0) << command;
+        const auto size = fs::file_size(output);
+        const Result again = run(command);
+        EXPECT_NE(again.exit_code, 0) << command;
+        EXPECT_NE(again.err.find(output.string() + ": already exists (use --force"),
+                  std::string::npos)
+            << again.err;
+        EXPECT_EQ(fs::file_size(output), size) << command;
+        EXPECT_EQ(run(command + " --force").exit_code, 0) << command;
+    }
 }
 
 // Output names are decided before any audio is read: ambiguous requests write nothing.

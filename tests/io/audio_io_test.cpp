@@ -2,6 +2,7 @@
 // (atomic rename; an uncommitted writer leaves nothing behind), AudioReader reads any channel
 // count as the channel average and names the file in errors; TextOutput likewise; the
 // temporary name sits beside the target.
+#include <fmt/format.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sndfile.h>
@@ -9,6 +10,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -166,6 +168,44 @@ TEST_F(IoTest, TextOutputDashIsStdout) {
     EXPECT_EQ(&empty.stream(), &std::cout);
     EXPECT_NO_THROW(out.commit());
     EXPECT_EQ(files_in_dir(), 0u);
+}
+
+TEST_F(IoTest, ReaderRefusesATruncatedWavAndAnEmptyFile) {
+    const fs::path whole = dir_ / "whole.wav";
+    {
+        AudioWriter writer(whole, 48000, 2);
+        const auto x = test::white_noise(48000, 3, 0.5);
+        writer.write(x.data(), static_cast<int>(x.size()));
+        writer.commit();
+    }
+    const fs::path cut = dir_ / "cut.wav";
+    fs::copy_file(whole, cut);
+    fs::resize_file(cut, fs::file_size(whole) - 1000);
+    try {
+        AudioReader reader(cut);
+        ADD_FAILURE() << "opened a truncated file";
+    } catch (const std::runtime_error& e) {
+        EXPECT_THAT(e.what(), HasSubstr(cut.string() + ": truncated: the header announces"));
+    }
+    std::ofstream(dir_ / "empty.wav").close();
+    EXPECT_THROW(AudioReader{dir_ / "empty.wav"}, std::runtime_error);
+}
+
+// Writers track their temporaries for the signal handler and release them on commit or
+// destruction, so a long batch never runs out of slots; too many at once is an error.
+TEST_F(IoTest, TemporariesAreTrackedAndReleased) {
+    for (int i = 0; i < 3 * kMaxTrackedTemporaries; ++i) {
+        AudioWriter writer(dir_ / fmt::format("{}.wav", i % 4), 8000, 1);
+        if (i % 2) writer.commit();
+    }
+    std::vector<std::unique_ptr<TextOutput>> open;
+    for (int i = 0; i < kMaxTrackedTemporaries; ++i)
+        open.push_back(std::make_unique<TextOutput>(dir_ / fmt::format("t{}.txt", i)));
+    EXPECT_THROW(TextOutput(dir_ / "one-too-many.txt"), std::runtime_error);
+    open.clear();
+    EXPECT_NO_THROW(TextOutput(dir_ / "fits-again.txt"));
+    for (const auto& entry : fs::directory_iterator(dir_))
+        EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos);
 }
 
 }  // namespace

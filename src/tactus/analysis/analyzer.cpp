@@ -27,6 +27,7 @@ void Analyzer::prepare(double sample_rate_hz, const Settings& s) {
     history_.prepare(
         std::max({stft_.window_samples(), pitch_.span_samples(), onsets_.span_samples()}));
     clean_.assign(static_cast<size_t>(hop_samples_), 0.0f);
+    dc_blocker_.prepare(sample_rate_hz);
     pitch_every_frames_ = std::max(
         1, static_cast<int>(std::lround(kPitchIntervalMs * 1e-3 * sample_rate_hz / hop_samples_)));
     reset();
@@ -35,6 +36,7 @@ void Analyzer::prepare(double sample_rate_hz, const Settings& s) {
 void Analyzer::reset() noexcept {
     history_.reset();
     loudness_.reset();
+    dc_blocker_.reset();
     onsets_.reset();
     features_ = {};
     filled_ = 0;
@@ -49,8 +51,9 @@ bool Analyzer::write(const float* samples, int count) noexcept {
                         ? std::copysign(kMaxInput, x)
                         : 0.0f;
     }
-    history_.write(clean_.data(), count);
     loudness_.write(clean_.data(), count);
+    dc_blocker_.process(clean_.data(), count);
+    history_.write(clean_.data(), count);
     filled_ += count;
     return filled_ >= hop_samples_;
 }

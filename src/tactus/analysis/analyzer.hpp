@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "tactus/analysis/brightness.hpp"
+#include "tactus/analysis/dc_blocker.hpp"
 #include "tactus/analysis/features.hpp"
 #include "tactus/analysis/loudness.hpp"
 #include "tactus/analysis/noisiness.hpp"
@@ -29,7 +30,8 @@ class Analyzer {
     // Samples that can be written before the next frame is due (1 ... hop).
     int samples_to_next_frame() const noexcept { return hop_samples_ - filled_; }
     // Writes at most samples_to_next_frame() samples; returns true when a frame is due.
-    // Non-finite and denormal samples are read as 0, levels beyond +-kMaxInput are clipped.
+    // Non-finite and denormal samples are read as 0, levels beyond +-kMaxInput are clipped; a DC
+    // offset is removed before the spectral features.
     bool write(const float* samples, int count) noexcept;
 
     // +60 dB over full scale: only corrupt input gets there, and it would overflow the float
@@ -39,6 +41,7 @@ class Analyzer {
     const Features& analyse() noexcept;
 
   private:
+    DcBlocker dc_blocker_;
     SampleHistory history_;
     StftFrame stft_;
     Brightness brightness_;

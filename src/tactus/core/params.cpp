@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "tactus/perception/channels.hpp"
+#include "tactus/core/printable.hpp"
 
 namespace tactus {
 namespace {
@@ -199,6 +200,10 @@ std::optional<P> find_param(std::string_view key) {
 }
 
 std::string nearest_param(std::string_view key) {
+    // Edit distance costs length x length per key: a megabyte of typing must not hang the
+    // suggestion, and past the longest key's length it cannot change much.
+    constexpr size_t kComparedChars = 64;
+    key = key.substr(0, kComparedChars);
     std::string_view best;
     size_t best_distance = SIZE_MAX;
     for (const auto& s : kTable) {
@@ -208,6 +213,10 @@ std::string nearest_param(std::string_view key) {
     return std::string(best);
 }
 
+std::string range_text(const ParamSpec& s) {
+    return fmt::format("{} to {}{}{}", s.min, s.max, s.unit.empty() ? "" : " ", s.unit);
+}
+
 Settings::Settings() {
     for (size_t i = 0; i < std::size(kTable); ++i) values_[i] = kTable[i].default_value;
 }
@@ -215,9 +224,8 @@ Settings::Settings() {
 void Settings::set(P id, double value) {
     const ParamSpec& s = spec(id);
     if (!std::isfinite(value) || value < s.min || value > s.max) {
-        const std::string unit = s.unit.empty() ? "" : fmt::format(" {}", s.unit);
-        throw std::invalid_argument(fmt::format("{} = {} is out of range: allowed {} to {}{}",
-                                                s.key, value, s.min, s.max, unit));
+        throw std::invalid_argument(
+            fmt::format("{} = {} is out of range: allowed {}", s.key, value, range_text(s)));
     }
     if (s.kind == ParamKind::choice) value = std::round(value);
     values_[static_cast<int>(id)] = value;
@@ -231,12 +239,13 @@ void Settings::set_from_text(P id, std::string_view text) {
         std::string allowed;
         for (auto c : s.choices) allowed += (allowed.empty() ? "" : ", ") + std::string(c);
         throw std::invalid_argument(
-            fmt::format("{} = '{}' is not one of: {}", s.key, text, allowed));
+            fmt::format("{} = '{}' is not one of: {}", s.key, printable(text), allowed));
     }
     double value = 0;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (error != std::errc() || end != text.data() + text.size())
-        throw std::invalid_argument(fmt::format("{} = '{}' is not a number", s.key, text));
+        throw std::invalid_argument(
+            fmt::format("{} = '{}' is not a number", s.key, printable(text)));
     set(id, value);
 }
 

@@ -103,6 +103,9 @@ std::optional<P> find_param(std::string_view key);
 // The known key closest to `key` (edit distance), for "did you mean" messages.
 std::string nearest_param(std::string_view key);
 
+// "5 to 5000 ms": a parameter's allowed range and unit, for messages.
+std::string range_text(const ParamSpec& spec);
+
 // A value for every parameter, starting at the table's defaults.
 class Settings {
   public:

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "tactus/core/search_path.hpp"
+#include "tactus/core/printable.hpp"
 
 #ifndef TACTUS_PRESET_DIR
 #define TACTUS_PRESET_DIR "presets"
@@ -31,14 +32,14 @@ void apply_node(Settings& settings, const std::string& key, const toml::node& no
     }
     if (key == "description" || key == "name") {
         if (!node.is_string())
-            throw std::runtime_error(
-                fmt::format("{}: '{}' must be a string", where(origin, node.source()), key));
+            throw std::runtime_error(fmt::format("{}: '{}' must be a string",
+                                                 where(origin, node.source()), printable(key)));
         return;
     }
     const auto id = find_param(key);
     if (!id)
         throw std::runtime_error(fmt::format("{}: unknown key '{}' (did you mean '{}'?)",
-                                             where(origin, node.source()), key,
+                                             where(origin, node.source()), printable(key),
                                              nearest_param(key)));
     const ParamSpec& s = spec(*id);
     try {
@@ -48,7 +49,8 @@ void apply_node(Settings& settings, const std::string& key, const toml::node& no
             settings.set_from_text(*id, *node.value<std::string>());
         } else {
             if (!node.is_number())
-                throw std::invalid_argument(fmt::format("{} must be a number", key));
+                throw std::invalid_argument(
+                    fmt::format("{} must be a number, {}", key, range_text(s)));
             settings.set(*id, *node.value<double>());
         }
     } catch (const std::invalid_argument& e) {
@@ -97,8 +99,8 @@ void apply_preset_text(Settings& settings, std::string_view toml_text, std::stri
     try {
         table = toml::parse(toml_text, origin);
     } catch (const toml::parse_error& e) {
-        throw std::runtime_error(
-            fmt::format("{}: TOML syntax error: {}", where(origin, e.source()), e.description()));
+        throw std::runtime_error(fmt::format("{}: TOML syntax error: {}", where(origin, e.source()),
+                                             printable(e.description())));
     }
     Settings candidate = settings;  // all or nothing
     apply_node(candidate, "", table, origin);
@@ -110,7 +112,7 @@ void apply_preset_file(Settings& settings, const fs::path& path) {
     try {
         table = toml::parse_file(path.string());
     } catch (const toml::parse_error& e) {
-        const auto* description = e.description().data();
+        const std::string description = printable(e.description());
         if (!fs::exists(path))
             throw std::runtime_error(fmt::format("preset file '{}' not found", path.string()));
         throw std::runtime_error(fmt::format("{}: TOML syntax error: {}",
@@ -124,14 +126,14 @@ void apply_preset_file(Settings& settings, const fs::path& path) {
 void apply_assignment(Settings& settings, std::string_view assignment) {
     const size_t eq = assignment.find('=');
     if (eq == std::string_view::npos || eq == 0 || eq + 1 == assignment.size())
-        throw std::invalid_argument(
-            fmt::format("--set '{}': expected key=value, e.g. envelope.decay_ms=120", assignment));
+        throw std::invalid_argument(fmt::format(
+            "--set '{}': expected key=value, e.g. envelope.decay_ms=120", printable(assignment)));
     const std::string_view key = assignment.substr(0, eq);
     const std::string_view value = assignment.substr(eq + 1);
     const auto id = find_param(key);
     if (!id)
-        throw std::invalid_argument(
-            fmt::format("--set: unknown key '{}' (did you mean '{}'?)", key, nearest_param(key)));
+        throw std::invalid_argument(fmt::format("--set: unknown key '{}' (did you mean '{}'?)",
+                                                printable(key), nearest_param(key)));
     try {
         settings.set_from_text(*id, value);
     } catch (const std::invalid_argument& e) {

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "tactus/core/printable.hpp"
+
 namespace tactus {
 
 std::vector<std::filesystem::path> search_path(const char* environment_variable,
@@ -32,7 +34,8 @@ std::filesystem::path resolve_toml(std::string_view name_or_path,
     const fs::path given(name_or_path);
     if (given.extension() == ".toml" || given.has_parent_path()) {
         if (!fs::is_regular_file(given))
-            throw std::runtime_error(fmt::format("{} file '{}' not found", kind, name_or_path));
+            throw std::runtime_error(
+                fmt::format("{} file '{}' not found", kind, printable(name_or_path)));
         return given;
     }
     for (const auto& dir : dirs)
@@ -47,7 +50,7 @@ std::filesystem::path resolve_toml(std::string_view name_or_path,
     std::string known;
     for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
     throw std::runtime_error(
-        fmt::format("no {} named '{}' (known: {})", kind, name_or_path, known));
+        fmt::format("no {} named '{}' (known: {})", kind, printable(name_or_path), known));
 }
 
 }  // namespace tactus

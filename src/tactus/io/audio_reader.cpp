@@ -3,11 +3,44 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
+#include <string>
+#include <string_view>
 
 namespace tactus {
+namespace {
+
+// libsndfile opens a WAV, AIFF or W64 whose audio chunk is cut short and reads what is there;
+// its log then holds e.g. "data : 1209600 (should be 19956)". Returns what is missing, or ""
+// (also for the 0 and 0xFFFFFFFF lengths that streaming writers leave in an unfinished header).
+std::string truncation(SNDFILE* file) {
+    char log[8192] = {};
+    sf_command(file, SFC_GET_LOG_INFO, log, sizeof log);
+    std::string_view text = log;
+    for (size_t start = 0; start < text.size();) {
+        const size_t end = std::min(text.find('\n', start), text.size());
+        const std::string_view line = text.substr(start, end - start);
+        start = end + 1;
+        unsigned long long declared = 0, present = 0;
+        if (!(line.starts_with("data :") || line.starts_with("SSND :"))) continue;
+        if (std::sscanf(std::string(line).c_str(), "%*4s : %llu (should be %llu)", &declared,
+                        &present) != 2)
+            continue;
+        if (declared == 0 || declared >= 0xFFFFFF00ull || present >= declared) continue;
+        return fmt::format("the header announces {} bytes of audio, the file holds {}", declared,
+                           present);
+    }
+    return {};
+}
+
+}  // namespace
 
 AudioReader::AudioReader(const std::filesystem::path& path) : path_(path) {
+    std::error_code error;
+    if (std::filesystem::is_regular_file(path, error) &&
+        std::filesystem::file_size(path, error) == 0)
+        throw std::runtime_error(fmt::format("{}: empty file", path.string()));
     file_ = sf_open(path.c_str(), SFM_READ, &info_);
     if (!file_)
         throw std::runtime_error(
@@ -15,6 +48,10 @@ AudioReader::AudioReader(const std::filesystem::path& path) : path_(path) {
     if (info_.channels < 1 || info_.samplerate < 1) {
         sf_close(file_);
         throw std::runtime_error(fmt::format("{}: no audio channels", path.string()));
+    }
+    if (const std::string cut = truncation(file_); !cut.empty()) {
+        sf_close(file_);
+        throw std::runtime_error(fmt::format("{}: truncated: {}", path.string(), cut));
     }
     // Scale integer formats to [-1, 1) and do not clip floats.
     sf_command(file_, SFC_SET_NORM_FLOAT, nullptr, SF_TRUE);
@@ -47,9 +84,19 @@ int AudioReader::read(float* mono, int max_frames) {
         got = sf_readf_float(file_, destination, max_frames);
     }
     if (got < 0 || (got == 0 && sf_error(file_) != SF_ERR_NO_ERROR))
-        throw std::runtime_error(
-            fmt::format("{}: read error: {}", path_.string(), sf_strerror(file_)));
+        throw std::runtime_error(fmt::format("{}: corrupt or truncated audio data: {}",
+                                             path_.string(), sf_strerror(file_)));
     if (channels == 1 && pcm16) std::copy_n(interleaved_.data(), got, mono);
+    frames_read_ += got;
+    // A stream that ends well before its header's length (an MP3 cut short: its Xing header
+    // still holds the whole length) is truncated. One MPEG frame of slack (1152 samples, twice)
+    // allows for an encoder's padding estimate.
+    constexpr int64_t kSlackFrames = 2 * 1152;
+    const bool length_known = info_.frames > 0 && info_.frames != SF_COUNT_MAX;  // not a pipe
+    if (got == 0 && length_known && frames_read_ + kSlackFrames < info_.frames)
+        throw std::runtime_error(fmt::format(
+            "{}: truncated or corrupt: the header announces {} frames, only {} could be decoded",
+            path_.string(), info_.frames, frames_read_));
     if (channels > 1) {
         const float scale = 1.0f / static_cast<float>(channels);
         for (sf_count_t i = 0; i < got; ++i) {

@@ -21,7 +21,8 @@ class AudioReader {
     double sample_rate_hz() const { return info_.samplerate; }
     int channels() const { return info_.channels; }
     int64_t frames() const { return info_.frames; }  // may be unknown (<= 0) for some formats
-    // Reads up to `max_frames` mono frames; returns how many (0 at the end).
+    // Reads up to `max_frames` mono frames; returns how many (0 at the end). Throws
+    // std::runtime_error for undecodable data or a stream that ends before its header says.
     int read(float* mono, int max_frames);
 
   private:
@@ -30,6 +31,7 @@ class AudioReader {
     SF_INFO info_{};
     std::vector<float> interleaved_;
     std::vector<short> pcm16_;
+    int64_t frames_read_ = 0;
 };
 
 // A whole file as mono samples, for tools and tests; streaming code uses AudioReader.

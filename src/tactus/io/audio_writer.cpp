@@ -14,17 +14,19 @@ AudioWriter::AudioWriter(const std::filesystem::path& path, double sample_rate_h
     info.samplerate = static_cast<int>(sample_rate_hz);
     info.channels = channels;
     info.format = SF_FORMAT_WAV | SF_FORMAT_FLOAT;
+    track_temporary(temporary_);
     file_ = sf_open(temporary_.c_str(), SFM_WRITE, &info);
-    if (!file_)
-        throw std::runtime_error(
-            fmt::format("{}: cannot write: {}", path.string(), sf_strerror(nullptr)));
+    if (!file_) {
+        const std::string reason = sf_strerror(nullptr);
+        discard_temporary(temporary_);
+        throw std::runtime_error(fmt::format("{}: cannot write: {}", path.string(), reason));
+    }
 }
 
 AudioWriter::~AudioWriter() {
     if (file_) {
         sf_close(file_);
-        std::error_code ignored;
-        std::filesystem::remove(temporary_, ignored);
+        discard_temporary(temporary_);
     }
 }
 
@@ -46,8 +48,7 @@ void AudioWriter::commit() {
     const int error = sf_close(file_);
     file_ = nullptr;
     if (error != 0) {
-        std::error_code ignored;
-        std::filesystem::remove(temporary_, ignored);
+        discard_temporary(temporary_);
         throw std::runtime_error(
             fmt::format("{}: write failed: {}", path_.string(), sf_error_number(error)));
     }

@@ -2,12 +2,22 @@
 
 #include <fmt/format.h>
 
+#include <cerrno>
+#include <cstring>
 #include <iostream>
 #include <stdexcept>
 
 #include "tactus/io/temporary_path.hpp"
 
 namespace tactus {
+namespace {
+
+// ": <strerror>" when the C library said why a stream failed, else nothing.
+std::string system_reason() {
+    return errno != 0 ? fmt::format(": {}", std::strerror(errno)) : std::string{};
+}
+
+}  // namespace
 
 TextOutput::TextOutput(const std::filesystem::path& path) : path_(path) {
     if (path.empty() || path == "-") {
@@ -15,25 +25,40 @@ TextOutput::TextOutput(const std::filesystem::path& path) : path_(path) {
         return;
     }
     temporary_ = temporary_path_for(path);
+    track_temporary(temporary_);
+    errno = 0;
     file_.emplace(temporary_);
-    if (!*file_) throw std::runtime_error(fmt::format("{}: cannot write", path.string()));
+    if (!*file_) {
+        const std::string reason = system_reason();
+        file_.reset();
+        discard_temporary(temporary_);
+        throw std::runtime_error(fmt::format("{}: cannot write{}", path.string(), reason));
+    }
 }
 
 TextOutput::~TextOutput() {
     if (file_ && !committed_) {
         file_->close();
-        std::error_code ignored;
-        std::filesystem::remove(temporary_, ignored);
+        discard_temporary(temporary_);
     }
 }
 
 void TextOutput::commit() {
+    // errno is not cleared first: a stream that failed mid-run keeps failing silently, and the
+    // reason is what the failing write left in errno.
     if (!file_) {
         std::cout.flush();
+        if (!std::cout)
+            throw std::runtime_error(fmt::format("stdout: write failed{}", system_reason()));
         return;
     }
+    file_->flush();
     file_->close();
-    if (file_->fail()) throw std::runtime_error(fmt::format("{}: write failed", path_.string()));
+    if (file_->fail()) {
+        const std::string reason = system_reason();
+        discard_temporary(temporary_);
+        throw std::runtime_error(fmt::format("{}: write failed{}", path_.string(), reason));
+    }
     commit_temporary(temporary_, path_);
     committed_ = true;
 }

@@ -1,0 +1,55 @@
+// libFuzzer target: any bytes as an audio file, read the way every command reads its input
+// (AudioReader, to the end). Reading either succeeds or throws std::runtime_error with a
+// one-line message; whatever is decoded goes through the engine, whose vibration must be finite
+// and never above full scale. The engine is prepared once (at 44.1 kHz, whatever the file says):
+// its filter design costs more than reading a small file, and the sample-rate check is tested on
+// its own. The bytes go through a real file because libsndfile opens paths.
+#include <unistd.h>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+#include "fuzz_check.hpp"
+#include "tactus/engine/engine.hpp"
+#include "tactus/io/audio_reader.hpp"
+
+namespace {
+
+constexpr int kBlock = 1024;
+
+std::filesystem::path scratch_file() {
+    const auto dir = std::filesystem::exists("/dev/shm") ? std::filesystem::path("/dev/shm")
+                                                         : std::filesystem::temp_directory_path();
+    return dir / ("tactus-audio-fuzz-" + std::to_string(getpid()));
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    static const std::filesystem::path path = scratch_file();
+    FILE* file = std::fopen(path.c_str(), "wb");
+    if (!file) std::abort();
+    if (size > 0 && std::fwrite(data, 1, size, file) != size) std::abort();
+    std::fclose(file);
+
+    static tactus::Engine engine;
+    if (engine.sample_rate_hz() == 0) engine.prepare(44100, kBlock);
+    engine.reset();
+    try {
+        tactus::AudioReader reader(path);
+        float in[kBlock], out[kBlock];
+        while (const int got = reader.read(in, kBlock)) {
+            engine.process(in, out, got);
+            for (int i = 0; i < got; ++i)
+                if (!(std::abs(out[i]) <= 1.0f)) std::abort();
+        }
+    } catch (const std::runtime_error& e) {
+        tactus::fuzz::check_message(e.what());
+    }
+    return 0;
+}

@@ -1,0 +1,29 @@
+// What every fuzz target asserts besides "no crash": errors are one line, settings stay in the
+// parameter table's ranges. A violated check aborts, which libFuzzer reports as a finding.
+#pragma once
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include "tactus/core/params.hpp"
+
+namespace tactus::fuzz {
+
+inline void check_message(const char* message) {
+    if (std::strlen(message) > 0 && std::strchr(message, '\n') == nullptr) return;
+    std::fprintf(stderr, "error message is not one line: [%s]\n", message);
+    std::abort();
+}
+
+inline void check_in_range(const Settings& settings) {
+    for (int i = 0; i < static_cast<int>(P::count); ++i) {
+        const ParamSpec& s = spec(static_cast<P>(i));
+        const double value = settings[static_cast<P>(i)];
+        if (value >= s.min && value <= s.max) continue;
+        std::fprintf(stderr, "%s = %g is outside %g to %g\n", s.key.data(), value, s.min, s.max);
+        std::abort();
+    }
+}
+
+}  // namespace tactus::fuzz

@@ -1,0 +1,50 @@
+// Runs the tactus command line as a user runs it (through the shell), from a test with its own
+// temporary directory: exit code, stdout and stderr.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <sndfile.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "support/temp_dir.hpp"
+
+namespace tactus::test {
+
+struct CliResult {
+    int exit_code;
+    std::string out, err;
+};
+
+class Cli : public TempDirTest {
+  protected:
+    // `prefix` goes before the executable (e.g. to run it as another user).
+    CliResult run(const std::string& arguments, const std::string& prefix = "") const {
+        const std::filesystem::path err = dir_ / "stderr.txt";
+        const std::string command =
+            prefix + std::string(TACTUS_CLI) + " " + arguments + " 2>" + err.string();
+        FILE* pipe = popen(command.c_str(), "r");
+        std::string out;
+        char buffer[4096];
+        while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
+        const int status = pclose(pipe);
+        std::ifstream e(err);
+        std::stringstream s;
+        s << e.rdbuf();
+        return {WEXITSTATUS(status), out, s.str()};
+    }
+};
+
+inline SF_INFO info_of(const std::filesystem::path& path) {
+    SF_INFO info{};
+    SNDFILE* f = sf_open(path.c_str(), SFM_READ, &info);
+    if (f) sf_close(f);
+    return info;
+}
+
+}  // namespace tactus::test
