@@ -18,6 +18,8 @@ demo: build
 	$(TACTUS) render $(AMEN) -o out/amen.vibration.wav --actuator voice-coil --force
 	$(TACTUS) analyze $(AMEN) -o out/amen.features.csv --actuator voice-coil --force
 	$(TACTUS) meter out/amen.vibration.wav -o out/amen.meter.csv --force
+	$(TACTUS) render $(AMEN) -o out/amen.four-channel.wav --preset four-channel --actuator voice-coil --force
+	$(TACTUS) meter out/amen.four-channel.wav
 
 test: build
 	ctest --preset release -j $(JOBS)
