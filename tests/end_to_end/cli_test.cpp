@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "support/run_cli.hpp"
+#include "tactus/io/audio_reader.hpp"
 
 namespace {
 
@@ -22,16 +23,6 @@ const std::string kAmen = "/usr/share/sonic-pi/samples/loop_amen_full.flac";
 using tactus::test::Cli;
 using tactus::test::info_of;
 using Result = tactus::test::CliResult;
-
-std::vector<float> samples_of(const fs::path& path) {
-    SF_INFO info{};
-    SNDFILE* f = sf_open(path.c_str(), SFM_READ, &info);
-    if (!f) return {};
-    std::vector<float> samples(static_cast<size_t>(info.frames * info.channels));
-    sf_readf_float(f, samples.data(), info.frames);
-    sf_close(f);
-    return samples;
-}
 
 std::vector<std::string> names_in(const fs::path& dir) {
     std::vector<std::string> names;
@@ -197,9 +188,9 @@ TEST_F(Cli, RendersSeveralFilesIntoADirectory) {
         ASSERT_EQ(run("render " + input + " -o " + alone.string() + " --force").exit_code, 0);
         const fs::path batched = out / (fs::path(input).stem().string() + ".vibration.wav");
         EXPECT_EQ(info_of(batched).frames, info_of(input).frames) << input;
-        const std::vector<float> expected = samples_of(alone);
+        const std::vector<float> expected = tactus::read_mono(alone).samples;
         ASSERT_FALSE(expected.empty());
-        EXPECT_TRUE(samples_of(batched) == expected) << input;
+        EXPECT_TRUE(tactus::read_mono(batched).samples == expected) << input;
         EXPECT_NE(batch.err.find(batched.string()), std::string::npos) << batch.err;
     }
 }

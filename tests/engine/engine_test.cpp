@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,8 +35,10 @@ const std::filesystem::path kAmen = "/usr/share/sonic-pi/samples/loop_amen_full.
 
 // Runs x through a freshly prepared engine in blocks whose sizes cycle through `blocks`.
 std::vector<float> render(const std::vector<float>& x, double fs, const std::vector<int>& blocks,
-                          const Settings& settings = {}) {
+                          const Settings& settings = {},
+                          std::optional<ActuatorProfile> actuator = std::nullopt) {
     Engine engine(settings);
+    engine.set_actuator(std::move(actuator));
     engine.prepare(fs, Engine::kMaxBlock);
     std::vector<float> y(x.size());
     size_t done = 0;
@@ -349,13 +352,8 @@ TEST(Engine, ActuatorProfileDecidesThePressure) {
     const double fs = 48000;
     const test::DrumSignal drums = test::drum_pattern(fs, 3.0, 4);
     const auto mean_with = [&](std::optional<ActuatorProfile> actuator) {
-        Engine engine(four_channel(true));
-        engine.set_actuator(std::move(actuator));
-        engine.prepare(fs, 512);
-        std::vector<float> y(drums.audio.size());
-        for (size_t done = 0; done < y.size(); done += 512)
-            engine.process(drums.audio.data() + done, y.data() + done,
-                           static_cast<int>(std::min<size_t>(512, y.size() - done)));
+        const std::vector<float> y =
+            render(drums.audio, fs, {512}, four_channel(true), std::move(actuator));
         double sum = 0;
         for (float v : y) sum += v;
         return sum / static_cast<double>(y.size());

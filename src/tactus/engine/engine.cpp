@@ -39,7 +39,7 @@ void Engine::prepare(double sample_rate_hz, int max_block) {
     const double internal_rate_hz = sample_rate_hz / divisor;
     const int max_internal_block = static_cast<int>(ceil_div(max_block, divisor)) + 1;
     upsampler_.prepare(divisor, max_internal_block);
-    internal_.assign(static_cast<size_t>(max_internal_block), 0.0f);
+    internal_.assign(divisor > 1 ? static_cast<size_t>(max_internal_block) : 0, 0.0f);
     flutter_.assign(flutter_enabled(settings_) ? static_cast<size_t>(max_internal_block) : 0, 0.0f);
     pressure_.assign(pressure_enabled(settings_) ? static_cast<size_t>(max_internal_block) : 0,
                      0.0f);
@@ -90,6 +90,9 @@ void Engine::process(const float* in, float* out, int count) noexcept {
     const ScopedFlushDenormals no_denormals;
     const int divisor = rate_divisor();
     int done = 0, rendered = 0;  // `in` is read before `out` is written: they may alias
+    // At the input rate, synthesis and post-processing write `out` directly (chunk by chunk,
+    // after the analyser has read the same samples of `in`), and the post chain's clip is final.
+    float* const internal = divisor == 1 ? out : internal_.data();
     float* const flutter = flutter_.empty() ? nullptr : flutter_.data();
     float* const pressure = pressure_.empty() ? nullptr : pressure_.data();
     while (done < count) {
@@ -98,7 +101,7 @@ void Engine::process(const float* in, float* out, int count) noexcept {
         // Internal sample k stands at input sample k * divisor.
         const auto due =
             static_cast<int>(ceil_div(position_ + chunk, divisor) - ceil_div(position_, divisor));
-        voice_.render(internal_.data() + rendered, flutter ? flutter + rendered : nullptr,
+        voice_.render(internal + rendered, flutter ? flutter + rendered : nullptr,
                       pressure ? pressure + rendered : nullptr, due);
         rendered += due;
         position_ += chunk;
@@ -110,8 +113,9 @@ void Engine::process(const float* in, float* out, int count) noexcept {
         }
         done += chunk;
     }
-    post_.process(internal_.data(), flutter, pressure, rendered);
-    upsampler_.process(internal_.data(), rendered, out, count);
+    post_.process(internal, flutter, pressure, rendered);
+    if (divisor == 1) return;
+    upsampler_.process(internal, rendered, out, count);
     for (int i = 0; i < count; ++i) {
         if (out[i] > ceiling_)
             out[i] = ceiling_, ++clipped_;

@@ -78,7 +78,7 @@ class Engine {
     Voice voice_;
     PostChain post_;
     Upsampler upsampler_;
-    std::vector<float> internal_;  // synthesis and post-processing output, one block
+    std::vector<float> internal_;  // synthesis and post-processing output below the input rate
     // One block of each low-frequency channel component, sized only when it is on.
     std::vector<float> flutter_, pressure_;
     int64_t position_ = 0;  // input samples consumed since reset
