@@ -87,10 +87,10 @@ TEST(Engine, BlockSizeInvarianceOnDrums) {
     }
 }
 
-// Above 88.2 kHz synthesis runs at a fraction of the rate and is upsampled: output sample m
+// From 22.05 kHz up synthesis runs at a fraction of the rate and is upsampled: output sample m
 // depends on internal samples up to m / divisor, whatever the split.
 TEST(Engine, BlockSizeInvarianceWithAnInternalRate) {
-    for (double fs : {96000.0, 192000.0}) {
+    for (double fs : {44100.0, 96000.0, 192000.0}) {
         const test::DrumSignal drums = test::drum_pattern(fs, 2.0, 3);
         Engine engine;
         engine.prepare(fs, 64);

@@ -52,13 +52,41 @@ TEST(Voice, PulseIsGlideTimesEnvelopeTimesSineFromZeroPhase) {
     const double g = std::exp(-1.0 / (1e-3 * fs));
     double glide = 1.0;
     for (size_t i = 0; i < static_cast<size_t>(0.3 * fs); ++i) {
-        glide *= g;
         const double expected = a * (1.0 - glide) * env.next() * std::sin(2 * kPi * f * i / fs);
         ASSERT_NEAR(out[i], expected, 1e-6) << "sample " << i;
+        glide *= g;  // sample i holds the amplitude at time i / fs, then the glide steps
     }
     EXPECT_EQ(out[0], 0.0f);  // sin(0): no click at the start
     // Exact silence once the envelope is below -140 dB (100 ms per 60 dB: well within 1 s).
     for (size_t i = static_cast<size_t>(fs); i < out.size(); ++i) ASSERT_EQ(out[i], 0.0f) << i;
+}
+
+// The engine synthesises below the input rate (engine.hpp): the voice samples one continuous
+// signal, so a pulse with glides rendered at 11.025 kHz matches every 4th sample at 44.1 kHz.
+TEST(Voice, SameSignalAtAQuarterOfTheRate) {
+    const auto render = [](double fs, int hop) {
+        Voice voice;
+        voice.prepare(fs, 1000);
+        std::vector<float> out;
+        for (int frame = 0; frame < 60; ++frame) {
+            std::vector<float> block(static_cast<size_t>(hop));
+            voice.render(block.data(), hop);
+            out.insert(out.end(), block.begin(), block.end());
+            ControlFrame control =
+                pulse(350.0 - 2 * frame, 0.5 * std::exp(-frame / 20.0), frame == 2);
+            control.square_mix = 0.3;
+            voice.apply(control);
+        }
+        return out;
+    };
+    const std::vector<float> full = render(44100, 128), quarter = render(11025, 32);
+    double error = 0, energy = 0;
+    for (size_t k = 0; k < quarter.size(); ++k) {
+        error += std::pow(full[4 * k] - quarter[k], 2);
+        energy += std::pow(full[4 * k], 2);
+    }
+    ASSERT_GT(energy, 0.0);
+    EXPECT_LT(std::sqrt(error / energy), 2e-3);
 }
 
 TEST(Voice, RetriggerWhileLoudIsContinuous) {

@@ -15,15 +15,23 @@ void Envelope::set_shape(double attack_ms, double decay_ms, double sustain) noex
     sustain_ = sustain;
 }
 
+// The level at this sample, then one step on: sample n after a trigger is the envelope at time
+// n / rate, as the oscillator's sample n is its phase at that time, so the product is the same
+// signal at any sample rate.
 double Envelope::next() noexcept {
+    const double level = level_;
     if (attacking_) {
         level_ += attack_step_;
-        if (level_ >= 1.0) level_ = 1.0, attacking_ = false;
-        return level_;
+        if (level_ >= 1.0) {  // the peak fell between samples: decay for the rest of the step
+            const double past_peak = (level_ - 1.0) / attack_step_;  // fraction of a step
+            level_ = sustain_ + (1.0 - sustain_) * std::pow(decay_coefficient_, past_peak);
+            attacking_ = false;
+        }
+        return level;
     }
     level_ = sustain_ + (level_ - sustain_) * decay_coefficient_;
     if (sustain_ == 0.0 && level_ < kSilentLevel) level_ = 0.0;
-    return level_;
+    return level;
 }
 
 }  // namespace tactus

@@ -1,5 +1,7 @@
 #include "tactus/synthesis/voice.hpp"
 
+#include <cmath>
+
 #include "tactus/core/units.hpp"
 
 namespace tactus {
@@ -15,6 +17,7 @@ void Voice::prepare(double sample_rate_hz, double harmonic_limit_hz) {
     flutter_.prepare(sample_rate_hz);
     pressure_.prepare(sample_rate_hz);
     glide_ = one_pole_coefficient(kGlideMs, sample_rate_hz);
+    glide_mean_ = glide_ > 0.0 ? (1.0 - glide_) / -std::log(glide_) : 0.0;
     reset();
 }
 
@@ -47,15 +50,19 @@ void Voice::apply(const ControlFrame& frame) noexcept {
 void Voice::render(float* out, int count) noexcept {
     double amplitude = amplitude_, frequency = frequency_hz_, mix = square_mix_;
     const double g = glide_;
-    for (int i = 0; i < count; ++i) {
+    for (int i = 0; i < count; ++i) {  // this sample's values, then one glide step
+        const double level = envelope_.next();
+        const double mean_frequency =
+            target_.frequency_hz + glide_mean_ * (frequency - target_.frequency_hz);
+        // Silent here and at the next sample: the oscillator can wait (it restarts at a trigger).
+        out[i] =
+            level == 0.0 && envelope_.level() == 0.0
+                ? 0.0f
+                : static_cast<float>(amplitude * level * oscillator_.next(mean_frequency, mix));
         amplitude = target_.amplitude + g * (amplitude - target_.amplitude);
         if (target_.amplitude == 0.0 && amplitude < kSilentAmplitude) amplitude = 0.0;
         frequency = target_.frequency_hz + g * (frequency - target_.frequency_hz);
         mix = target_.square_mix + g * (mix - target_.square_mix);
-        const double level = envelope_.next();
-        out[i] = level == 0.0
-                     ? 0.0f
-                     : static_cast<float>(amplitude * level * oscillator_.next(frequency, mix));
     }
     amplitude_ = amplitude;
     frequency_hz_ = frequency;

@@ -31,6 +31,9 @@ class Voice {
     Flutter flutter_;
     Pressure pressure_;
     double glide_ = 0.0;
+    // The glide's mean over one sample, as a fraction of its distance to the target: the
+    // oscillator advances by the frequency's exact integral, the same at any sample rate.
+    double glide_mean_ = 0.0;
     double amplitude_ = 0, frequency_hz_ = 0, square_mix_ = 0;
     ControlFrame target_;
 };
