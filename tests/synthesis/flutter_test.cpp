@@ -78,8 +78,8 @@ TEST(Flutter, RiseFromSilenceStartsAtPhaseZeroAndGlides) {
     const double g = std::exp(-1.0 / (tau_s * fs));
     double glide = 1.0;
     for (size_t i = 0; i < out.size(); ++i) {
-        glide *= g;
         ASSERT_NEAR(out[i], a * (1.0 - glide) * std::sin(2 * kPi * rate_hz * i / fs), 1e-5) << i;
+        glide *= g;  // sample i holds the level at time i / fs, then the glide steps
     }
 }
 

@@ -1,18 +1,15 @@
 #include "tactus/synthesis/flutter.hpp"
 
-#include "tactus/core/units.hpp"
 #include "tactus/perception/channels.hpp"
 
 namespace tactus {
 namespace {
 constexpr double kNpiHighHz = perception::info(perception::Channel::NPI).range_high_hz;
-constexpr double kGlideMs = 1e3 / (2.0 * kPi * kNpiHighHz);
-constexpr double kSilentAmplitude = 1e-9;
 }  // namespace
 
 void Flutter::prepare(double sample_rate_hz) {
     oscillator_.prepare(sample_rate_hz, kNpiHighHz);
-    glide_ = one_pole_coefficient(kGlideMs, sample_rate_hz);
+    glide_.prepare(corner_time_constant_ms(kNpiHighHz), sample_rate_hz);
     reset();
 }
 
@@ -35,14 +32,16 @@ void Flutter::apply(const ControlFrame& frame) noexcept {
 
 void Flutter::render(float* out, int count) noexcept {
     double amplitude = amplitude_, rate = rate_hz_, mix = square_mix_;
-    const double g = glide_;
+    const Glide glide = glide_;
     for (int i = 0; i < count; ++i) {
-        amplitude = target_amplitude_ + g * (amplitude - target_amplitude_);
-        if (target_amplitude_ == 0.0 && amplitude < kSilentAmplitude) amplitude = 0.0;
-        rate = target_rate_hz_ + g * (rate - target_rate_hz_);
-        mix = target_square_mix_ + g * (mix - target_square_mix_);
-        out[i] =
-            amplitude == 0.0 ? 0.0f : static_cast<float>(amplitude * oscillator_.next(rate, mix));
+        // Silent and staying silent: the oscillator can wait (it restarts on the way up).
+        out[i] = amplitude == 0.0 && target_amplitude_ == 0.0
+                     ? 0.0f
+                     : static_cast<float>(amplitude *
+                                          oscillator_.next(glide.mean(rate, target_rate_hz_), mix));
+        amplitude = glide.step(amplitude, target_amplitude_);
+        rate = glide.step(rate, target_rate_hz_);
+        mix = glide.step(mix, target_square_mix_);
     }
     amplitude_ = amplitude;
     rate_hz_ = rate;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "tactus/mapping/control_frame.hpp"
+#include "tactus/synthesis/glide.hpp"
 #include "tactus/synthesis/oscillator.hpp"
 
 namespace tactus {
@@ -20,7 +21,7 @@ class Flutter {
 
   private:
     Oscillator oscillator_;
-    double glide_ = 0.0;
+    Glide glide_;
     double amplitude_ = 0, rate_hz_ = 0, square_mix_ = 0;
     double target_amplitude_ = 0, target_rate_hz_ = 0, target_square_mix_ = 0;
 };

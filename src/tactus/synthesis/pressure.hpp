@@ -7,6 +7,7 @@
 #pragma once
 
 #include "tactus/mapping/control_frame.hpp"
+#include "tactus/synthesis/glide.hpp"
 
 namespace tactus {
 
@@ -18,7 +19,7 @@ class Pressure {
     void render(float* out, int count) noexcept;
 
   private:
-    double glide_ = 0.0;
+    Glide glide_;
     double level_ = 0.0, target_ = 0.0;
 };
 

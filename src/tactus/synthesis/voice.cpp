@@ -1,14 +1,9 @@
 #include "tactus/synthesis/voice.hpp"
 
-#include <cmath>
-
-#include "tactus/core/units.hpp"
-
 namespace tactus {
 namespace {
 constexpr double kGlideMs = 1.0;
 constexpr double kQuietEnvelope = 1e-3;  // -60 dB: restarting the phase here cannot click
-constexpr double kSilentAmplitude = 1e-9;
 }  // namespace
 
 void Voice::prepare(double sample_rate_hz, double harmonic_limit_hz) {
@@ -16,8 +11,7 @@ void Voice::prepare(double sample_rate_hz, double harmonic_limit_hz) {
     envelope_.prepare(sample_rate_hz);
     flutter_.prepare(sample_rate_hz);
     pressure_.prepare(sample_rate_hz);
-    glide_ = one_pole_coefficient(kGlideMs, sample_rate_hz);
-    glide_mean_ = glide_ > 0.0 ? (1.0 - glide_) / -std::log(glide_) : 0.0;
+    glide_.prepare(kGlideMs, sample_rate_hz);
     reset();
 }
 
@@ -49,20 +43,18 @@ void Voice::apply(const ControlFrame& frame) noexcept {
 
 void Voice::render(float* out, int count) noexcept {
     double amplitude = amplitude_, frequency = frequency_hz_, mix = square_mix_;
-    const double g = glide_;
-    for (int i = 0; i < count; ++i) {  // this sample's values, then one glide step
+    const Glide glide = glide_;
+    for (int i = 0; i < count; ++i) {
         const double level = envelope_.next();
-        const double mean_frequency =
-            target_.frequency_hz + glide_mean_ * (frequency - target_.frequency_hz);
         // Silent here and at the next sample: the oscillator can wait (it restarts at a trigger).
-        out[i] =
-            level == 0.0 && envelope_.level() == 0.0
-                ? 0.0f
-                : static_cast<float>(amplitude * level * oscillator_.next(mean_frequency, mix));
-        amplitude = target_.amplitude + g * (amplitude - target_.amplitude);
-        if (target_.amplitude == 0.0 && amplitude < kSilentAmplitude) amplitude = 0.0;
-        frequency = target_.frequency_hz + g * (frequency - target_.frequency_hz);
-        mix = target_.square_mix + g * (mix - target_.square_mix);
+        out[i] = level == 0.0 && envelope_.level() == 0.0
+                     ? 0.0f
+                     : static_cast<float>(
+                           amplitude * level *
+                           oscillator_.next(glide.mean(frequency, target_.frequency_hz), mix));
+        amplitude = glide.step(amplitude, target_.amplitude);
+        frequency = glide.step(frequency, target_.frequency_hz);
+        mix = glide.step(mix, target_.square_mix);
     }
     amplitude_ = amplitude;
     frequency_hz_ = frequency;

@@ -10,6 +10,7 @@
 #include "tactus/mapping/control_frame.hpp"
 #include "tactus/synthesis/envelope.hpp"
 #include "tactus/synthesis/flutter.hpp"
+#include "tactus/synthesis/glide.hpp"
 #include "tactus/synthesis/oscillator.hpp"
 #include "tactus/synthesis/pressure.hpp"
 
@@ -30,10 +31,7 @@ class Voice {
     Envelope envelope_;
     Flutter flutter_;
     Pressure pressure_;
-    double glide_ = 0.0;
-    // The glide's mean over one sample, as a fraction of its distance to the target: the
-    // oscillator advances by the frequency's exact integral, the same at any sample rate.
-    double glide_mean_ = 0.0;
+    Glide glide_;
     double amplitude_ = 0, frequency_hz_ = 0, square_mix_ = 0;
     ControlFrame target_;
 };
