@@ -16,29 +16,25 @@ struct OnsetsOptions {
     PipelineOptions pipeline;
 };
 
-class OnsetWriter final : public FrameObserver {
-  public:
-    OnsetWriter(std::ostream& out, const Engine& engine) : out_(out), engine_(engine) {}
-    void on_frame(const Features& f, const ControlFrame&) noexcept override {
-        if (!f.onset) return;
-        const double sample_rate_hz = engine_.sample_rate_hz();
-        out_ << fmt::format("{:.6f} {:.6f} {:.4g}\n", f.onset_sample / sample_rate_hz,
-                            f.frame_end_sample / sample_rate_hz, f.onset_odf);
-    }
-
-  private:
-    std::ostream& out_;
-    const Engine& engine_;
-};
-
+// Only the onset detector runs: the features and the vibration are not computed, the onsets are
+// those `render` triggers pulses on.
 void onsets(const OnsetsOptions& o) {
     const Settings settings = o.pipeline.resolve();
     if (!o.output.empty() && o.output != "-") check_output(o.input, o.output, o.force);
-    Engine engine(settings);
     TextOutput output(o.output);
-    OnsetWriter writer(output.stream(), engine);
-    engine.set_observer(&writer);
-    run_with_progress(o.input, engine, "onsets");
+    std::ostream& out = output.stream();
+    Analyzer analyzer;
+    double sample_rate_hz = 0;
+    Progress progress("onsets");
+    analyse_file(
+        o.input, analyzer, settings, FeatureSet::none(),
+        [&](const Features& f) {
+            if (f.onset)
+                out << fmt::format("{:.6f} {:.6f} {:.4g}\n", f.onset_sample / sample_rate_hz,
+                                   f.frame_end_sample / sample_rate_hz, f.onset_odf);
+        },
+        {.on_progress = [&](int64_t done, int64_t total) { progress.update(done, total); },
+         .on_start = [&](double rate_hz, int) { sample_rate_hz = rate_hz; }});
     output.commit();
 }
 

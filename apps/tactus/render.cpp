@@ -43,7 +43,7 @@ class OnsetCounter final : public FrameObserver {
     void on_frame(const Features&, const ControlFrame& control) noexcept override {
         onsets += control.trigger;
     }
-    bool reads_features() const noexcept override { return false; }
+    FeatureSet reads() const noexcept override { return FeatureSet::none(); }
     int onsets = 0;
 };
 

@@ -1,12 +1,14 @@
 // run_file: streams a file through an Engine in blocks; the output equals processing the whole
 // file in one go, every frame reaches on_output, progress ends at the total, a file at an
-// unsupported rate or without frames is rejected naming the file.
+// unsupported rate or without frames is rejected naming the file. analyse_file gives the
+// engine's features, and only the onsets when asked for none.
 #include "tactus/io/run_file.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -67,15 +69,71 @@ TEST_F(RunFileTest, OutputMatchesTheEngineAndProgressReachesTheEnd) {
     EXPECT_EQ(streamed, expected);
 }
 
+class FeatureList final : public FrameObserver {
+  public:
+    void on_frame(const Features& f, const ControlFrame&) noexcept override { frames.push_back(f); }
+    std::vector<Features> frames;
+};
+
+void expect_same_features(const std::vector<Features>& a, const std::vector<Features>& b) {
+    ASSERT_EQ(a.size(), b.size());
+    for (size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(a[i].frame_end_sample, b[i].frame_end_sample) << i;
+        EXPECT_EQ(a[i].loudness_db, b[i].loudness_db) << i;
+        EXPECT_EQ(a[i].brightness_hz, b[i].brightness_hz) << i;
+        EXPECT_EQ(a[i].noisiness, b[i].noisiness) << i;
+        EXPECT_EQ(a[i].pitch_hz, b[i].pitch_hz) << i;
+        EXPECT_EQ(a[i].onset_odf, b[i].onset_odf) << i;
+        EXPECT_EQ(a[i].onset, b[i].onset) << i;
+        if (a[i].onset) {
+            EXPECT_EQ(a[i].onset_sample, b[i].onset_sample) << i;
+        }
+    }
+}
+
+TEST_F(RunFileTest, AnalyseFileGivesTheEnginesFeaturesWithoutSynthesis) {
+    const double fs = 44100;
+    const test::DrumSignal drums = test::drum_pattern(fs, 2.5, 9);
+    const fs::path path = write("drums.wav", drums.audio, fs);
+    Engine engine;
+    FeatureList from_engine;
+    engine.set_observer(&from_engine);
+    run_file(path, engine);
+
+    Analyzer analyzer;
+    std::vector<Features> all, onsets_only;
+    const RunSummary summary = analyse_file(path, analyzer, Settings{}, FeatureSet{},
+                                            [&](const Features& f) { all.push_back(f); });
+    EXPECT_EQ(summary.frames, static_cast<int64_t>(drums.audio.size()));
+    expect_same_features(all, from_engine.frames);
+    EXPECT_GT(std::count_if(all.begin(), all.end(), [](const Features& f) { return f.onset; }), 5);
+
+    analyse_file(path, analyzer, Settings{}, FeatureSet::none(),
+                 [&](const Features& f) { onsets_only.push_back(f); });
+    ASSERT_EQ(onsets_only.size(), all.size());
+    for (size_t i = 0; i < all.size(); ++i) {
+        EXPECT_EQ(onsets_only[i].onset, all[i].onset) << i;
+        EXPECT_EQ(onsets_only[i].onset_sample, all[i].onset_sample) << i;
+        EXPECT_EQ(onsets_only[i].loudness_db, Features{}.loudness_db) << i;  // not computed
+        EXPECT_EQ(onsets_only[i].brightness_hz, 0.0) << i;
+    }
+}
+
 TEST_F(RunFileTest, RejectsUnsupportedRatesNamingTheFile) {
     const fs::path path = write("slow.wav", std::vector<float>(4000, 0.1f), 4000);
     Engine engine;
-    try {
-        run_file(path, engine);
-        ADD_FAILURE() << "accepted a 4 kHz file";
-    } catch (const std::runtime_error& e) {
-        EXPECT_THAT(e.what(), HasSubstr(path.string()));
-        EXPECT_THAT(e.what(), HasSubstr("4000"));
+    Analyzer analyzer;
+    for (const bool analysis_only : {false, true}) {
+        try {
+            if (analysis_only)
+                analyse_file(path, analyzer, Settings{}, FeatureSet{}, [](const Features&) {});
+            else
+                run_file(path, engine);
+            ADD_FAILURE() << "accepted a 4 kHz file";
+        } catch (const std::runtime_error& e) {
+            EXPECT_THAT(e.what(), HasSubstr(path.string()));
+            EXPECT_THAT(e.what(), HasSubstr("4000"));
+        }
     }
 }
 

@@ -51,7 +51,7 @@ bool Analyzer::write(const float* samples, int count) noexcept {
                         ? std::copysign(kMaxInput, x)
                         : 0.0f;
     }
-    loudness_.write(clean_.data(), count);
+    if (computed_.loudness) loudness_.write(clean_.data(), count);
     dc_blocker_.process(clean_.data(), count);
     history_.write(clean_.data(), count);
     filled_ += count;
@@ -62,11 +62,13 @@ const Features& Analyzer::analyse() noexcept {
     filled_ = 0;
     Features& f = features_;
     f.frame_end_sample = history_.written();
-    f.loudness_db = loudness_.loudness_db();
-    stft_.analyse(history_);
-    f.brightness_hz = brightness_.centroid_hz(stft_.magnitudes());
-    f.noisiness = noisiness_.compute(stft_.powers());
-    if (frames_++ % pitch_every_frames_ == 0 && pitch_enabled_) {
+    if (computed_.loudness) f.loudness_db = loudness_.loudness_db();
+    if (computed_.spectrum) {
+        stft_.analyse(history_);
+        f.brightness_hz = brightness_.centroid_hz(stft_.magnitudes());
+        f.noisiness = noisiness_.compute(stft_.powers());
+    }
+    if (frames_++ % pitch_every_frames_ == 0 && computed_.pitch) {
         const Pitch pitch = pitch_.analyse(history_);
         f.pitch_hz = pitch.f0_hz;
         f.pitch_confidence = pitch.confidence;

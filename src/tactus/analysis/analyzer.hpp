@@ -24,9 +24,8 @@ class Analyzer {
     void reset() noexcept;
 
     int hop_samples() const { return hop_samples_; }
-    // Pitch costs as much as the other features together: when nothing reads it, it is not
-    // computed and reads 0 (unvoiced). On by default.
-    void set_pitch_enabled(bool enabled) noexcept { pitch_enabled_ = enabled; }
+    // The features to compute (all by default); the others keep their Features default.
+    void set_features(FeatureSet computed) noexcept { computed_ = computed; }
     // Samples that can be written before the next frame is due (1 ... hop).
     int samples_to_next_frame() const noexcept { return hop_samples_ - filled_; }
     // Writes at most samples_to_next_frame() samples; returns true when a frame is due.
@@ -53,7 +52,7 @@ class Analyzer {
     std::vector<float> clean_;  // sanitised input, one hop
     int hop_samples_ = 0, filled_ = 0;
     int pitch_every_frames_ = 1, frames_ = 0;
-    bool pitch_enabled_ = true;
+    FeatureSet computed_;
 };
 
 }  // namespace tactus

@@ -19,6 +19,40 @@ struct Features {
     int64_t onset_sample = 0;      // its estimated start (valid when onset)
 };
 
+// The analysis by cost: loudness (a K filter on every sample), spectrum (brightness and
+// noisiness: an FFT every hop) and pitch (YIN, as much as the rest together). Onsets are always
+// computed: they trigger the envelope. A group nothing reads is skipped and keeps its default.
+struct FeatureSet {
+    bool loudness = true, spectrum = true, pitch = true;
+
+    static constexpr FeatureSet none() { return {false, false, false}; }
+    constexpr FeatureSet operator|(FeatureSet other) const {
+        return {loudness || other.loudness, spectrum || other.spectrum, pitch || other.pitch};
+    }
+};
+
+// The group a mapping source reads (onset_odf: none).
+constexpr FeatureSet group_of(FeatureSource source) {
+    FeatureSet set = FeatureSet::none();
+    switch (source) {
+        case FeatureSource::loudness_db:
+            set.loudness = true;
+            break;
+        case FeatureSource::brightness_hz:
+        case FeatureSource::noisiness:
+        case FeatureSource::tonality:
+            set.spectrum = true;
+            break;
+        case FeatureSource::pitch_hz:
+        case FeatureSource::pitch_confidence:
+            set.pitch = true;
+            break;
+        case FeatureSource::onset_odf:
+            break;
+    }
+    return set;
+}
+
 inline double feature_value(const Features& f, FeatureSource source) {
     switch (source) {
         case FeatureSource::loudness_db:

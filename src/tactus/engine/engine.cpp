@@ -24,11 +24,15 @@ void Engine::set_actuator(std::optional<ActuatorProfile> actuator) {
     actuator_ = std::move(actuator);
 }
 
-void Engine::prepare(double sample_rate_hz, int max_block) {
+void Engine::check_sample_rate(double sample_rate_hz) {
     if (!(sample_rate_hz >= kMinSampleRateHz && sample_rate_hz <= kMaxSampleRateHz))
         throw std::invalid_argument(
             fmt::format("sample rate {} Hz is outside the supported {}-{} Hz", sample_rate_hz,
                         kMinSampleRateHz, kMaxSampleRateHz));
+}
+
+void Engine::prepare(double sample_rate_hz, int max_block) {
+    check_sample_rate(sample_rate_hz);
     if (max_block < 1 || max_block > kMaxBlock)
         throw std::invalid_argument(
             fmt::format("block size {} is outside the supported 1-{}", max_block, kMaxBlock));
@@ -68,17 +72,16 @@ void Engine::reset() noexcept {
     clipped_ = 0;
 }
 
-// Pitch is computed when the mapping or the observer reads it.
+// The analysis computes what the mapping or the observer reads; the mapping's gate reads the
+// loudness.
 void Engine::set_observer(FrameObserver* observer) {
     observer_ = observer;
-    bool pitch_read = observer && observer->reads_features();
+    FeatureSet read = observer ? observer->reads() : FeatureSet::none();
+    read.loudness = true;
     for (P source : {P::amplitude_source, P::frequency_source, P::square_mix_source,
-                     P::flutter_level_source, P::flutter_rate_source, P::pressure_level_source}) {
-        const auto feature = static_cast<FeatureSource>(settings_[source]);
-        pitch_read |=
-            feature == FeatureSource::pitch_hz || feature == FeatureSource::pitch_confidence;
-    }
-    analyzer_.set_pitch_enabled(pitch_read);
+                     P::flutter_level_source, P::flutter_rate_source, P::pressure_level_source})
+        read = read | group_of(static_cast<FeatureSource>(settings_[source]));
+    analyzer_.set_features(read);
 }
 
 int Engine::latency() const {

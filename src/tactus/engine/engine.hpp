@@ -31,8 +31,9 @@ class FrameObserver {
   public:
     virtual ~FrameObserver() = default;
     virtual void on_frame(const Features& features, const ControlFrame& control) noexcept = 0;
-    // False when on_frame() reads only the control frame: features nothing reads are skipped.
-    virtual bool reads_features() const noexcept { return true; }
+    // The features on_frame() reads besides the onsets (all by default); the engine computes
+    // only these and what the mapping reads.
+    virtual FeatureSet reads() const noexcept { return {}; }
 };
 
 class Engine {
@@ -50,6 +51,8 @@ class Engine {
 
     // May allocate. Throws std::invalid_argument for a sample rate outside 8-192 kHz.
     void prepare(double sample_rate_hz, int max_block);
+    // Throws std::invalid_argument for a sample rate outside 8-192 kHz.
+    static void check_sample_rate(double sample_rate_hz);
     void reset() noexcept;
     // Mono in, mono vibration out (may alias). count <= max_block.
     void process(const float* in, float* out, int count) noexcept;

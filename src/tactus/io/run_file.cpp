@@ -5,29 +5,35 @@
 #include <stdexcept>
 #include <vector>
 
+#include "tactus/engine/denormals.hpp"
 #include "tactus/io/audio_reader.hpp"
 
 namespace tactus {
+namespace {
 
-RunSummary run_file(const std::filesystem::path& input, Engine& engine,
-                    const RunCallbacks& callbacks) {
-    constexpr int kBlock = Engine::kMaxBlock;  // large reads: fewer system calls
+constexpr int kBlock = Engine::kMaxBlock;  // large reads: fewer system calls
+
+// Opens `input`, calls prepare(sample rate) (an invalid_argument names the file), then
+// process(block, frames) for every block to the end.
+RunSummary stream(const std::filesystem::path& input,
+                  const std::function<void(double sample_rate_hz)>& prepare,
+                  const std::function<void(const float* in, int frames)>& process,
+                  const RunCallbacks& callbacks) {
     AudioReader reader(input);
     try {
-        engine.prepare(reader.sample_rate_hz(), kBlock);
+        prepare(reader.sample_rate_hz());
     } catch (const std::invalid_argument& e) {
         throw std::runtime_error(fmt::format("{}: {}", input.string(), e.what()));
     }
     if (callbacks.on_start) callbacks.on_start(reader.sample_rate_hz(), reader.channels());
-    std::vector<float> in(kBlock), out(kBlock);
+    std::vector<float> in(kBlock);
     RunSummary summary{reader.sample_rate_hz(), reader.channels(), 0};
     const int64_t report_every = std::max<int64_t>(kBlock, reader.frames() / 100);
     int64_t next_report = 0;
     for (;;) {
         const int got = reader.read(in.data(), kBlock);
         if (got == 0) break;
-        engine.process(in.data(), out.data(), got);
-        if (callbacks.on_output) callbacks.on_output(out.data(), got);
+        process(in.data(), got);
         summary.frames += got;
         if (callbacks.on_progress && summary.frames >= next_report) {
             callbacks.on_progress(summary.frames, reader.frames());
@@ -38,6 +44,42 @@ RunSummary run_file(const std::filesystem::path& input, Engine& engine,
         throw std::runtime_error(fmt::format("{}: no audio frames", input.string()));
     if (callbacks.on_progress) callbacks.on_progress(summary.frames, summary.frames);
     return summary;
+}
+
+}  // namespace
+
+RunSummary run_file(const std::filesystem::path& input, Engine& engine,
+                    const RunCallbacks& callbacks) {
+    std::vector<float> out(kBlock);
+    return stream(
+        input, [&](double sample_rate_hz) { engine.prepare(sample_rate_hz, kBlock); },
+        [&](const float* in, int frames) {
+            engine.process(in, out.data(), frames);
+            if (callbacks.on_output) callbacks.on_output(out.data(), frames);
+        },
+        callbacks);
+}
+
+RunSummary analyse_file(const std::filesystem::path& input, Analyzer& analyzer,
+                        const Settings& settings, FeatureSet features,
+                        const std::function<void(const Features&)>& on_frame,
+                        const RunCallbacks& callbacks) {
+    return stream(
+        input,
+        [&](double sample_rate_hz) {
+            Engine::check_sample_rate(sample_rate_hz);
+            analyzer.prepare(sample_rate_hz, settings);
+            analyzer.set_features(features);
+        },
+        [&](const float* in, int frames) {
+            const ScopedFlushDenormals no_denormals;  // as in Engine::process
+            for (int done = 0; done < frames;) {
+                const int chunk = std::min(frames - done, analyzer.samples_to_next_frame());
+                if (analyzer.write(in + done, chunk)) on_frame(analyzer.analyse());
+                done += chunk;
+            }
+        },
+        callbacks);
 }
 
 }  // namespace tactus

@@ -1,5 +1,5 @@
-// Streams one audio file through an Engine in fixed blocks: the offline driver every command
-// shares. Memory is constant in the file's length.
+// Streams one audio file in fixed blocks, through an Engine or through the analysis alone: the
+// offline driver every command shares. Memory is constant in the file's length.
 #pragma once
 
 #include <cstdint>
@@ -11,7 +11,7 @@
 namespace tactus {
 
 struct RunCallbacks {
-    // Each block of vibration as it is produced (may be empty).
+    // Each block of vibration as it is produced (may be empty; run_file only).
     std::function<void(const float* vibration, int frames)> on_output{};
     // Frames done and the total (total <= 0 when unknown), about every 1 % of the file.
     std::function<void(int64_t done, int64_t total)> on_progress{};
@@ -28,5 +28,13 @@ struct RunSummary {
 // Opens `input`, prepares `engine` at the file's sample rate, runs it to the end.
 RunSummary run_file(const std::filesystem::path& input, Engine& engine,
                     const RunCallbacks& callbacks = {});
+
+// Opens `input`, prepares `analyzer` at the file's sample rate with `settings` and computes
+// `features` (and the onsets), and calls on_frame for every analysis frame: the features of
+// run_file's engine without its synthesis.
+RunSummary analyse_file(const std::filesystem::path& input, Analyzer& analyzer,
+                        const Settings& settings, FeatureSet features,
+                        const std::function<void(const Features&)>& on_frame,
+                        const RunCallbacks& callbacks = {});
 
 }  // namespace tactus
