@@ -13,7 +13,7 @@ namespace tactus::bench {
 
 const std::vector<float>& amen() {
     static const std::vector<float> samples = [] {
-        MonoAudio audio = read_mono("/usr/share/sonic-pi/samples/loop_amen_full.flac");
+        MonoAudio audio = read_mono(kAmenPath);
         if (audio.sample_rate_hz != kRateHz)
             throw std::runtime_error("loop_amen_full.flac: expected 44.1 kHz");
         return std::move(audio.samples);

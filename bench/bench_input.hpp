@@ -11,6 +11,7 @@
 namespace tactus::bench {
 
 inline constexpr double kRateHz = 44100.0;
+inline constexpr const char* kAmenPath = "/usr/share/sonic-pi/samples/loop_amen_full.flac";
 
 const std::vector<float>& amen();  // read once; its rate is kRateHz
 int hop_samples(const Settings& settings = {});

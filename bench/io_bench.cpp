@@ -1,0 +1,55 @@
+// File I/O, the part of `tactus render` around the pipeline: decoding the Amen break's FLAC
+// through libsndfile (downmixed to mono, as render reads it) and writing its length of
+// vibration as a float WAV. x real time as in WholePipeline; together they bound how fast
+// render can be on a file, whatever the pipeline costs.
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+#include <vector>
+
+#include "bench_input.hpp"
+#include "tactus/engine/engine.hpp"
+#include "tactus/io/audio_reader.hpp"
+#include "tactus/io/audio_writer.hpp"
+
+namespace tactus::bench {
+namespace {
+
+void set_real_time(benchmark::State& state, size_t samples) {
+    state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(samples));
+    state.counters["x_real_time"] =
+        benchmark::Counter(static_cast<double>(samples) / kRateHz * state.iterations(),
+                           benchmark::Counter::kIsRate);
+}
+
+void ReadFlac(benchmark::State& state) {
+    std::vector<float> block(Engine::kMaxBlock);
+    size_t samples = 0;
+    for (auto _ : state) {
+        AudioReader reader(kAmenPath);
+        samples = 0;
+        while (const int got = reader.read(block.data(), Engine::kMaxBlock)) samples += got;
+        benchmark::DoNotOptimize(block.data());
+    }
+    set_real_time(state, samples);
+}
+BENCHMARK(ReadFlac)->Unit(benchmark::kMillisecond);
+
+void WriteFloatWav(benchmark::State& state) {
+    const std::vector<float>& vibration = amen_vibration();
+    const std::filesystem::path path =
+        std::filesystem::temp_directory_path() / "tactus_bench_write.wav";
+    for (auto _ : state) {
+        AudioWriter writer(path, kRateHz, 1);
+        for (size_t i = 0; i < vibration.size(); i += Engine::kMaxBlock)
+            writer.write(vibration.data() + i,
+                         static_cast<int>(std::min<size_t>(Engine::kMaxBlock, vibration.size() - i)));
+        writer.commit();
+    }
+    std::filesystem::remove(path);
+    set_real_time(state, vibration.size());
+}
+BENCHMARK(WriteFloatWav)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace tactus::bench
