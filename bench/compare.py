@@ -11,7 +11,7 @@ mapping, synthesis, post-processing, float WAV written); `tactus onsets` runs it
 detection alone, the same job as aubioonset, which runs its default onset method (hfc) with hop
 256 and every other parameter stated; both write onset times to a file. The three run in turn,
 so a load change on the machine hits all alike; the script prints each one's median wall time,
-tactus's ratio to aubioonset, x real time, and peak RSS (getrusage of the child: ru_maxrss).
+tactus's ratio to aubioonset, x real time, and peak RSS (GNU time's maximum resident set).
 """
 import argparse
 import datetime
@@ -47,10 +47,13 @@ def looped(work, repeats):
 
 def timed(cmd, stdout=subprocess.DEVNULL):
     """Wall seconds, CPU seconds (user + system) and peak RSS (MiB) of one run of `cmd`; exits
-    with its error if it fails."""
-    with tempfile.TemporaryFile() as stderr:
+    with its error if it fails. The peak RSS is GNU time's: a child forked from this Python
+    process would report Python's own pages as its peak (ru_maxrss counts the image it was
+    forked from), so `time` forks it from its own small image instead."""
+    with tempfile.TemporaryFile() as stderr, tempfile.NamedTemporaryFile("r") as rss:
         start = time.perf_counter()
-        process = subprocess.Popen(cmd, stdout=stdout, stderr=stderr)
+        process = subprocess.Popen(["/usr/bin/time", "-f", "%M", "-o", rss.name] + cmd,
+                                   stdout=stdout, stderr=stderr)
         _, status, usage = os.wait4(process.pid, 0)
         wall_s = time.perf_counter() - start
         process.returncode = os.waitstatus_to_exitcode(status)
@@ -58,18 +61,19 @@ def timed(cmd, stdout=subprocess.DEVNULL):
             stderr.seek(0)
             sys.exit(f"bench/compare.py: {' '.join(cmd)} failed ({process.returncode}): "
                      f"{stderr.read().decode(errors='replace').strip()}")
-    return wall_s, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024.0
+        peak_kib = int(rss.read().split()[-1])
+    return wall_s, usage.ru_utime + usage.ru_stime, peak_kib / 1024.0
 
 
 def measure(tactus, audio, work, runs):
-    output = work / "out.vibration.wav"
+    vibration = work / "out.vibration.wav"
     onsets = work / "out.onsets.txt"
     runs_of = {"render": [], "onsets": [], "aubio": []}  # (wall s, CPU s, peak RSS MiB) per run
     for _ in range(runs):
-        runs_of["render"].append(timed([tactus, "render", str(audio), "-o", str(output)]))
-        output.unlink()
+        runs_of["render"].append(timed([tactus, "render", str(audio), "-o", str(vibration)]))
+        vibration.unlink()
+        onsets.unlink(missing_ok=True)
         runs_of["onsets"].append(timed([tactus, "onsets", str(audio), "-o", str(onsets)]))
-        onsets.unlink()
         with open(onsets, "w") as out:
             runs_of["aubio"].append(
                 timed(["aubioonset", "-i", str(audio)] + AUBIO_ARGS, stdout=out))
@@ -95,7 +99,7 @@ def main():
         sys.exit("bench/compare.py: --runs and --long-runs must be at least 1")
 
     tactus = str((args.build_dir / "apps/tactus/tactus").resolve())
-    for tool in (tactus, "aubioonset", "sox"):
+    for tool in (tactus, "aubioonset", "sox", "/usr/bin/time"):
         if not shutil.which(tool):
             sys.exit(f"bench/compare.py: {tool}: not found")
     work = args.build_dir / "bench-compare"
@@ -118,8 +122,8 @@ def main():
              f"`aubioonset -i FILE {' '.join(AUBIO_ARGS)}` (its default method and hop), onset "
              "times written to a file.",
              "- Runs take turns: render, onsets, aubio, render, ...; wall and CPU (user + "
-             "system) times are medians; x real time is audio seconds per wall second; peak RSS is the "
-             "largest ru_maxrss of the child over the runs.", "",
+             "system) times are medians; x real time is audio seconds per wall second; peak "
+             "RSS is the largest over the runs, as GNU time reports it.", "",
              "| file | audio s | runs | tactus command | tactus wall s | aubio wall s | "
              "tactus / aubio wall | tactus CPU s | aubio CPU s | tactus / aubio CPU | "
              "tactus x real time | aubio x real time | tactus peak RSS MiB | "
