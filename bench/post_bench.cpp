@@ -1,5 +1,6 @@
-// Each post-processing stage and the whole PostChain, per sample, on the vibration the Voice
-// makes for the Amen break (44.1 kHz, default settings), processed in 512-sample blocks.
+// Each post-processing stage, the whole PostChain and the engine's upsampler, per sample, on the
+// vibration the Voice makes for the Amen break (44.1 kHz, default settings), processed in
+// 512-sample blocks.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -7,6 +8,7 @@
 
 #include "bench_input.hpp"
 #include "tactus/core/units.hpp"
+#include "tactus/engine/upsampler.hpp"
 #include "tactus/post/band_limit.hpp"
 #include "tactus/post/flattening_filter.hpp"
 #include "tactus/post/peak_limiter.hpp"
@@ -70,6 +72,20 @@ void PostChainProcess(benchmark::State& state) {
     per_sample(state, [&](float* x, int n) { post.process(x, n); });
 }
 BENCHMARK(PostChainProcess);
+
+// The engine's last stage at 44.1 kHz: the vibration, post-processed at a quarter of the rate,
+// upsampled back. Items are output samples.
+void UpsamplerProcess(benchmark::State& state) {
+    constexpr int kFactor = 4;
+    Upsampler upsampler;
+    upsampler.prepare(kFactor, kBlock / kFactor);
+    std::vector<float> out(kBlock);
+    per_sample(state, [&](float* x, int n) {
+        upsampler.process(x, n / kFactor, out.data(), n / kFactor * kFactor);
+        benchmark::DoNotOptimize(out.data());
+    });
+}
+BENCHMARK(UpsamplerProcess);
 
 }  // namespace
 }  // namespace tactus::bench
