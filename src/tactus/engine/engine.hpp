@@ -49,7 +49,7 @@ class Engine {
     // default. Before prepare.
     void set_actuator(std::optional<ActuatorProfile> actuator);
 
-    // May allocate. Throws std::invalid_argument for a sample rate outside 8-192 kHz.
+    // May allocate. Throws as check_sample_rate() does, or for a block outside 1-kMaxBlock.
     void prepare(double sample_rate_hz, int max_block);
     // Throws std::invalid_argument for a sample rate outside 8-192 kHz.
     static void check_sample_rate(double sample_rate_hz);

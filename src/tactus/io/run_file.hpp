@@ -15,7 +15,8 @@ struct RunCallbacks {
     std::function<void(const float* vibration, int frames)> on_output{};
     // Frames done and the total (total <= 0 when unknown), about every 1 % of the file.
     std::function<void(int64_t done, int64_t total)> on_progress{};
-    // Once the file is open and the engine prepared, before any audio (may be empty).
+    // Once the file is open and the engine or analyzer prepared, before any audio (may be
+    // empty).
     std::function<void(double sample_rate_hz, int channels)> on_start{};
 };
 
