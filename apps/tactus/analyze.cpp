@@ -125,7 +125,7 @@ void analyze(const AnalyzeOptions& o) {
     const std::filesystem::path out_path = o.output;
     std::string format = o.format;
     if (format.empty()) format = out_path.extension() == ".json" ? "json" : "csv";
-    if (!o.output.empty() && o.output != "-") check_output(o.input, o.output, o.force);
+    if (!is_stdout(o.output)) check_output(o.input, o.output, o.force);
 
     Engine engine(settings);
     // The vibration drives the named actuator (compensated, as render does) or, by default, is
@@ -143,7 +143,7 @@ void analyze(const AnalyzeOptions& o) {
          .on_start = [&](double sample_rate_hz, int) { writer.start(sample_rate_hz); }});
     writer.finish();
     output.commit();
-    if (!o.output.empty() && o.output != "-")
+    if (!is_stdout(o.output))
         std::cerr << fmt::format(
             "{}: {} frames every {:.2f} ms, {} onsets\n", o.output, writer.rows(),
             1e3 * engine.hop_samples() / engine.sample_rate_hz(), writer.onsets());

@@ -38,7 +38,7 @@ std::vector<std::exception_ptr> run_batch(
         }
     };
     std::vector<std::jthread> workers;
-    const size_t threads = std::clamp<size_t>(static_cast<size_t>(std::max(jobs, 1)), 1, count);
+    const size_t threads = std::min(static_cast<size_t>(std::max(jobs, 1)), count);
     for (size_t t = 0; t < threads; ++t) workers.emplace_back(worker);
 
     // This thread draws the bar; the workers only count.

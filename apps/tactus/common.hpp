@@ -44,12 +44,19 @@ inline void add_force_option(CLI::App& command, bool& force) {
     command.add_flag("--force", force, "replace an existing output file");
 }
 
+// `callbacks` with their progress drawn on `progress`.
+inline RunCallbacks with_progress(Progress& progress, RunCallbacks callbacks = {}) {
+    callbacks.on_progress = [&progress](int64_t done, int64_t total) {
+        progress.update(done, total);
+    };
+    return callbacks;
+}
+
 // Runs `engine` over `input` with a progress bar labelled `label`.
 inline RunSummary run_with_progress(const std::string& input, Engine& engine,
                                     const std::string& label, RunCallbacks callbacks = {}) {
     Progress progress(label);
-    callbacks.on_progress = [&](int64_t done, int64_t total) { progress.update(done, total); };
-    return run_file(input, engine, callbacks);
+    return run_file(input, engine, with_progress(progress, std::move(callbacks)));
 }
 
 }  // namespace tactus::cli

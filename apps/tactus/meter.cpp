@@ -9,7 +9,6 @@
 #include "actuator_option.hpp"
 #include "commands.hpp"
 #include "common.hpp"
-#include "tactus/io/audio_reader.hpp"
 #include "tactus/io/text_output.hpp"
 
 namespace tactus::cli {
@@ -23,20 +22,20 @@ struct MeterOptions {
     double contact_area_cm2 = Settings()[P::perception_contact_area_cm2];
 };
 
-void print_summary(const MeterOptions& o, const ActuatorProfile& a, double seconds,
-                   const perception::MeterSummary& s) {
-    std::cout << fmt::format(
+void print_summary(std::ostream& out, const MeterOptions& o, const ActuatorProfile& a,
+                   double seconds, const perception::MeterSummary& s) {
+    out << fmt::format(
         "{}: {:.2f} s through {} ({}, {:g} um at {:g} Hz full scale, {}), contact {:g} cm2\n",
         o.input, seconds, a.name, type_name(a.type), a.displacement_um, a.reference_hz,
         a.dc ? "DC capable" : "no DC", o.contact_area_cm2);
-    std::cout << fmt::format("{:<9}{:<11}{:>10}{:>11}{:>14}\n", "channel", "sensation", "max_dB_SL",
-                             "engaged_%", "median_dB_SL");
-    const auto row = [](std::string_view name, std::string_view sensation,
-                        const perception::ChannelSummary& c) {
-        std::cout << fmt::format("{:<9}{:<11}{:>10.1f}{:>11.1f}{:>14}\n", name, sensation, c.max_db,
-                                 100 * c.engaged_fraction,
-                                 c.engaged_fraction > 0 ? fmt::format("{:.1f}", c.median_engaged_db)
-                                                        : std::string("not engaged"));
+    out << fmt::format("{:<9}{:<11}{:>10}{:>11}{:>14}\n", "channel", "sensation", "max_dB_SL",
+                       "engaged_%", "median_dB_SL");
+    const auto row = [&out](std::string_view name, std::string_view sensation,
+                            const perception::ChannelSummary& c) {
+        out << fmt::format("{:<9}{:<11}{:>10.1f}{:>11.1f}{:>14}\n", name, sensation, c.max_db,
+                           100 * c.engaged_fraction,
+                           c.engaged_fraction > 0 ? fmt::format("{:.1f}", c.median_engaged_db)
+                                                  : std::string("not engaged"));
     };
     for (const auto& c : kChannels)
         row(c.name, c.sensation, s.channels[static_cast<int>(c.channel)]);
@@ -44,14 +43,8 @@ void print_summary(const MeterOptions& o, const ActuatorProfile& a, double secon
 }
 
 void meter(const MeterOptions& o) {
-    if (!o.output.empty() && o.output != "-") check_output(o.input, o.output, o.force);
+    if (!is_stdout(o.output)) check_output(o.input, o.output, o.force);
     const ActuatorProfile actuator = load_actuator(resolve_actuator(o.actuator));
-    AudioReader reader(o.input);
-    perception::SensationMeter meter;
-    meter.prepare(
-        reader.sample_rate_hz(), [&](double f) { return actuator.displacement_um_at(f); },
-        o.contact_area_cm2);
-
     std::optional<TextOutput> csv;
     if (!o.output.empty()) {
         csv.emplace(o.output);
@@ -68,18 +61,22 @@ void meter(const MeterOptions& o) {
         for (double v : r.level_db) out << fmt::format(",{:.2f}", v);
         out << fmt::format(",{:.2f}\n", r.combined_db);
     };
+    perception::SensationMeter meter;
     Progress progress("meter");
-    std::vector<float> block(4096);
-    int64_t frames = 0;
-    while (const int got = reader.read(block.data(), static_cast<int>(block.size()))) {
-        meter.write(block.data(), got, on_reading);
-        frames += got;
-        progress.update(frames, reader.frames());
-    }
-    if (frames == 0) throw std::runtime_error(fmt::format("{}: no audio frames", o.input));
+    const RunSummary run = stream_file(
+        o.input,
+        [&](double sample_rate_hz) {
+            meter.prepare(
+                sample_rate_hz, [&](double f) { return actuator.displacement_um_at(f); },
+                o.contact_area_cm2);
+        },
+        [&](const float* in, int frames) { meter.write(in, frames, on_reading); },
+        with_progress(progress));
     meter.finish(on_reading);
     if (csv) csv->commit();
-    print_summary(o, actuator, frames / reader.sample_rate_hz(), summariser.summary());
+    // The summary is data, on stdout, unless the CSV went there.
+    print_summary(csv && is_stdout(o.output) ? std::cerr : std::cout, o, actuator,
+                  run.frames / run.sample_rate_hz, summariser.summary());
 }
 
 }  // namespace

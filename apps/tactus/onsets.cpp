@@ -20,7 +20,7 @@ struct OnsetsOptions {
 // those `render` triggers pulses on.
 void onsets(const OnsetsOptions& o) {
     const Settings settings = o.pipeline.resolve();
-    if (!o.output.empty() && o.output != "-") check_output(o.input, o.output, o.force);
+    if (!is_stdout(o.output)) check_output(o.input, o.output, o.force);
     TextOutput output(o.output);
     std::ostream& out = output.stream();
     Analyzer analyzer;
@@ -33,8 +33,8 @@ void onsets(const OnsetsOptions& o) {
                 out << fmt::format("{:.6f} {:.6f} {:.4g}\n", f.onset_sample / sample_rate_hz,
                                    f.frame_end_sample / sample_rate_hz, f.onset_odf);
         },
-        {.on_progress = [&](int64_t done, int64_t total) { progress.update(done, total); },
-         .on_start = [&](double rate_hz, int) { sample_rate_hz = rate_hz; }});
+        with_progress(progress,
+                      {.on_start = [&](double rate_hz, int) { sample_rate_hz = rate_hz; }}));
     output.commit();
 }
 

@@ -43,7 +43,7 @@ void write_plot_csv(std::ostream& out, std::vector<Measurement> rows,
 void placement(const PlacementOptions& o) {
     const std::vector<Measurement> rows = read_measurements(o.input);
     const PlacementReport report = summarise_placement(rows);
-    if (!o.output.empty()) check_output(o.input, o.output, o.force);
+    if (!is_stdout(o.output)) check_output(o.input, o.output, o.force);
 
     std::cout << fmt::format("{:>8} {:>4} {:>8} {:>8} {:>8} {:>8} {:>8} {:>9}\n", "hole_mm", "n",
                              "subjects", "mean_mm", "sd_mm", "min_mm", "max_mm", "depth_mm");

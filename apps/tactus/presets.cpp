@@ -11,16 +11,15 @@ namespace tactus::cli {
 namespace {
 
 void print_params() {
-    std::cout << fmt::format("{:<36} {:>10} {:>10} {:>10} {:<4}  {}\n", "key", "default", "min",
-                             "max", "unit", "help");
+    constexpr std::string_view kRow = "{:<36} {:>10} {:>10} {:>10} {:<4}  {}\n";
+    std::cout << fmt::format(kRow, "key", "default", "min", "max", "unit", "help");
     const Settings defaults;
     for (size_t i = 0; i < param_table().size(); ++i) {
         const ParamSpec& s = param_table()[i];
         std::string range_min = fmt::format("{:g}", s.min), range_max = fmt::format("{:g}", s.max);
         if (s.kind == ParamKind::choice) range_min = range_max = "";
-        std::cout << fmt::format("{:<36} {:>10} {:>10} {:>10} {:<4}  {}\n", s.key,
-                                 defaults.text_of(static_cast<P>(i)), range_min, range_max, s.unit,
-                                 s.help);
+        std::cout << fmt::format(kRow, s.key, defaults.text_of(static_cast<P>(i)), range_min,
+                                 range_max, s.unit, s.help);
     }
 }
 

@@ -16,6 +16,7 @@
 #include "pipeline_options.hpp"
 #include "tactus/io/audio_reader.hpp"
 #include "tactus/io/audio_writer.hpp"
+#include "tactus/io/temporary_path.hpp"
 
 namespace tactus::cli {
 namespace {
@@ -78,22 +79,23 @@ std::vector<Job> plan(const RenderOptions& o) {
 // Renders one file; returns its one-line summary. On failure the output is not written.
 std::string render_one(const Job& job, const Settings& settings,
                        const std::optional<ActuatorProfile>& actuator, int channels,
-                       const RunCallbacks& progress) {
+                       const std::function<void(int64_t done, int64_t total)>& on_progress) {
     Engine engine(settings);
     engine.set_actuator(actuator);
     OnsetCounter counter;
     engine.set_observer(&counter);
     std::optional<AudioWriter> writer;  // opened at the input's sample rate
     float peak = 0.0f;
-    RunCallbacks callbacks = progress;
-    callbacks.on_output = [&](const float* v, int n) {
-        for (int i = 0; i < n; ++i) peak = std::max(peak, std::abs(v[i]));
-        writer->write(v, n);
-    };
-    callbacks.on_start = [&](double sample_rate_hz, int) {
-        writer.emplace(job.output, sample_rate_hz, channels);
-    };
-    const RunSummary summary = run_file(job.input, engine, callbacks);
+    const RunSummary summary =
+        run_file(job.input, engine,
+                 {.on_output =
+                      [&](const float* v, int n) {
+                          for (int i = 0; i < n; ++i) peak = std::max(peak, std::abs(v[i]));
+                          writer->write(v, n);
+                      },
+                  .on_progress = on_progress,
+                  .on_start = [&](double sample_rate_hz,
+                                  int) { writer.emplace(job.output, sample_rate_hz, channels); }});
     writer->commit();
     return fmt::format("{}: {:.2f} s at {:g} Hz, {} pulses, peak {:.1f} dBFS, {} channel(s)",
                        job.output.string(), summary.frames / summary.sample_rate_hz,
@@ -121,16 +123,17 @@ void render(const RenderOptions& o) {
         throw std::runtime_error(fmt::format("{}: cannot create the output directory: {}",
                                              o.output_dir, error.message()));
     std::vector<std::string> summaries(jobs.size());
+    // Each worker writes through one tracked temporary file.
     const std::vector<std::exception_ptr> errors = run_batch(
-        jobs.size(), o.jobs, [&] { return total_frames(jobs); },
+        jobs.size(), std::min(o.jobs, kMaxTrackedTemporaries), [&] { return total_frames(jobs); },
         jobs.size() == 1 ? "render" : fmt::format("render {} files", jobs.size()),
         [&](size_t i, const AddFrames& add_frames) {
             int64_t reported = 0;
-            const RunCallbacks progress{.on_progress = [&](int64_t done, int64_t) {
-                add_frames(done - reported);
-                reported = done;
-            }};
-            summaries[i] = render_one(jobs[i], settings, actuator, o.channels, progress);
+            summaries[i] =
+                render_one(jobs[i], settings, actuator, o.channels, [&](int64_t done, int64_t) {
+                    add_frames(done - reported);
+                    reported = done;
+                });
         });
     size_t failed = 0;
     for (size_t i = 0; i < jobs.size(); ++i) {

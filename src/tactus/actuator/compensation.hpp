@@ -1,9 +1,10 @@
 // Output compensation for an actuator profile: the inverse of its displacement response inside
 // its usable band (relative to reference_hz), so that equal signal levels give equal skin
 // displacement there, bounded to +-kBoundDb. A band-pass resonance (an LRA) is inverted by a
-// peaking cut of kBoundDb at f0 with Q' = Q 10^(-kBoundDb/40) and kBoundDb of gain: exactly
-// |s^2 + s/Q + 1| / |s^2 + s/Q'' + 1| scaled, the inverse resonance levelling off at the bound
-// away from f0 (Android's HapticGenerator notches its LRA's f0 likewise: perception.md). What
+// peaking cut of kBoundDb at f0 with Q' = Q 10^(-kBoundDb/40), followed by the gain that brings
+// f0 to its target (kBoundDb less the response at f0): exactly |s^2 + s/Q + 1| /
+// |s^2 + s/Q'' + 1| scaled, Q'' = Q 10^(-kBoundDb/20), the inverse resonance levelling off at the
+// bound away from f0 (Android's HapticGenerator notches its LRA's f0 likewise: perception.md). What
 // remains (tables, low-pass resonances) is fitted by FittedEq over the usable band.
 #pragma once
 

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "tactus/core/search_path.hpp"
+#include "tactus/core/units.hpp"
 
 #ifndef TACTUS_ACTUATOR_DIR
 #define TACTUS_ACTUATOR_DIR "actuators"
@@ -118,7 +119,7 @@ double ActuatorProfile::response_db(double frequency_hz) const {
 }
 
 double ActuatorProfile::displacement_um_at(double frequency_hz) const {
-    return displacement_um * std::pow(10.0, response_db(frequency_hz) / 20.0);
+    return displacement_um * db_to_gain(response_db(frequency_hz));
 }
 
 std::vector<fs::path> actuator_search_path() {

@@ -6,7 +6,8 @@
 #pragma once
 
 #include <cmath>
-#include <numbers>
+
+#include "tactus/core/units.hpp"
 
 namespace tactus {
 
@@ -15,7 +16,7 @@ class DcBlocker {
     static constexpr double kCornerHz = 10.0;  // below every feature's band (pitch.min_hz >= 30)
 
     void prepare(double sample_rate_hz) {
-        pole_ = static_cast<float>(std::exp(-2.0 * std::numbers::pi * kCornerHz / sample_rate_hz));
+        pole_ = static_cast<float>(std::exp(-2.0 * kPi * kCornerHz / sample_rate_hz));
         reset();
     }
     void reset() noexcept { previous_in_ = previous_out_ = 0.0f; }

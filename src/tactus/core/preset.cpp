@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "tactus/core/search_path.hpp"
 #include "tactus/core/printable.hpp"
+#include "tactus/core/search_path.hpp"
 
 #ifndef TACTUS_PRESET_DIR
 #define TACTUS_PRESET_DIR "presets"
@@ -32,8 +32,8 @@ void apply_node(Settings& settings, const std::string& key, const toml::node& no
     }
     if (key == "description" || key == "name") {
         if (!node.is_string())
-            throw std::runtime_error(fmt::format("{}: '{}' must be a string",
-                                                 where(origin, node.source()), printable(key)));
+            throw std::runtime_error(
+                fmt::format("{}: '{}' must be a string", where(origin, node.source()), key));
         return;
     }
     const auto id = find_param(key);

@@ -8,6 +8,7 @@
 
 #include "tactus/core/units.hpp"
 #include "tactus/engine/denormals.hpp"
+#include "tactus/post/clip.hpp"
 #include "tactus/synthesis/components.hpp"
 
 namespace tactus {
@@ -48,9 +49,6 @@ void Engine::prepare(double sample_rate_hz, int max_block) {
     pressure_.assign(pressure_enabled(settings_) ? static_cast<size_t>(max_internal_block) : 0,
                      0.0f);
 
-    analyzer_.prepare(sample_rate_hz, settings_);
-    mapper_.prepare(settings_, sample_rate_hz / analyzer_.hop_samples());
-    voice_.prepare(internal_rate_hz, band_high_hz);
     // The upsampler's delay comes out of the limiter's look-ahead (down to the shortest allowed).
     Settings post_settings = settings_;
     const double upsampler_delay_ms = 1e3 * upsampler_.delay_samples() / sample_rate_hz;
@@ -59,6 +57,9 @@ void Engine::prepare(double sample_rate_hz, int max_block) {
                                settings_[P::post_lookahead_ms] - upsampler_delay_ms));
     post_.prepare(internal_rate_hz, post_settings, actuator_ ? &*actuator_ : nullptr);
     ceiling_ = float_at_most(post_.ceiling());
+    analyzer_.prepare(sample_rate_hz, settings_);
+    mapper_.prepare(settings_, sample_rate_hz / analyzer_.hop_samples(), post_.ceiling());
+    voice_.prepare(internal_rate_hz, band_high_hz);
     reset();
 }
 
@@ -119,12 +120,7 @@ void Engine::process(const float* in, float* out, int count) noexcept {
     post_.process(internal, flutter, pressure, rendered);
     if (divisor == 1) return;
     upsampler_.process(internal, rendered, out, count);
-    for (int i = 0; i < count; ++i) {
-        if (out[i] > ceiling_)
-            out[i] = ceiling_, ++clipped_;
-        else if (out[i] < -ceiling_)
-            out[i] = -ceiling_, ++clipped_;
-    }
+    clipped_ += clip(out, count, ceiling_);
 }
 
 }  // namespace tactus

@@ -74,18 +74,16 @@ void Upsampler::prepare(int factor, int max_internal_block) {
         throw std::invalid_argument("upsampling factor must be 1-16");
     factor_ = factor;
     taps_ = {};
-    if (factor == 1) {
-        taps_[0][0] = 1.0f;
-        delay_samples_ = 0.0;
-    } else {
+    delay_samples_ = 0.0;
+    if (factor > 1) {  // factor 1 copies: no filter
         std::vector<double> h = minimum_phase(kaiser_lowpass(factor, factor * kTapsPerPhase));
         // Each phase sums to exactly 1: a constant passes without ripple at the internal rate.
-        double moment = 0.0;
         for (int r = 0; r < factor; ++r) {
             double sum = 0.0;
             for (int i = 0; i < kTapsPerPhase; ++i) sum += h[i * factor + r];
             for (int i = 0; i < kTapsPerPhase; ++i) h[i * factor + r] /= sum;
         }
+        double moment = 0.0;
         for (size_t n = 0; n < h.size(); ++n) moment += static_cast<double>(n) * h[n];
         delay_samples_ = moment / factor;  // DC group delay: sum n h[n] / sum h[n], sum = F
         for (int i = 0; i < kTapsPerPhase; ++i)

@@ -69,7 +69,7 @@ int AudioReader::read(float* mono, int max_frames) {
     const bool pcm16 = (info_.format & SF_FORMAT_SUBMASK) == SF_FORMAT_PCM_16 &&
                        (info_.format & SF_FORMAT_TYPEMASK) != SF_FORMAT_FLAC;
     float* destination = mono;
-    if (channels > 1 || pcm16) {
+    if (channels > 1) {
         interleaved_.resize(samples);
         destination = interleaved_.data();
     }
@@ -79,14 +79,13 @@ int AudioReader::read(float* mono, int max_frames) {
         got = sf_readf_short(file_, pcm16_.data(), max_frames);
         constexpr float kScale = 1.0f / 32768.0f;  // SFC_SET_NORM_FLOAT's scale for 16 bits
         for (sf_count_t i = 0; i < std::max<sf_count_t>(0, got) * channels; ++i)
-            interleaved_[i] = pcm16_[i] * kScale;
+            destination[i] = pcm16_[i] * kScale;
     } else {
         got = sf_readf_float(file_, destination, max_frames);
     }
     if (got < 0 || (got == 0 && sf_error(file_) != SF_ERR_NO_ERROR))
         throw std::runtime_error(fmt::format("{}: corrupt or truncated audio data: {}",
                                              path_.string(), sf_strerror(file_)));
-    if (channels == 1 && pcm16) std::copy_n(interleaved_.data(), got, mono);
     frames_read_ += got;
     // A stream that ends well before its header's length (an MP3 cut short: its Xing header
     // still holds the whole length) is truncated. One MPEG frame of slack (1152 samples, twice)

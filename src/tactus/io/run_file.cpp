@@ -13,12 +13,12 @@ namespace {
 
 constexpr int kBlock = Engine::kMaxBlock;  // large reads: fewer system calls
 
-// Opens `input`, calls prepare(sample rate) (an invalid_argument names the file), then
-// process(block, frames) for every block to the end.
-RunSummary stream(const std::filesystem::path& input,
-                  const std::function<void(double sample_rate_hz)>& prepare,
-                  const std::function<void(const float* in, int frames)>& process,
-                  const RunCallbacks& callbacks) {
+}  // namespace
+
+RunSummary stream_file(const std::filesystem::path& input,
+                       const std::function<void(double sample_rate_hz)>& prepare,
+                       const std::function<void(const float* in, int frames)>& process,
+                       const RunCallbacks& callbacks) {
     AudioReader reader(input);
     try {
         prepare(reader.sample_rate_hz());
@@ -46,12 +46,10 @@ RunSummary stream(const std::filesystem::path& input,
     return summary;
 }
 
-}  // namespace
-
 RunSummary run_file(const std::filesystem::path& input, Engine& engine,
                     const RunCallbacks& callbacks) {
     std::vector<float> out(kBlock);
-    return stream(
+    return stream_file(
         input, [&](double sample_rate_hz) { engine.prepare(sample_rate_hz, kBlock); },
         [&](const float* in, int frames) {
             engine.process(in, out.data(), frames);
@@ -64,7 +62,7 @@ RunSummary analyse_file(const std::filesystem::path& input, Analyzer& analyzer,
                         const Settings& settings, FeatureSet features,
                         const std::function<void(const Features&)>& on_frame,
                         const RunCallbacks& callbacks) {
-    return stream(
+    return stream_file(
         input,
         [&](double sample_rate_hz) {
             Engine::check_sample_rate(sample_rate_hz);

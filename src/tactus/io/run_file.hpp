@@ -26,6 +26,14 @@ struct RunSummary {
     int64_t frames = 0;
 };
 
+// Opens `input`, calls prepare(its sample rate) (an std::invalid_argument becomes a
+// std::runtime_error naming the file), then process(block, frames) for every block to the end;
+// a file without frames is an error. The driver under run_file and analyse_file.
+RunSummary stream_file(const std::filesystem::path& input,
+                       const std::function<void(double sample_rate_hz)>& prepare,
+                       const std::function<void(const float* in, int frames)>& process,
+                       const RunCallbacks& callbacks = {});
+
 // Opens `input`, prepares `engine` at the file's sample rate, runs it to the end.
 RunSummary run_file(const std::filesystem::path& input, Engine& engine,
                     const RunCallbacks& callbacks = {});

@@ -20,7 +20,7 @@ std::string system_reason() {
 }  // namespace
 
 TextOutput::TextOutput(const std::filesystem::path& path) : path_(path) {
-    if (path.empty() || path == "-") {
+    if (is_stdout(path)) {
         stdout_ = &std::cout;
         return;
     }
@@ -54,9 +54,8 @@ void TextOutput::commit() {
     }
     file_->flush();
     file_->close();
-    if (file_->fail()) {
+    if (file_->fail()) {  // the destructor discards the temporary
         const std::string reason = system_reason();
-        discard_temporary(temporary_);
         throw std::runtime_error(fmt::format("{}: write failed{}", path_.string(), reason));
     }
     commit_temporary(temporary_, path_);

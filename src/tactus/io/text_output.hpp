@@ -9,9 +9,14 @@
 
 namespace tactus {
 
+// An output path that means stdout: empty or "-".
+inline bool is_stdout(const std::filesystem::path& path) {
+    return path.empty() || path == "-";
+}
+
 class TextOutput {
   public:
-    // Empty path or "-": stdout.
+    // is_stdout(path): stdout.
     explicit TextOutput(const std::filesystem::path& path);
     ~TextOutput();
     TextOutput(const TextOutput&) = delete;

@@ -15,7 +15,7 @@ constexpr double kFlutterEqualizeGain = perception::info(Channel::P).innervation
 constexpr double kStepHysteresis = 0.1;  // of one step
 }  // namespace
 
-void Mapper::prepare(const Settings& s, double frames_per_second) {
+void Mapper::prepare(const Settings& s, double frames_per_second, double output_ceiling) {
     amplitude_.prepare(s, P::amplitude_source, frames_per_second);
     frequency_.prepare(s, P::frequency_source, frames_per_second);
     square_mix_.prepare(s, P::square_mix_source, frames_per_second);
@@ -31,8 +31,7 @@ void Mapper::prepare(const Settings& s, double frames_per_second) {
             ? s[P::flutter_weight] * (s[P::flutter_equalize] != 0.0 ? kFlutterEqualizeGain : 1.0)
             : 0.0;
     // Pressure weight is a fraction of the output ceiling (the post chain keeps that headroom).
-    pressure_weight_ =
-        pressure_enabled(s) ? s[P::pressure_weight] * db_to_gain(s[P::post_ceiling_db]) : 0.0;
+    pressure_weight_ = pressure_enabled(s) ? s[P::pressure_weight] * output_ceiling : 0.0;
     pressure_steps_ = static_cast<int>(std::lround(s[P::pressure_steps]));
     reset();
 }

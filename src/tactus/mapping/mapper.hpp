@@ -14,6 +14,7 @@
 #pragma once
 
 #include "tactus/analysis/features.hpp"
+#include "tactus/core/units.hpp"
 #include "tactus/mapping/control_frame.hpp"
 #include "tactus/mapping/feature_mapping.hpp"
 
@@ -21,7 +22,13 @@ namespace tactus {
 
 class Mapper {
   public:
-    void prepare(const Settings& settings, double frames_per_second);
+    // output_ceiling: the post chain's (PostChain::ceiling(), lowered by an actuator's max
+    // drive), which the pressure weight is a fraction of.
+    void prepare(const Settings& settings, double frames_per_second, double output_ceiling);
+    // Without an actuator: the ceiling is post.ceiling_db.
+    void prepare(const Settings& settings, double frames_per_second) {
+        prepare(settings, frames_per_second, db_to_gain(settings[P::post_ceiling_db]));
+    }
     void reset() noexcept;
     ControlFrame map(const Features& features) noexcept;
 

@@ -11,7 +11,6 @@ namespace tactus::perception {
 struct SensationMeter::ChannelState {
     Channel channel = Channel::P;
     int hop_steps = 1;
-    int window_samples = 0;
     RealFft fft;
     std::vector<float> window;
     std::vector<double> weight;  // per bin: 2 g_k (D / thr)^2 / (M sum w^2)
@@ -28,19 +27,19 @@ void SensationMeter::prepare(double sample_rate_hz, const Calibration& displacem
     sample_rate_hz_ = sample_rate_hz;
     step_samples_ = static_cast<int>(std::lround(kStepS * sample_rate_hz));
     channels_.clear();
-    size_t longest = 0;
+    int longest = 0;
     for (const auto& info : kChannels) {
         auto c = std::make_unique<ChannelState>();
         c->channel = info.channel;
         c->hop_steps = kHopSteps[static_cast<int>(info.channel)];
-        c->window_samples = 8 * c->hop_steps * step_samples_;
-        longest = std::max(longest, static_cast<size_t>(c->window_samples));
-        c->fft.prepare(next_power_of_two(c->window_samples));
-        const int n = c->window_samples, m = c->fft.size();
+        const int n = kHopsPerWindow * c->hop_steps * step_samples_;
+        longest = std::max(longest, n);
+        c->fft.prepare(next_power_of_two(n));
+        const int m = c->fft.size();
         c->window.resize(static_cast<size_t>(n));
         double window_power = 0;
         for (int i = 0; i < n; ++i) {
-            const double s = std::sin(kPi * (i + 0.5) / n);  // periodic-symmetric Hann
+            const double s = std::sin(kPi * (i + 0.5) / n);  // Hann, shifted half a sample
             c->window[i] = static_cast<float>(s * s);
             window_power += double(c->window[i]) * c->window[i];
         }
@@ -49,7 +48,7 @@ void SensationMeter::prepare(double sample_rate_hz, const Calibration& displacem
         for (int k = 0; k < c->fft.bins(); ++k) {
             const double f = k * sample_rate_hz / m;
             const double ratio =
-                displacement_um(f) / std::pow(10.0, threshold_db(info.channel, f, stimulus) / 20);
+                displacement_um(f) / db_to_gain(threshold_db(info.channel, f, stimulus));
             const double one_sided = (k == 0 || k == m / 2) ? 1.0 : 2.0;
             const double w = 2.0 * one_sided * ratio * ratio / (m * window_power);
             c->weight[k] = std::isfinite(w) ? w : 0.0;
@@ -61,18 +60,21 @@ void SensationMeter::prepare(double sample_rate_hz, const Calibration& displacem
         c->frames.assign(static_cast<size_t>(frames_per_second), 0.0);
         channels_.push_back(std::move(c));
     }
-    history_.assign(longest, 0.0f);
-    write_at_ = 0;
+    history_.prepare(longest);
+    clean_.assign(static_cast<size_t>(step_samples_), 0.0f);
     filled_ = 0;
     steps_ = 0;
 }
 
 void SensationMeter::write(const float* samples, int count,
                            const std::function<void(const MeterReading&)>& on_reading) {
-    for (int i = 0; i < count; ++i) {
-        history_[write_at_] = std::isfinite(samples[i]) ? samples[i] : 0.0f;
-        if (++write_at_ == history_.size()) write_at_ = 0;
-        if (++filled_ == step_samples_) {
+    for (int done = 0; done < count;) {
+        const int chunk = std::min(count - done, step_samples_ - filled_);
+        for (int i = 0; i < chunk; ++i)
+            clean_[i] = std::isfinite(samples[done + i]) ? samples[done + i] : 0.0f;
+        history_.write(clean_.data(), chunk);
+        done += chunk;
+        if ((filled_ += chunk) == step_samples_) {
             filled_ = 0;
             step(on_reading);
         }
@@ -81,7 +83,7 @@ void SensationMeter::write(const float* samples, int count,
 
 void SensationMeter::finish(const std::function<void(const MeterReading&)>& on_reading) {
     const std::vector<float> silence(static_cast<size_t>(step_samples_), 0.0f);
-    const int steps = 8 * std::max(kHopSteps[0], kHopSteps[1]);
+    const int steps = kHopsPerWindow * std::max(kHopSteps[0], kHopSteps[1]);
     for (int s = 0; s < steps; ++s) write(silence.data(), step_samples_, on_reading);
 }
 
@@ -91,13 +93,10 @@ void SensationMeter::step(const std::function<void(const MeterReading&)>& on_rea
     reading.time_s = static_cast<double>(steps_ * step_samples_) / sample_rate_hz_;
     for (auto& c : channels_) {
         if (steps_ % c->hop_steps == 0) {
-            const size_t n = static_cast<size_t>(c->window_samples), size = history_.size();
+            const int n = static_cast<int>(c->window.size());
             float* time = c->fft.time();
-            size_t from = (write_at_ + size - n) % size;
-            for (size_t i = 0; i < n; ++i) {
-                time[i] = history_[from] * c->window[i];
-                if (++from == size) from = 0;
-            }
+            history_.read_latest(time, n);
+            for (int i = 0; i < n; ++i) time[i] *= c->window[i];
             std::fill(time + n, time + c->fft.size(), 0.0f);
             c->fft.forward();
             const std::complex<float>* x = c->fft.spectrum();

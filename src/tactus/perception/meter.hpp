@@ -23,6 +23,7 @@
 #include <memory>
 #include <vector>
 
+#include "tactus/analysis/sample_history.hpp"
 #include "tactus/perception/sensation.hpp"
 
 namespace tactus {
@@ -41,8 +42,9 @@ class SensationMeter {
   public:
     static constexpr double kStepS = 0.01;
     static constexpr double kPIntegrationS = 1.0;  // P temporal summation up to ~1 s
-    // Each channel's hop, in 10 ms steps; its window is 8 hops.
+    // Each channel's hop, in 10 ms steps; its window is kHopsPerWindow hops.
     static constexpr std::array<int, 4> kHopSteps = {5, 5, 1, 64};  // P, NPI, NPII, NPIII
+    static constexpr int kHopsPerWindow = 8;
 
     using Calibration = std::function<double(double frequency_hz)>;  // um peak per full scale
 
@@ -65,8 +67,8 @@ class SensationMeter {
     double sample_rate_hz_ = 0;
     int step_samples_ = 0, filled_ = 0;
     int64_t steps_ = 0;
-    std::vector<float> history_;  // ring buffer of the longest window
-    size_t write_at_ = 0;
+    SampleHistory history_;     // the longest window
+    std::vector<float> clean_;  // one step of input, non-finite samples read as 0
     std::vector<std::unique_ptr<ChannelState>> channels_;
 };
 

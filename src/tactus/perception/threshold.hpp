@@ -21,18 +21,18 @@
 namespace tactus::perception {
 
 // P channel, reference condition.
-constexpr double kPBestHz = 250.0;     // f_m [derived, perception.md]
-constexpr double kPMinimumDb = -20.0;  // T_Pmin [recalled, +-5 dB]
-constexpr double kPLowEdgeHz = 40.0;   // P channel range 40-500 Hz (paper Table 1)
-constexpr double kPHighEdgeHz = 500.0;
+constexpr double kPBestHz = 250.0;                             // f_m [derived, perception.md]
+constexpr double kPMinimumDb = -20.0;                          // T_Pmin [recalled, +-5 dB]
+constexpr double kPLowEdgeHz = info(Channel::P).range_low_hz;  // 40-500 Hz (paper Table 1)
+constexpr double kPHighEdgeHz = info(Channel::P).range_high_hz;
 
 // NPI: flat +10 to +15 dB from ~3 to 40 Hz [recalled]; the notch at 30 Hz (Table 1, note 3) is
 // modelled shallow: depth and width are assumptions, not data. Below 3 Hz it rises steeply
 // enough for NPIII to set the threshold under ~1.8 Hz, inside the overlap of the two channels'
 // Table 1 ranges (NPI 2-40 Hz, NPIII 0.4-3 Hz) [derived].
-constexpr double kNpiFlatDb = 12.5;             // [recalled, +10 to +15 dB]
-constexpr double kNpiLowCornerHz = 3.0;         // [recalled]
-constexpr double kNpiHighCornerHz = 40.0;       // top of NPI's range (Table 1)
+constexpr double kNpiFlatDb = 12.5;                                    // [recalled, +10 to +15 dB]
+constexpr double kNpiLowCornerHz = 3.0;                                // [recalled]
+constexpr double kNpiHighCornerHz = info(Channel::NPI).range_high_hz;  // 40 Hz (Table 1)
 constexpr double kNpiLowSlopeDbPerOctave = 24;  // [derived] below the flat range
 constexpr double kNpiHighSlopeDbPerOctave = 6;  // [assumed] above the flat range
 constexpr double kNpiNotchHz = 30.0;            // Table 1, note 3
@@ -43,8 +43,8 @@ constexpr double kNpiNotchWidthOctaves = 0.5;   // [assumed] standard deviation 
 constexpr double kNpiiAbovePDb = 22.5;
 
 // NPIII: flat +25 to +35 dB from 0.4 to ~3 Hz [recalled], flat down to a static indentation.
-constexpr double kNpiiiFlatDb = 30.0;               // [recalled, +25 to +35 dB]
-constexpr double kNpiiiHighCornerHz = 3.0;          // top of NPIII's range (Table 1)
+constexpr double kNpiiiFlatDb = 30.0;  // [recalled, +25 to +35 dB]
+constexpr double kNpiiiHighCornerHz = info(Channel::NPIII).range_high_hz;  // 3 Hz (Table 1)
 constexpr double kNpiiiHighSlopeDbPerOctave = 9.0;  // [assumed] above the flat range
 
 // Summation (P only).
@@ -67,15 +67,6 @@ inline double p_threshold_db(double frequency_hz) {
     const double r = kPBestHz / frequency_hz;
     return kPMinimumDb + 10.0 * std::log10((3.0 / 7.0) * r * r * r * r + (4.0 / 7.0) / (r * r * r));
 }
-
-// Fraction (0..1) of P's spatial and temporal summation that holds at a frequency: none at
-// <= 40 Hz, full at >= 80 Hz, linear in log-frequency between [derived].
-double summation_weight(double frequency_hz);
-// Threshold change of P from the reference condition: +3 dB per halving of area down to
-// 0.02 cm^2, +3 dB per halving of duration below 1 s (none with the smallest contactors:
-// weighted by where the area lies between 0.02 and 2.9 cm^2 [derived]).
-double p_area_shift_db(double frequency_hz, double contact_area_cm2);
-double p_duration_shift_db(double frequency_hz, const Stimulus& stimulus);
 
 // Threshold of one channel, dB re 1 um peak.
 double threshold_db(Channel channel, double frequency_hz, const Stimulus& stimulus = {});

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "tactus/core/units.hpp"
+#include "tactus/post/clip.hpp"
 #include "tactus/synthesis/components.hpp"
 
 namespace tactus {
@@ -70,13 +71,7 @@ void PostChain::process(float* samples, float* flutter, const float* pressure, i
             if (std::abs(samples[i]) < kSilentOutput) samples[i] = 0.0f;
     if (pressure_on_ && pressure)
         for (int i = 0; i < count; ++i) samples[i] += pressure[i];
-    const float ceiling = float_at_most(ceiling_);
-    for (int i = 0; i < count; ++i) {
-        if (samples[i] > ceiling)
-            samples[i] = ceiling, ++clipped_;
-        else if (samples[i] < -ceiling)
-            samples[i] = -ceiling, ++clipped_;
-    }
+    clipped_ += clip(samples, count, float_at_most(ceiling_));
 }
 
 }  // namespace tactus
