@@ -20,6 +20,7 @@
 namespace tactus::bench {
 namespace {
 
+// The STFT window, sized as Analyzer::prepare sizes it (the Analyzer does not expose it).
 int window_samples(const Settings& s) {
     return nearest_power_of_two(ms_to_samples(s[P::analysis_window_ms], kRateHz));
 }
@@ -31,16 +32,14 @@ void per_frame(benchmark::State& state, int history_samples, Analyse analyse) {
     const int hop = hop_samples();
     SampleHistory history;
     history.prepare(history_samples);
-    int64_t frames = 0;
     for (auto _ : state) {
         history.reset();
-        for (size_t i = 0; i + hop <= in.size(); i += hop, ++frames) {
+        for (size_t i = 0; i + hop <= in.size(); i += hop) {
             history.write(in.data() + i, hop);
             analyse(history);
         }
     }
-    state.SetItemsProcessed(frames);
-    state.SetLabel("items = analysis frames");
+    set_items(state, in.size() / hop, "analysis frames");
 }
 
 void StftFrameAnalyse(benchmark::State& state) {
@@ -87,8 +86,7 @@ void Brightness(benchmark::State& state) {
     brightness.prepare(s.bins, s.bin_hz);
     for (auto _ : state)
         for (const auto& m : s.magnitudes) benchmark::DoNotOptimize(brightness.centroid_hz(m));
-    state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(s.magnitudes.size()));
-    state.SetLabel("items = analysis frames");
+    set_items(state, s.magnitudes.size(), "analysis frames");
 }
 BENCHMARK(Brightness);
 
@@ -98,8 +96,7 @@ void Noisiness(benchmark::State& state) {
     noisiness.prepare(s.bins, s.bin_hz);
     for (auto _ : state)
         for (const auto& p : s.powers) benchmark::DoNotOptimize(noisiness.compute(p));
-    state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(s.powers.size()));
-    state.SetLabel("items = analysis frames");
+    set_items(state, s.powers.size(), "analysis frames");
 }
 BENCHMARK(Noisiness);
 
@@ -116,8 +113,7 @@ void Loudness(benchmark::State& state) {
             benchmark::DoNotOptimize(loudness.loudness_db());
         }
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(in.size()));
-    state.SetLabel("items = samples");
+    set_items(state, in.size(), "samples");
 }
 BENCHMARK(Loudness);
 
@@ -153,8 +149,7 @@ void WholeAnalyzer(benchmark::State& state) {
         for (size_t i = 0; i + hop <= in.size(); i += hop)
             if (analyzer.write(in.data() + i, hop)) benchmark::DoNotOptimize(analyzer.analyse());
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(in.size()));
-    state.SetLabel("items = samples");
+    set_items(state, in.size(), "samples");
 }
 BENCHMARK(WholeAnalyzer);
 

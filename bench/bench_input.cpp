@@ -2,14 +2,36 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "tactus/analysis/analyzer.hpp"
-#include "tactus/core/units.hpp"
+#include "tactus/engine/engine.hpp"
 #include "tactus/io/audio_reader.hpp"
 #include "tactus/mapping/mapper.hpp"
 #include "tactus/synthesis/voice.hpp"
 
 namespace tactus::bench {
+namespace {
+
+struct EngineRates {
+    int hop_samples, rate_divisor;
+};
+
+const EngineRates& engine_rates() {
+    static const EngineRates rates = [] {
+        Engine engine;
+        engine.prepare(kRateHz, Engine::kMaxBlock);
+        return EngineRates{engine.hop_samples(), engine.rate_divisor()};
+    }();
+    return rates;
+}
+
+int64_t ceil_div(int64_t a, int64_t b) {
+    return (a + b - 1) / b;
+}
+
+}  // namespace
 
 const std::vector<float>& amen() {
     static const std::vector<float> samples = [] {
@@ -21,41 +43,83 @@ const std::vector<float>& amen() {
     return samples;
 }
 
-int hop_samples(const Settings& settings) {
-    return std::max<int>(1, static_cast<int>(ms_to_samples(settings[P::analysis_hop_ms], kRateHz)));
+int hop_samples() {
+    return engine_rates().hop_samples;
+}
+
+int rate_divisor() {
+    return engine_rates().rate_divisor;
+}
+
+double internal_rate_hz() {
+    return kRateHz / rate_divisor();
+}
+
+const std::vector<Features>& amen_features() {
+    static const std::vector<Features> features = [] {
+        Analyzer analyzer;
+        analyzer.prepare(kRateHz, Settings{});
+        std::vector<Features> out;
+        const std::vector<float>& in = amen();
+        const int hop = analyzer.hop_samples();
+        for (size_t i = 0; i + hop <= in.size(); i += hop)
+            if (analyzer.write(in.data() + i, hop)) out.push_back(analyzer.analyse());
+        return out;
+    }();
+    return features;
 }
 
 const std::vector<ControlFrame>& amen_control() {
     static const std::vector<ControlFrame> frames = [] {
-        const Settings settings;
-        Analyzer analyzer;
-        analyzer.prepare(kRateHz, settings);
         Mapper mapper;
-        mapper.prepare(settings, kRateHz / analyzer.hop_samples());
+        mapper.prepare(Settings{}, kRateHz / hop_samples());
         std::vector<ControlFrame> out;
-        const std::vector<float>& in = amen();
-        const int hop = analyzer.hop_samples();
-        for (size_t i = 0; i + hop <= in.size(); i += hop)
-            if (analyzer.write(in.data() + i, hop)) out.push_back(mapper.map(analyzer.analyse()));
+        for (const Features& f : amen_features()) out.push_back(mapper.map(f));
         return out;
     }();
     return frames;
 }
 
+const std::vector<int>& internal_samples_per_hop() {
+    static const std::vector<int> counts = [] {
+        // Internal sample k stands at input sample k * divisor: those due for the input
+        // samples [p, p + hop).
+        const int64_t hop = hop_samples(), divisor = rate_divisor();
+        std::vector<int> out(amen_control().size());
+        for (size_t f = 0; f < out.size(); ++f) {
+            const int64_t p = static_cast<int64_t>(f) * hop;
+            out[f] = static_cast<int>(ceil_div(p + hop, divisor) - ceil_div(p, divisor));
+        }
+        return out;
+    }();
+    return counts;
+}
+
 const std::vector<float>& amen_vibration() {
     static const std::vector<float> samples = [] {
-        const Settings settings;
         Voice voice;
-        voice.prepare(kRateHz, settings[P::post_band_high_hz]);
-        const int hop = hop_samples(settings);
-        std::vector<float> out(amen_control().size() * hop);
+        voice.prepare(internal_rate_hz(), Settings{}[P::post_band_high_hz]);
+        std::vector<float> out;
         for (size_t f = 0; f < amen_control().size(); ++f) {
-            voice.render(out.data() + f * hop, hop);
+            const size_t start = out.size();
+            out.resize(start + internal_samples_per_hop()[f]);
+            voice.render(out.data() + start, internal_samples_per_hop()[f]);
             voice.apply(amen_control()[f]);
         }
         return out;
     }();
     return samples;
+}
+
+void set_items(benchmark::State& state, size_t count, const char* what) {
+    state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(count));
+    state.SetLabel(std::string("items = ") + what);
+}
+
+void set_real_time(benchmark::State& state, size_t samples) {
+    state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(samples));
+    state.counters["x_real_time"] = benchmark::Counter(
+        static_cast<double>(samples) / kRateHz * state.iterations(), benchmark::Counter::kIsRate);
 }
 
 }  // namespace tactus::bench

@@ -2,7 +2,7 @@
 """Times `tactus render` and `tactus onsets` against `aubioonset` on the same long real recording,
 in one run.
 
-usage: bench/compare.py BUILD_DIR [--out bench/results.md] [--runs 5] [--long-runs 3]
+usage: bench/compare.py BUILD_DIR [--out bench/results.md] [--runs 7] [--long-runs 3]
 
 The input is Sonic Pi's Amen break (loop_amen_full.flac, 44.1 kHz stereo) looped with sox to
 10 and to 60 minutes, kept as FLAC: a real compressed file that both tools decode themselves
@@ -92,7 +92,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("build_dir", type=pathlib.Path)
     parser.add_argument("--out", type=pathlib.Path, default=None)
-    parser.add_argument("--runs", type=int, default=5, help="runs of each tool, 10-min file")
+    parser.add_argument("--runs", type=int, default=7, help="runs of each tool, 10-min file")
     parser.add_argument("--long-runs", type=int, default=3, help="runs of each tool, 60-min file")
     args = parser.parse_args()
     if args.runs < 1 or args.long_runs < 1:

@@ -21,10 +21,7 @@ void WholePipeline(benchmark::State& state) {
             engine.process(input.data() + i, out.data(), kBlock);
         benchmark::DoNotOptimize(out.data());
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(input.size()));
-    state.counters["x_real_time"] =
-        benchmark::Counter(static_cast<double>(input.size()) / kRateHz * state.iterations(),
-                           benchmark::Counter::kIsRate);
+    set_real_time(state, input.size());
 }
 BENCHMARK(WholePipeline)->Unit(benchmark::kMillisecond);
 

@@ -1,6 +1,7 @@
 // Each post-processing stage, the whole PostChain and the engine's upsampler, per sample, on the
-// vibration the Voice makes for the Amen break (44.1 kHz, default settings), processed in
-// 512-sample blocks.
+// vibration the Voice makes for the Amen break (default settings), processed in 512-sample
+// blocks. As in the engine, the stages run at its internal rate (11.025 kHz for the 44.1 kHz
+// input).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -32,14 +33,13 @@ void per_sample(benchmark::State& state, Process process) {
             benchmark::DoNotOptimize(block.data());
         }
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(in.size()));
-    state.SetLabel("items = samples");
+    set_items(state, in.size(), "samples");
 }
 
 void BandLimitProcess(benchmark::State& state) {
     const Settings s;
     BandLimit band;
-    band.prepare(kRateHz, s[P::post_band_low_hz], s[P::post_band_high_hz],
+    band.prepare(internal_rate_hz(), s[P::post_band_low_hz], s[P::post_band_high_hz],
                  static_cast<int>(state.range(0)));
     per_sample(state, [&](float* x, int n) { band.process(x, n); });
 }
@@ -51,7 +51,7 @@ BENCHMARK(BandLimitProcess)
 void FlatteningProcess(benchmark::State& state) {
     const Settings s;
     FlatteningFilter flatten;
-    flatten.prepare(kRateHz, s[P::post_band_low_hz], s[P::post_band_high_hz],
+    flatten.prepare(internal_rate_hz(), s[P::post_band_low_hz], s[P::post_band_high_hz],
                     s[P::post_flatten_strength], s[P::post_flatten_range_db]);
     per_sample(state, [&](float* x, int n) { flatten.process(x, n); });
 }
@@ -60,28 +60,29 @@ BENCHMARK(FlatteningProcess);
 void PeakLimiterProcess(benchmark::State& state) {
     const Settings s;
     PeakLimiter limiter;
-    limiter.prepare(kRateHz, s[P::post_lookahead_ms], s[P::post_release_ms], s[P::post_drive_db],
-                    s[P::post_limiter_threshold_db], db_to_gain(s[P::post_ceiling_db]));
+    limiter.prepare(internal_rate_hz(), s[P::post_lookahead_ms], s[P::post_release_ms],
+                    s[P::post_drive_db], s[P::post_limiter_threshold_db],
+                    db_to_gain(s[P::post_ceiling_db]));
     per_sample(state, [&](float* x, int n) { limiter.process(x, n); });
 }
 BENCHMARK(PeakLimiterProcess);
 
 void PostChainProcess(benchmark::State& state) {
     PostChain post;
-    post.prepare(kRateHz, Settings{});
+    post.prepare(internal_rate_hz(), Settings{});
     per_sample(state, [&](float* x, int n) { post.process(x, n); });
 }
 BENCHMARK(PostChainProcess);
 
-// The engine's last stage at 44.1 kHz: the vibration, post-processed at a quarter of the rate,
-// upsampled back. Items are output samples.
+// The engine's last stage: the vibration upsampled from the internal rate back to 44.1 kHz by
+// the engine's factor. Items are internal samples in; each gives `factor` output samples.
 void UpsamplerProcess(benchmark::State& state) {
-    constexpr int kFactor = 4;
+    const int factor = rate_divisor();
     Upsampler upsampler;
-    upsampler.prepare(kFactor, kBlock / kFactor);
-    std::vector<float> out(kBlock);
+    upsampler.prepare(factor, kBlock);
+    std::vector<float> out(static_cast<size_t>(kBlock * factor));
     per_sample(state, [&](float* x, int n) {
-        upsampler.process(x, n / kFactor, out.data(), n / kFactor * kFactor);
+        upsampler.process(x, n, out.data(), n * factor);
         benchmark::DoNotOptimize(out.data());
     });
 }

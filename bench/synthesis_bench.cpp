@@ -1,12 +1,14 @@
-// The mapping and synthesis stages on the Amen break's real vibration program (44.1 kHz,
-// default settings): Mapper per analysis frame; Voice (oscillator x envelope x amplitude) per
-// output sample, a control frame applied every hop.
+// The mapping and synthesis stages on the Amen break's real vibration program (default
+// settings): Mapper per analysis frame; Voice (oscillator x envelope x amplitude) per sample at
+// the engine's internal rate (11.025 kHz for the 44.1 kHz input), a control frame applied every
+// hop.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <numeric>
 #include <vector>
 
 #include "bench_input.hpp"
-#include "tactus/analysis/analyzer.hpp"
 #include "tactus/mapping/mapper.hpp"
 #include "tactus/synthesis/voice.hpp"
 
@@ -14,44 +16,32 @@ namespace tactus::bench {
 namespace {
 
 void MapperMap(benchmark::State& state) {
-    // The features of every analysis frame, computed once.
-    static const std::vector<Features> features = [] {
-        Analyzer analyzer;
-        analyzer.prepare(kRateHz, Settings{});
-        std::vector<Features> out;
-        const int hop = analyzer.hop_samples();
-        for (size_t i = 0; i + hop <= amen().size(); i += hop)
-            if (analyzer.write(amen().data() + i, hop)) out.push_back(analyzer.analyse());
-        return out;
-    }();
+    const std::vector<Features>& features = amen_features();
     Mapper mapper;
     mapper.prepare(Settings{}, kRateHz / hop_samples());
     for (auto _ : state) {
         mapper.reset();
         for (const Features& f : features) benchmark::DoNotOptimize(mapper.map(f));
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(features.size()));
-    state.SetLabel("items = analysis frames");
+    set_items(state, features.size(), "analysis frames");
 }
 BENCHMARK(MapperMap);
 
 void VoiceRender(benchmark::State& state) {
-    const Settings settings;
     const std::vector<ControlFrame>& control = amen_control();
-    const int hop = hop_samples(settings);
+    const std::vector<int>& counts = internal_samples_per_hop();
     Voice voice;
-    voice.prepare(kRateHz, settings[P::post_band_high_hz]);
-    std::vector<float> out(static_cast<size_t>(hop));
+    voice.prepare(internal_rate_hz(), Settings{}[P::post_band_high_hz]);
+    std::vector<float> out(static_cast<size_t>(*std::max_element(counts.begin(), counts.end())));
     for (auto _ : state) {
         voice.reset();
-        for (const ControlFrame& frame : control) {
-            voice.render(out.data(), hop);
-            voice.apply(frame);
+        for (size_t f = 0; f < control.size(); ++f) {
+            voice.render(out.data(), counts[f]);
+            voice.apply(control[f]);
             benchmark::DoNotOptimize(out.data());
         }
     }
-    state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(control.size()) * hop);
-    state.SetLabel("items = samples");
+    set_items(state, std::accumulate(counts.begin(), counts.end(), size_t{0}), "samples");
 }
 BENCHMARK(VoiceRender);
 
