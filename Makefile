@@ -24,7 +24,8 @@ demo: build
 test: build
 	ctest --preset release -j $(JOBS)
 
-# Every test again under AddressSanitizer + UndefinedBehaviorSanitizer (build/asan).
+# Every test but realtime_tests (ASan owns malloc) again under AddressSanitizer +
+# UndefinedBehaviorSanitizer (build/asan).
 test-asan: setup
 	cmake --preset asan
 	cmake --build --preset asan -j $(JOBS)

@@ -116,7 +116,7 @@ fi
 for signal in INT TERM HUP KILL; do
   "$tactus" render long.wav -o out.wav 2>/dev/null &
   pid=$!
-  while ! ls -A | grep -q '^\.out\.wav\.tmp-'; do sleep 0.001; done
+  while kill -0 "$pid" 2>/dev/null && ! ls -A | grep -q '^\.out\.wav\.tmp-'; do sleep 0.001; done
   sleep 0.05
   kill -"$signal" "$pid"
   wait "$pid"
@@ -129,12 +129,11 @@ done
 # Hours-long input: streamed, so peak memory is that of a 10 s file.
 sox -n -r 8000 -b 16 short.wav synth 10 sine 60 tremolo 2 90
 sox -n -r 8000 -b 16 hour.wav synth 1:00:00 sine 60 tremolo 2 90
+# Peak RSS from GNU time: ru_maxrss counts the image a child was forked from, and time's is small.
 for input in short.wav hour.wav; do
-  "$python" - "$tactus" "$input" <<'EOF2'
-import resource, subprocess, sys
-r = subprocess.run([sys.argv[1], "render", sys.argv[2], "-o", "out.wav"], capture_output=True, text=True)
-rss = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024
-print(f"| {sys.argv[2]} (8 kHz): peak RSS {rss:.1f} MiB | `{r.stderr.strip()}` | {r.returncode} | |")
-EOF2
-  rm -f out.wav
+  /usr/bin/time -f %M -o rss.txt "$tactus" render "$input" -o out.wav 2>message.txt
+  code=$?
+  rss=$(awk '{printf "%.1f", $1 / 1024}' rss.txt)
+  echo "| $input (8 kHz): peak RSS $rss MiB | \`$(tail -n 1 message.txt)\` | $code | |"
+  rm -f out.wav rss.txt message.txt
 done
