@@ -92,6 +92,7 @@ TEST(ActuatorProfile, OneLineErrorsNameFileLineAndKey) {
         {base + "max_drive = 2\n", "max_drive: 2 is out of range"},
         {base + "displacement_um = \n", "TOML syntax error"},
         {base + "type = \"erm\"\n", "needs [erm]"},
+        {base + "\"a\\nb\" = 1\n", "a\\nb: unknown key"},  // a key with a newline, escaped
     };
     for (const auto& c : cases) {
         const std::string message = error_of(c.text);

@@ -10,6 +10,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "tactus/core/printable.hpp"
 #include "tactus/core/search_path.hpp"
 #include "tactus/core/units.hpp"
 
@@ -32,8 +33,9 @@ class Reader {
     [[noreturn]] void fail(const toml::node* node, std::string_view key,
                            std::string_view problem) const {
         const auto& where = node ? node->source() : table_.source();
-        throw std::runtime_error(fmt::format("{}:{}:{}: {}{}: {}", origin_, where.begin.line,
-                                             where.begin.column, prefix_, key, problem));
+        throw std::runtime_error(fmt::format("{}:{}:{}: {}: {}", origin_, where.begin.line,
+                                             where.begin.column,
+                                             printable(prefix_ + std::string(key)), problem));
     }
     const toml::node* get(std::string_view key) {
         seen_.insert(std::string(key));
@@ -137,7 +139,7 @@ ActuatorProfile parse_actuator(std::string_view toml_text, std::string_view orig
     } catch (const toml::parse_error& e) {
         throw std::runtime_error(fmt::format("{}:{}:{}: TOML syntax error: {}", origin,
                                              e.source().begin.line, e.source().begin.column,
-                                             e.description()));
+                                             printable(e.description())));
     }
     ActuatorProfile a;
     Reader top(table, origin, "");
