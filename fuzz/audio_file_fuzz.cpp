@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 
 #include "fuzz_check.hpp"
 #include "tactus/engine/engine.hpp"
@@ -28,10 +29,20 @@ std::filesystem::path scratch_file() {
     return dir / ("tactus-audio-fuzz-" + std::to_string(getpid()));
 }
 
+// The file the bytes are written to, removed when the process exits normally.
+struct Scratch {
+    const std::filesystem::path path = scratch_file();
+    ~Scratch() {
+        std::error_code ignored;
+        std::filesystem::remove(path, ignored);
+    }
+};
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    static const std::filesystem::path path = scratch_file();
+    static const Scratch scratch;
+    const std::filesystem::path& path = scratch.path;
     FILE* file = std::fopen(path.c_str(), "wb");
     if (!file) std::abort();
     if (size > 0 && std::fwrite(data, 1, size, file) != size) std::abort();
