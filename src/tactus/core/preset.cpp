@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
-#include <algorithm>
 #include <stdexcept>
 
 #include "tactus/core/printable.hpp"
@@ -75,18 +74,8 @@ std::vector<fs::path> preset_search_path() {
 
 std::vector<PresetInfo> list_presets() {
     std::vector<PresetInfo> presets;
-    for (const auto& dir : preset_search_path()) {
-        std::error_code ec;
-        for (const auto& entry : fs::directory_iterator(dir, ec)) {
-            if (entry.path().extension() != ".toml") continue;
-            const std::string name = entry.path().stem().string();
-            bool shadowed = false;
-            for (const auto& p : presets) shadowed |= p.name == name;
-            if (!shadowed) presets.push_back({name, entry.path(), description_of(entry.path())});
-        }
-    }
-    std::sort(presets.begin(), presets.end(),
-              [](const auto& a, const auto& b) { return a.name < b.name; });
+    for (const auto& [name, path] : toml_files(preset_search_path()))
+        presets.push_back({name, path, description_of(path)});
     return presets;
 }
 

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <cstdlib>
-#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -27,6 +26,18 @@ std::vector<std::filesystem::path> search_path(const char* environment_variable,
     return dirs;
 }
 
+std::map<std::string, std::filesystem::path> toml_files(
+    const std::vector<std::filesystem::path>& dirs) {
+    std::map<std::string, std::filesystem::path> files;
+    for (const auto& dir : dirs) {
+        std::error_code ec;
+        for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+            if (entry.path().extension() == ".toml")
+                files.emplace(entry.path().stem().string(), entry.path());  // keeps the first
+    }
+    return files;
+}
+
 std::filesystem::path resolve_toml(std::string_view name_or_path,
                                    const std::vector<std::filesystem::path>& dirs,
                                    std::string_view kind) {
@@ -41,14 +52,8 @@ std::filesystem::path resolve_toml(std::string_view name_or_path,
     for (const auto& dir : dirs)
         if (fs::is_regular_file(dir / (given.string() + ".toml")))
             return dir / (given.string() + ".toml");
-    std::set<std::string> names;
-    for (const auto& dir : dirs) {
-        std::error_code ec;
-        for (const auto& entry : fs::directory_iterator(dir, ec))
-            if (entry.path().extension() == ".toml") names.insert(entry.path().stem().string());
-    }
     std::string known;
-    for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+    for (const auto& [name, path] : toml_files(dirs)) known += (known.empty() ? "" : ", ") + name;
     throw std::runtime_error(
         fmt::format("no {} named '{}' (known: {})", kind, printable(name_or_path), known));
 }

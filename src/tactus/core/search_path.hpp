@@ -4,6 +4,8 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -11,6 +13,11 @@ namespace tactus {
 
 std::vector<std::filesystem::path> search_path(const char* environment_variable,
                                                const std::filesystem::path& fallback);
+
+// The NAME.toml files in `dirs` by NAME, sorted; a name in an earlier directory hides the same
+// name in later ones.
+std::map<std::string, std::filesystem::path> toml_files(
+    const std::vector<std::filesystem::path>& dirs);
 
 // Throws std::runtime_error "no KIND named 'x' (known: a, b)" or "KIND file 'x' not found".
 std::filesystem::path resolve_toml(std::string_view name_or_path,
