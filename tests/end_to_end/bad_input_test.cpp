@@ -30,6 +30,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using tactus::test::CliResult;
+using tactus::test::csv_numbers;
 
 constexpr double kRate = 44100;
 
@@ -45,16 +46,9 @@ class BadInput : public tactus::test::Cli {
                          int format = SF_FORMAT_WAV | SF_FORMAT_PCM_16, double rate = kRate,
                          int channels = 1) const {
         const fs::path path = dir_ / name;
-        SF_INFO info{};
-        info.samplerate = static_cast<int>(rate);
-        info.channels = channels;
-        info.format = format;
-        SNDFILE* file = sf_open(path.c_str(), SFM_WRITE, &info);
-        EXPECT_NE(file, nullptr) << sf_strerror(nullptr);
         std::vector<float> interleaved;
         for (const float x : mono) interleaved.insert(interleaved.end(), channels, x);
-        sf_writef_float(file, interleaved.data(), static_cast<sf_count_t>(mono.size()));
-        sf_close(file);
+        tactus::test::write_sound_file(path, interleaved, rate, channels, format);
         return path;
     }
     fs::path drums(const std::string& name, double seconds = 3,
@@ -85,11 +79,6 @@ class BadInput : public tactus::test::Cli {
     }
     void expect_refused(const CliResult& r, std::initializer_list<std::string> expected) const {
         expect_refused(r, expected, out_);
-    }
-    void expect_no_temporaries() const {
-        for (const auto& entry : fs::recursive_directory_iterator(dir_))
-            EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos)
-                << entry.path();
     }
     CliResult render(const fs::path& input, const std::string& more = "") const {
         return run("render " + input.string() + " -o " + out_.string() + " " + more);
@@ -247,12 +236,7 @@ TEST_F(BadInput, DcOffsetDoesNotChangeTheVibration) {
     std::getline(a, la), std::getline(b, lb);
     int rows = 0, different = 0;
     while (std::getline(a, la) && std::getline(b, lb)) {
-        const auto column = [](const std::string& line) {
-            std::istringstream s(line);
-            std::string cell;
-            for (int i = 0; i < 10; ++i) std::getline(s, cell, ',');
-            return std::stod(cell);
-        };
+        const auto column = [](const std::string& line) { return csv_numbers(line).at(9); };
         ++rows;
         different += std::abs(column(la) - column(lb)) > 0.05 * column(la);
     }

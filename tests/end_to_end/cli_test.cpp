@@ -21,6 +21,7 @@ namespace fs = std::filesystem;
 const std::string kAmen = "/usr/share/sonic-pi/samples/loop_amen_full.flac";
 
 using tactus::test::Cli;
+using tactus::test::csv_numbers;
 using tactus::test::info_of;
 using Result = tactus::test::CliResult;
 
@@ -57,8 +58,7 @@ TEST_F(Cli, RenderWritesFloatWavWithChannelsAtInputRate) {
     EXPECT_EQ(written.channels, 3);
     EXPECT_EQ(written.format & SF_FORMAT_SUBMASK, SF_FORMAT_FLOAT);
     EXPECT_TRUE(r.out.empty()) << "messages belong on stderr";
-    for (const auto& entry : fs::directory_iterator(dir_))
-        EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos);
+    expect_no_temporaries();
 }
 
 TEST_F(Cli, AnalyzeCsvAndJson) {
@@ -289,8 +289,7 @@ TEST_F(Cli, MeterAmenThroughTheVoiceCoil) {
     while (std::getline(f, line)) ++count;
     const double seconds = static_cast<double>(info_of(kAmen).frames) / info_of(kAmen).samplerate;
     EXPECT_NEAR(count, seconds / 0.01 + 40, 2);  // every 10 ms, and 0.4 s of tail
-    for (const auto& entry : fs::directory_iterator(dir_))
-        EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos);
+    expect_no_temporaries();
 }
 
 TEST_F(Cli, ActuatorWarningsAndErrors) {
@@ -322,15 +321,6 @@ TEST_F(Cli, ActuatorWarningsAndErrors) {
     EXPECT_EQ(fs::file_size(dir_ / "in.flac"), fs::file_size(kAmen));
 }
 
-// Split a CSV line into numbers.
-std::vector<double> numbers(const std::string& line) {
-    std::vector<double> v;
-    std::istringstream s(line);
-    std::string cell;
-    while (std::getline(s, cell, ',')) v.push_back(std::stod(cell));
-    return v;
-}
-
 TEST_F(Cli, AnalyzeSensationColumnsAgreeWithTheMeter) {
     const Result csv = run("analyze " + kAmen + " --actuator voice-coil");
     ASSERT_EQ(csv.exit_code, 0) << csv.err;
@@ -343,7 +333,7 @@ TEST_F(Cli, AnalyzeSensationColumnsAgreeWithTheMeter) {
     // The row just after 3 s carries the meter's reading at 3.00 s for the same vibration.
     std::vector<double> analyzed;
     while (std::getline(rows, line))
-        if (analyzed = numbers(line); analyzed[0] >= 3.0) break;
+        if (analyzed = csv_numbers(line); analyzed[0] >= 3.0) break;
     const fs::path vibration = dir_ / "amen.wav", meter_csv = dir_ / "meter.csv";
     ASSERT_EQ(
         run("render " + kAmen + " -o " + vibration.string() + " --actuator voice-coil").exit_code,
@@ -352,7 +342,7 @@ TEST_F(Cli, AnalyzeSensationColumnsAgreeWithTheMeter) {
     std::ifstream f(meter_csv);
     std::vector<double> metered;
     while (std::getline(f, line))
-        if (line[0] != 't' && (metered = numbers(line))[0] >= 3.0 - 1e-9) break;
+        if (line[0] != 't' && (metered = csv_numbers(line))[0] >= 3.0 - 1e-9) break;
     ASSERT_EQ(metered.size(), 6u);
     EXPECT_GT(metered[1], 10.0);  // P engaged
     for (size_t c = 0; c < 5; ++c)

@@ -12,6 +12,7 @@
 #include <numeric>
 #include <vector>
 
+#include "support/engine_blocks.hpp"
 #include "support/signals.hpp"
 #include "tactus/analysis/real_fft.hpp"
 #include "tactus/engine/engine.hpp"
@@ -47,11 +48,7 @@ Rendered render(const Track& track) {
     engine.prepare(track.sample_rate_hz, 512);
     OnsetList list(out.onsets_s, track.sample_rate_hz);
     engine.set_observer(&list);
-    out.vibration.resize(track.audio.size());
-    for (size_t i = 0; i < track.audio.size(); i += 512) {
-        const int n = static_cast<int>(std::min<size_t>(512, track.audio.size() - i));
-        engine.process(track.audio.data() + i, out.vibration.data() + i, n);
-    }
+    out.vibration = test::process_in_blocks(engine, track.audio, 512);
     return out;
 }
 

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "support/engine_blocks.hpp"
 #include "support/signals.hpp"
 #include "tactus/core/preset.hpp"
 #include "tactus/core/units.hpp"
@@ -27,11 +28,7 @@ using perception::info;
 std::vector<float> render(const MonoAudio& audio, const Settings& settings) {
     Engine engine(settings);
     engine.prepare(audio.sample_rate_hz, 512);
-    std::vector<float> y(audio.samples.size());
-    for (size_t done = 0; done < y.size(); done += 512)
-        engine.process(audio.samples.data() + done, y.data() + done,
-                       static_cast<int>(std::min<size_t>(512, y.size() - done)));
-    return y;
+    return test::process_in_blocks(engine, audio.samples, 512);
 }
 
 // Energy of the whole signal per band (one FFT of the zero-padded signal, DC bin excluded).

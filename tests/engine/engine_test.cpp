@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "support/engine_blocks.hpp"
 #include "support/signals.hpp"
 #include "support/watchdog.hpp"
 #include "tactus/actuator/profile.hpp"
@@ -40,15 +41,7 @@ std::vector<float> render(const std::vector<float>& x, double fs, const std::vec
     Engine engine(settings);
     engine.set_actuator(std::move(actuator));
     engine.prepare(fs, Engine::kMaxBlock);
-    std::vector<float> y(x.size());
-    size_t done = 0;
-    for (size_t b = 0; done < x.size(); ++b) {
-        const int count =
-            static_cast<int>(std::min<size_t>(x.size() - done, blocks[b % blocks.size()]));
-        engine.process(x.data() + done, y.data() + done, count);
-        done += static_cast<size_t>(count);
-    }
-    return y;
+    return test::process_in_blocks(engine, x, blocks);
 }
 
 // Index of the first sample whose bits differ, or -1.
@@ -233,11 +226,7 @@ TEST(Engine, EverySupportedRateRuns) {
         CountingObserver observer;
         observer.hop = engine.hop_samples();
         engine.set_observer(&observer);
-        std::vector<float> y(drums.audio.size());
-        for (size_t done = 0; done < y.size(); done += 1024) {
-            const int count = static_cast<int>(std::min<size_t>(1024, y.size() - done));
-            engine.process(drums.audio.data() + done, y.data() + done, count);
-        }
+        const std::vector<float> y = test::process_in_blocks(engine, drums.audio, 1024);
         expect_finite_and_bounded(y, 1.0, std::to_string(fs) + " Hz");
         EXPECT_GT(test::peak(y), 0.05) << fs;
         EXPECT_TRUE(observer.ok) << fs;
@@ -252,14 +241,9 @@ TEST(Engine, ResetGivesTheSameOutputAsAFreshEngine) {
     const test::DrumSignal drums = test::drum_pattern(fs, 2.0, 7);
     Engine engine;
     engine.prepare(fs, 512);
-    std::vector<float> first(drums.audio.size()), second(drums.audio.size());
-    for (size_t done = 0; done < first.size(); done += 512)
-        engine.process(drums.audio.data() + done, first.data() + done,
-                       static_cast<int>(std::min<size_t>(512, first.size() - done)));
+    const std::vector<float> first = test::process_in_blocks(engine, drums.audio, 512);
     engine.reset();
-    for (size_t done = 0; done < second.size(); done += 512)
-        engine.process(drums.audio.data() + done, second.data() + done,
-                       static_cast<int>(std::min<size_t>(512, second.size() - done)));
+    const std::vector<float> second = test::process_in_blocks(engine, drums.audio, 512);
     EXPECT_EQ(first_difference(first, second), -1);
 }
 
@@ -270,10 +254,7 @@ TEST(Engine, InPlaceProcessingIsAllowed) {
     Engine engine;
     engine.prepare(fs, 256);
     std::vector<float> buffer = drums.audio;
-    for (size_t done = 0; done < buffer.size(); done += 256) {
-        const int count = static_cast<int>(std::min<size_t>(256, buffer.size() - done));
-        engine.process(buffer.data() + done, buffer.data() + done, count);
-    }
+    test::process_in_blocks(engine, buffer.data(), buffer.data(), buffer.size(), {256});
     EXPECT_EQ(first_difference(buffer, expected), -1);
 }
 
@@ -302,10 +283,7 @@ TEST(Engine, FourChannelOutputRespectsTheCeiling) {
         s.set(P::pressure_weight, 0.5);
         Engine engine(s);
         engine.prepare(fs, 480);
-        std::vector<float> y(drums.audio.size());
-        for (size_t done = 0; done < y.size(); done += 480)
-            engine.process(drums.audio.data() + done, y.data() + done,
-                           static_cast<int>(std::min<size_t>(480, y.size() - done)));
+        const std::vector<float> y = test::process_in_blocks(engine, drums.audio, 480);
         expect_finite_and_bounded(y, db_to_gain(ceiling_db),
                                   "four-channel, ceiling " + std::to_string(ceiling_db));
         // As for tfd, the final clip is the guarantee; at 0 dB it must not even have to act.
@@ -365,6 +343,28 @@ TEST(Engine, ActuatorProfileDecidesThePressure) {
     EXPECT_GT(mean_with(std::nullopt), 0.02);  // actuator.dc = on in the settings
     EXPECT_GT(mean_with(holds_offset), 0.02);
     EXPECT_LT(std::abs(mean_with(load_actuator(resolve_actuator("voice-coil")))), 0.005);
+}
+
+// The pressure weight is a fraction of the ceiling the output really has: an actuator's max drive
+// lowers it, and the pressure's headroom with it, so the sum stays under the ceiling without the
+// final clip having to act.
+TEST(Engine, PressureFollowsAnActuatorsLoweredCeiling) {
+    const double fs = 48000;
+    test::DrumSignal drums = test::drum_pattern(fs, 3.0, 5);
+    for (auto& v : drums.audio) v *= 8.0f;  // +18 dB over full scale
+    Settings s = four_channel(true);
+    s.set(P::post_drive_db, 20);
+    s.set(P::pressure_weight, 0.5);
+    Engine engine(s);
+    engine.set_actuator(
+        parse_actuator("displacement_um = 100\nreference_hz = 10\ndc = true\nband_low_hz = 0\n"
+                       "band_high_hz = 1000\nmax_drive = 0.25\n",
+                       "weak.toml"));
+    engine.prepare(fs, 480);
+    const std::vector<float> y = test::process_in_blocks(engine, drums.audio, 480);
+    EXPECT_GT(test::peak(y), 0.1f);
+    EXPECT_LE(test::peak(y), 0.25f);
+    EXPECT_EQ(engine.clipped_samples(), 0);
 }
 
 }  // namespace

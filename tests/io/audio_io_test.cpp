@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "support/signals.hpp"
+#include "support/sound_file.hpp"
 #include "support/temp_dir.hpp"
 #include "tactus/io/audio_reader.hpp"
 #include "tactus/io/audio_writer.hpp"
@@ -83,19 +84,13 @@ TEST_F(IoTest, CommitReplacesAnExistingFile) {
 
 TEST_F(IoTest, ReaderAveragesChannels) {
     const fs::path path = dir_ / "stereo.wav";
-    SF_INFO info{};
-    info.samplerate = 48000;
-    info.channels = 2;
-    info.format = SF_FORMAT_WAV | SF_FORMAT_FLOAT;
-    SNDFILE* file = sf_open(path.c_str(), SFM_WRITE, &info);
-    ASSERT_NE(file, nullptr);
     std::vector<float> interleaved;
     for (int i = 0; i < 3000; ++i) {
         interleaved.push_back(0.5f);
         interleaved.push_back(static_cast<float>(i % 10) * 0.1f - 0.5f);
     }
-    sf_writef_float(file, interleaved.data(), 3000);
-    sf_close(file);
+    ASSERT_NO_FATAL_FAILURE(
+        test::write_sound_file(path, interleaved, 48000, 2, SF_FORMAT_WAV | SF_FORMAT_FLOAT));
     const std::vector<float> mono = read_all(path);
     ASSERT_EQ(mono.size(), 3000u);
     for (int i = 0; i < 3000; ++i)
@@ -204,8 +199,7 @@ TEST_F(IoTest, TemporariesAreTrackedAndReleased) {
     EXPECT_THROW(TextOutput(dir_ / "one-too-many.txt"), std::runtime_error);
     open.clear();
     EXPECT_NO_THROW(TextOutput(dir_ / "fits-again.txt"));
-    for (const auto& entry : fs::directory_iterator(dir_))
-        EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos);
+    expect_no_temporaries();
 }
 
 }  // namespace

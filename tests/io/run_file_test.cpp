@@ -14,9 +14,10 @@
 #include <string>
 #include <vector>
 
+#include "support/engine_blocks.hpp"
 #include "support/signals.hpp"
+#include "support/sound_file.hpp"
 #include "support/temp_dir.hpp"
-#include "tactus/io/audio_writer.hpp"
 
 namespace tactus {
 namespace {
@@ -26,11 +27,10 @@ using ::testing::HasSubstr;
 
 class RunFileTest : public test::TempDirTest {
   protected:
+    // A mono float WAV in the test's directory.
     fs::path write(const std::string& name, const std::vector<float>& x, double fs) {
         const fs::path path = dir_ / name;
-        AudioWriter writer(path, fs, 1);
-        if (!x.empty()) writer.write(x.data(), static_cast<int>(x.size()));
-        writer.commit();
+        test::write_sound_file(path, x, fs);
         return path;
     }
 };
@@ -61,11 +61,8 @@ TEST_F(RunFileTest, OutputMatchesTheEngineAndProgressReachesTheEnd) {
 
     Engine direct;
     direct.prepare(fs, Engine::kMaxBlock);
-    std::vector<float> expected(drums.audio.size());
-    for (size_t done = 0; done < expected.size(); done += Engine::kMaxBlock) {
-        const int n = static_cast<int>(std::min<size_t>(Engine::kMaxBlock, expected.size() - done));
-        direct.process(drums.audio.data() + done, expected.data() + done, n);
-    }
+    const std::vector<float> expected =
+        test::process_in_blocks(direct, drums.audio, Engine::kMaxBlock);
     EXPECT_EQ(streamed, expected);
 }
 

@@ -1,9 +1,8 @@
 // Runs the tactus command line as a user runs it (through the shell), from a test with its own
-// temporary directory: exit code, stdout and stderr.
+// temporary directory: exit code, stdout and stderr; and reads the numbers in its CSV output.
 #pragma once
 
 #include <gtest/gtest.h>
-#include <sndfile.h>
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -11,7 +10,9 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
+#include "support/sound_file.hpp"
 #include "support/temp_dir.hpp"
 
 namespace tactus::test {
@@ -40,11 +41,13 @@ class Cli : public TempDirTest {
     }
 };
 
-inline SF_INFO info_of(const std::filesystem::path& path) {
-    SF_INFO info{};
-    SNDFILE* f = sf_open(path.c_str(), SFM_READ, &info);
-    if (f) sf_close(f);
-    return info;
+// The cells of one CSV line (analyze's or meter's output, all numeric) as numbers.
+inline std::vector<double> csv_numbers(const std::string& line) {
+    std::vector<double> v;
+    std::istringstream s(line);
+    std::string cell;
+    while (std::getline(s, cell, ',')) v.push_back(std::stod(cell));
+    return v;
 }
 
 }  // namespace tactus::test
