@@ -2,7 +2,7 @@
 // from Sonic Pi's single hits with a fixed seed and exact ground truth: onset F-measure clean and
 // with -20 dB noise, kick/snare vibration pitch, hit gain -> output peak order, in-band energy,
 // ceiling, and onset -> half pulse peak latency. eval/evaluate.py reports the same figures
-// beside aubioonset's.
+// beside aubioonset's and bonk~'s.
 #include "drum_corpus.hpp"
 
 #include <gtest/gtest.h>
