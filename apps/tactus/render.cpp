@@ -86,16 +86,15 @@ std::string render_one(const Job& job, const Settings& settings,
     engine.set_observer(&counter);
     std::optional<AudioWriter> writer;  // opened at the input's sample rate
     float peak = 0.0f;
-    const RunSummary summary =
-        run_file(job.input, engine,
-                 {.on_output =
-                      [&](const float* v, int n) {
-                          for (int i = 0; i < n; ++i) peak = std::max(peak, std::abs(v[i]));
-                          writer->write(v, n);
-                      },
-                  .on_progress = on_progress,
-                  .on_start = [&](double sample_rate_hz,
-                                  int) { writer.emplace(job.output, sample_rate_hz, channels); }});
+    const auto write = [&](const float* v, int n) {
+        for (int i = 0; i < n; ++i) peak = std::max(peak, std::abs(v[i]));
+        writer->write(v, n);
+    };
+    const auto open = [&](double sample_rate_hz, int) {
+        writer.emplace(job.output, sample_rate_hz, channels);
+    };
+    const RunSummary summary = run_file(
+        job.input, engine, {.on_output = write, .on_progress = on_progress, .on_start = open});
     writer->commit();
     return fmt::format("{}: {:.2f} s at {:g} Hz, {} pulses, peak {:.1f} dBFS, {} channel(s)",
                        job.output.string(), summary.frames / summary.sample_rate_hz,
