@@ -13,7 +13,7 @@
 #include "tactus/analysis/noisiness.hpp"
 #include "tactus/analysis/onset_detector.hpp"
 #include "tactus/analysis/pitch_yin.hpp"
-#include "tactus/analysis/sample_history.hpp"
+#include "tactus/dsp/sample_history.hpp"
 #include "tactus/analysis/stft_frame.hpp"
 #include "tactus/core/units.hpp"
 

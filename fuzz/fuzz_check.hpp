@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "tactus/core/params.hpp"
+#include "tactus/params/params.hpp"
 
 namespace tactus::fuzz {
 

@@ -1,6 +1,6 @@
 #include "pipeline_options.hpp"
 
-#include "tactus/core/preset.hpp"
+#include "tactus/io/preset.hpp"
 
 namespace tactus::cli {
 

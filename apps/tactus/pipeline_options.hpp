@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "tactus/core/params.hpp"
+#include "tactus/params/params.hpp"
 
 namespace tactus::cli {
 

@@ -4,8 +4,8 @@
 #include <iostream>
 
 #include "commands.hpp"
-#include "tactus/core/params.hpp"
-#include "tactus/core/preset.hpp"
+#include "tactus/params/params.hpp"
+#include "tactus/io/preset.hpp"
 
 namespace tactus::cli {
 namespace {

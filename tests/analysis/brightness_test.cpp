@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "support/signals.hpp"
-#include "tactus/analysis/sample_history.hpp"
+#include "tactus/dsp/sample_history.hpp"
 #include "tactus/analysis/stft_frame.hpp"
 
 namespace tactus {

@@ -14,7 +14,7 @@
 
 #include "support/engine_blocks.hpp"
 #include "support/signals.hpp"
-#include "tactus/analysis/real_fft.hpp"
+#include "tactus/dsp/real_fft.hpp"
 #include "tactus/engine/engine.hpp"
 
 namespace tactus {

@@ -11,7 +11,7 @@
 
 #include "support/engine_blocks.hpp"
 #include "support/signals.hpp"
-#include "tactus/core/preset.hpp"
+#include "tactus/io/preset.hpp"
 #include "tactus/core/units.hpp"
 #include "tactus/engine/engine.hpp"
 #include "tactus/io/audio_reader.hpp"

@@ -25,7 +25,7 @@
 #include "support/signals.hpp"
 #include "support/watchdog.hpp"
 #include "tactus/actuator/profile.hpp"
-#include "tactus/core/preset.hpp"
+#include "tactus/io/preset.hpp"
 #include "tactus/core/units.hpp"
 #include "tactus/io/audio_reader.hpp"
 

@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "support/signals.hpp"
-#include "tactus/core/preset.hpp"
+#include "tactus/io/preset.hpp"
 #include "tactus/engine/engine.hpp"
 #include "tactus/perception/meter.hpp"
 

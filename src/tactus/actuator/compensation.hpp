@@ -9,8 +9,8 @@
 #pragma once
 
 #include "tactus/actuator/profile.hpp"
-#include "tactus/post/biquad.hpp"
-#include "tactus/post/fitted_eq.hpp"
+#include "tactus/dsp/biquad.hpp"
+#include "tactus/dsp/fitted_eq.hpp"
 
 namespace tactus {
 

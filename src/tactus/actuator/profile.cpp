@@ -11,7 +11,7 @@
 #include <stdexcept>
 
 #include "tactus/core/printable.hpp"
-#include "tactus/core/search_path.hpp"
+#include "tactus/io/search_path.hpp"
 #include "tactus/core/units.hpp"
 
 #ifndef TACTUS_ACTUATOR_DIR

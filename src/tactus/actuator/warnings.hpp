@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "tactus/actuator/profile.hpp"
-#include "tactus/core/params.hpp"
+#include "tactus/params/params.hpp"
 
 namespace tactus {
 

@@ -12,9 +12,9 @@
 #include "tactus/analysis/noisiness.hpp"
 #include "tactus/analysis/onset_detector.hpp"
 #include "tactus/analysis/pitch_yin.hpp"
-#include "tactus/analysis/sample_history.hpp"
+#include "tactus/dsp/sample_history.hpp"
 #include "tactus/analysis/stft_frame.hpp"
-#include "tactus/core/params.hpp"
+#include "tactus/params/params.hpp"
 
 namespace tactus {
 

@@ -3,7 +3,7 @@
 
 #include <cstdint>
 
-#include "tactus/core/params.hpp"
+#include "tactus/params/params.hpp"
 
 namespace tactus {
 

@@ -7,7 +7,7 @@
 
 #include <vector>
 
-#include "tactus/post/biquad.hpp"
+#include "tactus/dsp/biquad.hpp"
 
 namespace tactus {
 

@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "tactus/analysis/sample_history.hpp"
+#include "tactus/dsp/sample_history.hpp"
 #include "tactus/analysis/stft_frame.hpp"
 
 namespace tactus {

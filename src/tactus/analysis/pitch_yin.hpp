@@ -6,8 +6,8 @@
 
 #include <vector>
 
-#include "tactus/analysis/real_fft.hpp"
-#include "tactus/analysis/sample_history.hpp"
+#include "tactus/dsp/real_fft.hpp"
+#include "tactus/dsp/sample_history.hpp"
 
 namespace tactus {
 

@@ -7,9 +7,9 @@
 #include <stdexcept>
 
 #include "tactus/core/units.hpp"
-#include "tactus/engine/denormals.hpp"
-#include "tactus/post/clip.hpp"
-#include "tactus/synthesis/components.hpp"
+#include "tactus/dsp/denormals.hpp"
+#include "tactus/dsp/clip.hpp"
+#include "tactus/params/components.hpp"
 
 namespace tactus {
 namespace {

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "tactus/analysis/analyzer.hpp"
-#include "tactus/core/params.hpp"
+#include "tactus/params/params.hpp"
 #include "tactus/engine/upsampler.hpp"
 #include "tactus/mapping/mapper.hpp"
 #include "tactus/post/post_chain.hpp"

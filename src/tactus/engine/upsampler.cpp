@@ -5,7 +5,7 @@
 #include <complex>
 #include <stdexcept>
 
-#include "tactus/analysis/real_fft.hpp"
+#include "tactus/dsp/real_fft.hpp"
 #include "tactus/core/units.hpp"
 
 namespace tactus {

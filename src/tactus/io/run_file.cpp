@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "tactus/engine/denormals.hpp"
+#include "tactus/dsp/denormals.hpp"
 #include "tactus/io/audio_reader.hpp"
 
 namespace tactus {

@@ -7,7 +7,7 @@
 #pragma once
 
 #include "tactus/analysis/features.hpp"
-#include "tactus/core/params.hpp"
+#include "tactus/params/params.hpp"
 
 namespace tactus {
 

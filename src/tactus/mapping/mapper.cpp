@@ -4,7 +4,7 @@
 
 #include "tactus/core/units.hpp"
 #include "tactus/perception/channels.hpp"
-#include "tactus/synthesis/components.hpp"
+#include "tactus/params/components.hpp"
 
 namespace tactus {
 namespace {

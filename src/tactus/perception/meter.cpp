@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "tactus/analysis/real_fft.hpp"
+#include "tactus/dsp/real_fft.hpp"
 #include "tactus/core/units.hpp"
 
 namespace tactus::perception {

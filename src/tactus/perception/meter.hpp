@@ -23,7 +23,7 @@
 #include <memory>
 #include <vector>
 
-#include "tactus/analysis/sample_history.hpp"
+#include "tactus/dsp/sample_history.hpp"
 #include "tactus/perception/sensation.hpp"
 
 namespace tactus {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "tactus/post/biquad_cascade.hpp"
+#include "tactus/dsp/biquad_cascade.hpp"
 
 namespace tactus {
 

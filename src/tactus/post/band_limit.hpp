@@ -4,7 +4,7 @@
 
 #include <array>
 
-#include "tactus/post/biquad.hpp"
+#include "tactus/dsp/biquad.hpp"
 
 namespace tactus {
 

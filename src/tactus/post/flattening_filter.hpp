@@ -10,7 +10,7 @@
 #pragma once
 
 #include "tactus/perception/threshold.hpp"
-#include "tactus/post/fitted_eq.hpp"
+#include "tactus/dsp/fitted_eq.hpp"
 
 namespace tactus {
 

@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "tactus/core/units.hpp"
-#include "tactus/post/clip.hpp"
-#include "tactus/synthesis/components.hpp"
+#include "tactus/dsp/clip.hpp"
+#include "tactus/params/components.hpp"
 
 namespace tactus {
 namespace {

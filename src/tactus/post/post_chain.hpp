@@ -22,7 +22,7 @@
 #include <cstdint>
 
 #include "tactus/actuator/compensation.hpp"
-#include "tactus/core/params.hpp"
+#include "tactus/params/params.hpp"
 #include "tactus/post/band_limit.hpp"
 #include "tactus/post/flattening_filter.hpp"
 #include "tactus/post/peak_limiter.hpp"
@@ -42,7 +42,7 @@ class PostChain {
     // The carrier alone (flutter and pressure off).
     void process(float* samples, int count) noexcept { process(samples, nullptr, nullptr, count); }
     // carrier: in place, becomes the output. flutter (filtered in place) and pressure may be
-    // null; each is used only when its component is on (synthesis/components.hpp).
+    // null; each is used only when its component is on (params/components.hpp).
     void process(float* carrier, float* flutter, const float* pressure, int count) noexcept;
     int latency_samples() const { return limiter_.latency_samples(); }
     int64_t clipped_samples() const { return clipped_; }

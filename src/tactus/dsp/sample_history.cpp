@@ -1,4 +1,4 @@
-#include "tactus/analysis/sample_history.hpp"
+#include "tactus/dsp/sample_history.hpp"
 
 #include <algorithm>
 

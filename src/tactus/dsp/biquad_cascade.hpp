@@ -9,7 +9,7 @@
 #include <array>
 #include <utility>
 
-#include "tactus/post/biquad.hpp"
+#include "tactus/dsp/biquad.hpp"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>

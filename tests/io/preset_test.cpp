@@ -3,7 +3,7 @@
 // errors as origin:line:column, unknown keys with a suggestion, wrong types, and applies all or
 // nothing; the shipped presets/tfd.toml loads and every value in it arrives in the Settings;
 // the preset search path, listing and name resolution.
-#include "tactus/core/preset.hpp"
+#include "tactus/io/preset.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "tactus/post/biquad.hpp"
+#include "tactus/dsp/biquad.hpp"
 
 namespace tactus {
 namespace {

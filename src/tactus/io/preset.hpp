@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "tactus/core/params.hpp"
+#include "tactus/params/params.hpp"
 
 namespace tactus {
 

@@ -1,7 +1,7 @@
 // Biquad designs and the filter itself: closed-form gains of the cookbook low-pass, high-pass,
 // peaking and shelving designs (DC, corner, near Nyquist) at 44.1, 48 and 192 kHz, the
 // Butterworth Q table, and the measured response of process() against magnitude_db().
-#include "tactus/post/biquad.hpp"
+#include "tactus/dsp/biquad.hpp"
 
 #include <gtest/gtest.h>
 

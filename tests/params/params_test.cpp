@@ -1,7 +1,7 @@
 // The parameter table and Settings: every default lies in its range, keys are unique and
 // findable, set() rejects out-of-range and non-finite values with the key and the allowed range
 // in the message, choices round and parse by name, text_of round-trips, nearest_param suggests.
-#include "tactus/core/params.hpp"
+#include "tactus/params/params.hpp"
 
 #include <fmt/format.h>
 #include <gmock/gmock.h>

@@ -1,4 +1,4 @@
-#include "tactus/core/params.hpp"
+#include "tactus/params/params.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "tactus/core/preset.hpp"
+#include "tactus/io/preset.hpp"
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "tactus/core/printable.hpp"
-#include "tactus/core/search_path.hpp"
+#include "tactus/io/search_path.hpp"
 
 #ifndef TACTUS_PRESET_DIR
 #define TACTUS_PRESET_DIR "presets"

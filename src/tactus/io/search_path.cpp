@@ -1,4 +1,4 @@
-#include "tactus/core/search_path.hpp"
+#include "tactus/io/search_path.hpp"
 
 #include <fmt/format.h>
 

@@ -4,7 +4,7 @@
 // TFD's voice coils cannot). Components that are off cost nothing and change nothing.
 #pragma once
 
-#include "tactus/core/params.hpp"
+#include "tactus/params/params.hpp"
 
 namespace tactus {
 

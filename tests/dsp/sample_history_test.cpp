@@ -1,6 +1,6 @@
 // SampleHistory: the newest samples read back oldest-first across ring wrap-around, zeros before
 // the stream starts, written() counts everything, any write split gives the same contents.
-#include "tactus/analysis/sample_history.hpp"
+#include "tactus/dsp/sample_history.hpp"
 
 #include <gtest/gtest.h>
 

@@ -10,7 +10,7 @@
 #include <functional>
 #include <vector>
 
-#include "tactus/post/biquad.hpp"
+#include "tactus/dsp/biquad.hpp"
 
 namespace tactus {
 

@@ -1,10 +1,10 @@
-#include "tactus/post/fitted_eq.hpp"
+#include "tactus/dsp/fitted_eq.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-#include "tactus/post/biquad_cascade.hpp"
+#include "tactus/dsp/biquad_cascade.hpp"
 
 namespace tactus {
 namespace {

@@ -1,5 +1,5 @@
 // RealFft: a cosine on bin k reads N/2 there and ~0 elsewhere; inverse(forward(x)) = N x; sizes.
-#include "tactus/analysis/real_fft.hpp"
+#include "tactus/dsp/real_fft.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "tactus/analysis/real_fft.hpp"
+#include "tactus/dsp/real_fft.hpp"
 
 #include <mutex>
 #include <new>
