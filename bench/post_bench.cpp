@@ -60,9 +60,11 @@ BENCHMARK(FlatteningProcess);
 void PeakLimiterProcess(benchmark::State& state) {
     const Settings s;
     PeakLimiter limiter;
-    limiter.prepare(internal_rate_hz(), s[P::post_lookahead_ms], s[P::post_release_ms],
-                    s[P::post_drive_db], s[P::post_limiter_threshold_db],
-                    db_to_gain(s[P::post_ceiling_db]));
+    limiter.prepare(internal_rate_hz(), s[P::post_lookahead_ms],
+                    {.drive_db = s[P::post_drive_db],
+                     .threshold_db = s[P::post_limiter_threshold_db],
+                     .ceiling = db_to_gain(s[P::post_ceiling_db]),
+                     .release_ms = s[P::post_release_ms]});
     per_sample(state, [&](float* x, int n) { limiter.process(x, n); });
 }
 BENCHMARK(PeakLimiterProcess);

@@ -31,7 +31,11 @@ std::string describe(const LimiterSettings& s) {
 
 PeakLimiter make(const LimiterSettings& s) {
     PeakLimiter limiter;
-    limiter.prepare(s.fs, s.lookahead_ms, s.release_ms, s.drive_db, s.threshold_db, s.ceiling);
+    limiter.prepare(s.fs, s.lookahead_ms,
+                    {.drive_db = s.drive_db,
+                     .threshold_db = s.threshold_db,
+                     .ceiling = s.ceiling,
+                     .release_ms = s.release_ms});
     return limiter;
 }
 
@@ -133,7 +137,11 @@ INSTANTIATE_TEST_SUITE_P(Settings, LimiterSettingsCase,
 TEST(PeakLimiter, BelowThresholdPassesUnchangedApartFromLatency) {
     for (double fs : {8000.0, 48000.0, 192000.0}) {
         PeakLimiter limiter;
-        limiter.prepare(fs, 1.5, 80, 0, -6, 1.0);  // threshold at 0.501
+        limiter.prepare(fs, 1.5,
+                        {.drive_db = 0,
+                         .threshold_db = -6,
+                         .ceiling = 1.0,
+                         .release_ms = 80});  // threshold at 0.501
         const int latency = limiter.latency_samples();
         const auto n = static_cast<size_t>(fs / 2);
         std::vector<float> x = test::sine(97.0, fs, n, 0.5);
@@ -148,7 +156,8 @@ TEST(PeakLimiter, BelowThresholdPassesUnchangedApartFromLatency) {
 
 TEST(PeakLimiter, DriveScalesATransparentSignal) {
     PeakLimiter limiter;
-    limiter.prepare(48000, 2, 80, -6, -3, 1.0);
+    limiter.prepare(48000, 2,
+                    {.drive_db = -6, .threshold_db = -3, .ceiling = 1.0, .release_ms = 80});
     const double drive = db_to_gain(-6);
     std::vector<float> x = test::sine(220.0, 48000, 4800, 0.9), y = x;
     limiter.process(y.data(), static_cast<int>(y.size()));
@@ -163,7 +172,8 @@ TEST(PeakLimiter, LimitsToTheStaticCurveAndKeepsLouderLouder) {
     double previous_peak = 0.0;
     for (double a : amplitudes) {
         PeakLimiter limiter;
-        limiter.prepare(fs, 1.5, 80, 0, -6, 1.0);
+        limiter.prepare(fs, 1.5,
+                        {.drive_db = 0, .threshold_db = -6, .ceiling = 1.0, .release_ms = 80});
         std::vector<float> x = test::sine(100.0, fs, static_cast<size_t>(fs), a);
         limiter.process(x.data(), static_cast<int>(x.size()));
         const double out_peak = test::peak(std::span<const float>(x).subspan(x.size() / 2));
@@ -176,7 +186,8 @@ TEST(PeakLimiter, LimitsToTheStaticCurveAndKeepsLouderLouder) {
 
 TEST(PeakLimiter, CurveIsTheDocumentedSoftKnee) {
     PeakLimiter limiter;
-    limiter.prepare(48000, 1.5, 80, 0, -6, 1.0);
+    limiter.prepare(48000, 1.5,
+                    {.drive_db = 0, .threshold_db = -6, .ceiling = 1.0, .release_ms = 80});
     const double t = db_to_gain(-6), c = 1.0;
     for (double p : {0.0, 0.1, 0.25, t}) EXPECT_DOUBLE_EQ(limiter.curve(p), p) << p;
     for (double p : {0.6, 1.0, 2.0, 5.0})
@@ -193,7 +204,9 @@ TEST(PeakLimiter, CurveIsTheDocumentedSoftKnee) {
 TEST(PeakLimiter, CurveIsStrictlyIncreasingAndBelowTheCeilingUpToFullScaleAtMaxDrive) {
     for (double threshold_db : {-6.0, -20.0}) {
         PeakLimiter limiter;
-        limiter.prepare(48000, 1.5, 80, 40, threshold_db, 1.0);
+        limiter.prepare(
+            48000, 1.5,
+            {.drive_db = 40, .threshold_db = threshold_db, .ceiling = 1.0, .release_ms = 80});
         double previous = limiter.curve(0.0);
         int failures = 0;
         for (int i = 1; i <= 4000 && failures < 5; ++i) {
@@ -211,7 +224,8 @@ TEST(PeakLimiter, CurveIsStrictlyIncreasingAndBelowTheCeilingUpToFullScaleAtMaxD
 
 TEST(PeakLimiter, ResetGivesTheSameOutputAgain) {
     PeakLimiter limiter;
-    limiter.prepare(48000, 1.5, 80, 10, -6, 1.0);
+    limiter.prepare(48000, 1.5,
+                    {.drive_db = 10, .threshold_db = -6, .ceiling = 1.0, .release_ms = 80});
     std::vector<float> a = test::white_noise(20000, 5, 2.0), b = a;
     limiter.process(a.data(), static_cast<int>(a.size()));
     limiter.reset();

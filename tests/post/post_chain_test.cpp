@@ -277,9 +277,12 @@ TEST(PostChain, WithoutAnActuatorItIsExactlyThePapersFourStages) {
         fs, s[P::post_band_low_hz], s[P::post_band_high_hz],
         {.strength = s[P::post_flatten_strength], .range_db = s[P::post_flatten_range_db]});
     PeakLimiter limiter;
-    limiter.prepare(fs, s[P::post_lookahead_ms], s[P::post_release_ms], s[P::post_drive_db],
-                    s[P::post_limiter_threshold_db],
-                    db_to_gain(s[P::post_ceiling_db] - PostChain::kRingingMarginDb));
+    limiter.prepare(
+        fs, s[P::post_lookahead_ms],
+        {.drive_db = s[P::post_drive_db],
+         .threshold_db = s[P::post_limiter_threshold_db],
+         .ceiling = db_to_gain(s[P::post_ceiling_db] - PostChain::kRingingMarginDb),
+         .release_ms = s[P::post_release_ms]});
     test::DrumSignal drums = test::drum_pattern(fs, 3.0, 5);
     std::vector<float> by_hand = drums.audio, chained = drums.audio;
     const int n = static_cast<int>(by_hand.size());

@@ -33,6 +33,11 @@ void Analyzer::prepare(double sample_rate_hz, const Settings& s) {
     reset();
 }
 
+void Analyzer::set_live(const Settings& s) noexcept {
+    onsets_.set_thresholds(s[P::onset_threshold], s[P::onset_ratio], s[P::onset_min_interval_ms]);
+    pitch_.set_threshold(s[P::pitch_threshold]);
+}
+
 void Analyzer::reset() noexcept {
     history_.reset();
     loudness_.reset();

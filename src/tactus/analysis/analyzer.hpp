@@ -22,6 +22,9 @@ class Analyzer {
   public:
     void prepare(double sample_rate_hz, const Settings& settings);  // may allocate
     void reset() noexcept;
+    // Live (audio thread): the settings that change no buffer (onset thresholds and interval,
+    // pitch threshold); the others need prepare().
+    void set_live(const Settings& settings) noexcept;
 
     int hop_samples() const { return hop_samples_; }
     // The features to compute (all by default); the others keep their Features default.

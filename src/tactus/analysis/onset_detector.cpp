@@ -15,6 +15,7 @@ constexpr double kSubBlockMs = 0.5;         // time resolution of the onset-time
 
 void OnsetDetector::prepare(double sample_rate_hz, int hop_samples, const OnsetSettings& s) {
     settings_ = s;
+    sample_rate_hz_ = sample_rate_hz;
     hop_samples_ = hop_samples;
     stft_.prepare(nearest_power_of_two(ms_to_samples(s.window_ms, sample_rate_hz)), sample_rate_hz);
     end_bin_ = std::min(stft_.bins(), static_cast<int>(kTopHz / stft_.bin_hz()) + 1);
@@ -31,6 +32,14 @@ void OnsetDetector::prepare(double sample_rate_hz, int hop_samples, const OnsetS
     segment_.assign(static_cast<size_t>(span_samples()), 0.0f);
     block_energy_.assign(static_cast<size_t>(span_samples() / sub_block_samples_), 0.0);
     reset();
+}
+
+void OnsetDetector::set_thresholds(double threshold, double ratio,
+                                   double min_interval_ms) noexcept {
+    settings_.threshold = threshold;
+    settings_.ratio = ratio;
+    settings_.min_interval_ms = min_interval_ms;
+    min_interval_samples_ = ms_to_samples(min_interval_ms, sample_rate_hz_);
 }
 
 void OnsetDetector::reset() noexcept {

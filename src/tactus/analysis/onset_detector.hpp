@@ -35,6 +35,8 @@ class OnsetDetector {
   public:
     void prepare(double sample_rate_hz, int hop_samples, const OnsetSettings& settings);
     void reset() noexcept;
+    // Live (audio thread): threshold, ratio and minimum interval; the windows stay as prepared.
+    void set_thresholds(double threshold, double ratio, double min_interval_ms) noexcept;
     // Analyses the frame ending at the newest sample of `history`.
     OnsetDecision analyse(const SampleHistory& history) noexcept;
     int span_samples() const { return stft_.window_samples() + hop_samples_; }
@@ -43,6 +45,7 @@ class OnsetDetector {
     int64_t refine_onset_sample(const SampleHistory& history) noexcept;
 
     OnsetSettings settings_;
+    double sample_rate_hz_ = 48000;
     StftFrame stft_;
     std::vector<float> previous_log_, older_log_, rise_, segment_;  // rise_: per bin, this frame
     std::vector<double> flux_history_, scratch_, block_energy_;

@@ -19,6 +19,8 @@ struct Pitch {
 class PitchYin {
   public:
     void prepare(double sample_rate_hz, double min_hz, double max_hz, double threshold);
+    // Live (audio thread): the YIN absolute threshold.
+    void set_threshold(double threshold) noexcept { threshold_ = threshold; }
     Pitch analyse(const SampleHistory& history) noexcept;
     // Samples of history analyse() reads.
     int span_samples() const { return 2 * window_; }

@@ -44,9 +44,8 @@ std::vector<double> FittedEq::grid(double low_hz, double high_hz) {
     return frequencies;
 }
 
-void FittedEq::design(double sample_rate_hz, double low_hz, double high_hz,
-                      const std::function<double(double)>& target_db) {
-    sample_rate_hz_ = sample_rate_hz;
+FittedEq::Design FittedEq::fit(double sample_rate_hz, double low_hz, double high_hz,
+                               const std::function<double(double)>& target_db) {
     high_hz = highest_fitted_hz(high_hz, sample_rate_hz);
     const std::vector<double> frequencies = grid(low_hz, high_hz);
     std::vector<double> target(kGridPoints);
@@ -57,13 +56,13 @@ void FittedEq::design(double sample_rate_hz, double low_hz, double high_hz,
     for (double f = low_hz; f <= high_hz * 1.001 && centres.size() < kMaxSections;
          f *= std::sqrt(2.0))
         centres.push_back(f);
-    count_ = static_cast<int>(centres.size());
-    const int unknowns = count_ + 1;  // section gains and an overall gain, dB
+    const int sections = static_cast<int>(centres.size());
+    const int unknowns = sections + 1;  // section gains and an overall gain, dB
 
     std::vector<double> gains_db(static_cast<size_t>(unknowns), 0.0);
     auto response_db = [&](const std::vector<double>& g, double f) {
-        double db = g[count_];
-        for (int s = 0; s < count_; ++s)
+        double db = g[sections];
+        for (int s = 0; s < sections; ++s)
             db += BiquadCoefficients::peaking(centres[s], kSectionQ, g[s], sample_rate_hz)
                       .magnitude_db(f, sample_rate_hz);
         return db;
@@ -94,11 +93,46 @@ void FittedEq::design(double sample_rate_hz, double low_hz, double high_hz,
         const std::vector<double> step = solve(normal, rhs, unknowns);
         for (int u = 0; u < unknowns; ++u) gains_db[u] += step[u];
     }
-    for (int s = 0; s < count_; ++s)
-        sections_[s].set(
-            BiquadCoefficients::peaking(centres[s], kSectionQ, gains_db[s], sample_rate_hz));
-    gain_ = db_to_gain(gains_db[count_]);
-    reset();
+    Design fitted;
+    fitted.count = sections;
+    for (int s = 0; s < sections; ++s)
+        fitted.sections[s] =
+            BiquadCoefficients::peaking(centres[s], kSectionQ, gains_db[s], sample_rate_hz);
+    fitted.gain = db_to_gain(gains_db[sections]);
+    return fitted;
+}
+
+void FittedEq::set(const Design& design) noexcept {
+    count_ = design.count;
+    for (int s = 0; s < count_; ++s) sections_[s].set(design.sections[s]);
+    gain_ = design.gain;
+    to_ = design;
+    glide_steps_ = glide_done_ = 0;
+}
+
+void FittedEq::glide_to(const Design& design, int samples) noexcept {
+    from_.count = count_;
+    for (int s = 0; s < count_; ++s) from_.sections[s] = sections_[s].coefficients();
+    from_.gain = gain_;
+    to_ = design;
+    glide_steps_ = std::max(1, samples / kGlideStep);
+    glide_done_ = 0;
+    until_step_ = 0;
+    if (samples <= 0) set(design);
+}
+
+void FittedEq::step_glide() noexcept {
+    ++glide_done_;
+    const double t = static_cast<double>(glide_done_) / glide_steps_;
+    if (glide_done_ >= glide_steps_) return set(to_);
+    const auto mix = [t](double a, double b) { return a + t * (b - a); };
+    for (int s = 0; s < count_; ++s) {
+        const BiquadCoefficients& a = from_.sections[s];
+        const BiquadCoefficients& b = to_.sections[s];
+        sections_[s].set({mix(a.b0, b.b0), mix(a.b1, b.b1), mix(a.b2, b.b2), mix(a.a1, b.a1),
+                          mix(a.a2, b.a2)});
+    }
+    gain_ = mix(from_.gain, to_.gain);
 }
 
 void FittedEq::reset() noexcept {
@@ -106,6 +140,17 @@ void FittedEq::reset() noexcept {
 }
 
 void FittedEq::process(float* samples, int count) noexcept {
+    while (glide_done_ < glide_steps_ && count > 0) {  // a glide: steps between short runs
+        if (until_step_ == 0) {
+            step_glide();
+            until_step_ = kGlideStep;
+        }
+        const int run = std::min(count, until_step_);
+        process_cascade(sections_.data(), count_, samples, run, gain_);
+        samples += run;
+        count -= run;
+        until_step_ -= run;
+    }
     process_cascade(sections_.data(), count_, samples, count, gain_);
 }
 

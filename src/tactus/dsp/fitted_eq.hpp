@@ -3,6 +3,11 @@
 // damped Gauss-Newton least squares in dB on a log-frequency grid (the "accurate graphic
 // equaliser" design idea of Välimäki & Liski 2017). Used by the flattening filter (a perception
 // target) and the actuator compensation (an inverse actuator response).
+// A new design (a control thread fits it: fit() allocates) is taken live by glide_to() on the
+// audio thread: the coefficients move linearly from the old design to the new one, every
+// kGlideStep samples, keeping the filter states. The sections' centres and Q depend only on the
+// band and rate, and every stable biquad's (a1, a2) lies in one convex triangle, so every
+// intermediate filter is stable.
 #pragma once
 
 #include <algorithm>
@@ -18,6 +23,14 @@ class FittedEq {
   public:
     static constexpr int kMaxSections = 16;
     static constexpr int kGridPoints = 96;
+    static constexpr int kGlideStep = 16;  // samples between coefficient steps of a glide
+
+    // The result of a fit: what the filter runs with. Copied without allocation.
+    struct Design {
+        std::array<BiquadCoefficients, kMaxSections> sections{};
+        int count = 0;
+        double gain = 1.0;
+    };
 
     // The log-frequency grid the fit is made on (and a target's extremes are best taken on).
     static std::vector<double> grid(double low_hz, double high_hz);
@@ -25,18 +38,39 @@ class FittedEq {
         return std::min(high_hz, 0.45 * sample_rate_hz);
     }
 
-    // May allocate. The target is sampled on grid(low_hz, highest_fitted_hz(high_hz, fs)).
+    // Allocates. The target is sampled on grid(low_hz, highest_fitted_hz(high_hz, fs)).
+    static Design fit(double sample_rate_hz, double low_hz, double high_hz,
+                      const std::function<double(double frequency_hz)>& target_db);
+    // fit(), then set() and reset().
     void design(double sample_rate_hz, double low_hz, double high_hz,
-                const std::function<double(double frequency_hz)>& target_db);
+                const std::function<double(double frequency_hz)>& target_db) {
+        prepare(sample_rate_hz, fit(sample_rate_hz, low_hz, high_hz, target_db));
+    }
+    // The rate magnitude_db() reads, then set() and reset().
+    void prepare(double sample_rate_hz, const Design& design) noexcept {
+        sample_rate_hz_ = sample_rate_hz;
+        set(design);
+        reset();
+    }
+    // Runs `design` from now on (control or audio thread, between process() calls).
+    void set(const Design& design) noexcept;
+    // Audio thread: moves to `design` over `samples` samples (at once when 0). The design must
+    // come from fit() at the same rate and band.
+    void glide_to(const Design& design, int samples) noexcept;
     void reset() noexcept;
     void process(float* samples, int count) noexcept;
-    double magnitude_db(double frequency_hz) const;  // what it achieves
+    double magnitude_db(double frequency_hz) const;  // what it achieves now
 
   private:
+    void step_glide() noexcept;
     double sample_rate_hz_ = 48000;
     std::array<Biquad, kMaxSections> sections_;
     int count_ = 0;
     double gain_ = 1.0;
+    Design from_, to_;        // a glide's ends
+    int glide_steps_ = 0;     // coefficient steps a glide takes
+    int glide_done_ = 0;      // steps taken
+    int until_step_ = 0;      // samples until the next step
 };
 
 }  // namespace tactus

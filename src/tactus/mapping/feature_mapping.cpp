@@ -13,7 +13,7 @@ P offset(P first, int k) {
 constexpr double kSmallest = 1e-9;  // keeps log curves finite at 0
 }  // namespace
 
-void FeatureMapping::prepare(const Settings& s, P first, double frames_per_second) {
+void FeatureMapping::configure(const Settings& s, P first, double frames_per_second) noexcept {
     source_ = static_cast<FeatureSource>(static_cast<int>(s[first]));
     in_min_ = s[offset(first, 1)];
     in_max_ = s[offset(first, 2)];
@@ -21,7 +21,6 @@ void FeatureMapping::prepare(const Settings& s, P first, double frames_per_secon
     out_max_ = s[offset(first, 4)];
     curve_ = static_cast<MappingCurve>(static_cast<int>(s[offset(first, 5)]));
     smoothing_ = one_pole_coefficient(s[offset(first, 6)], frames_per_second);
-    smoothed_ = out_min_;
 }
 
 double FeatureMapping::shape(double input) const noexcept {

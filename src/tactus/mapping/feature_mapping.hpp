@@ -14,7 +14,13 @@ namespace tactus {
 class FeatureMapping {
   public:
     // `first` is the mapping's *_source parameter; the others follow it in the table.
-    void prepare(const Settings& settings, P first, double frames_per_second);
+    void prepare(const Settings& settings, P first, double frames_per_second) noexcept {
+        configure(settings, first, frames_per_second);
+        smoothed_ = out_min_;
+    }
+    // Live (audio thread): new ranges, curve, source and smoothing; the smoothed value goes on
+    // from where it is.
+    void configure(const Settings& settings, P first, double frames_per_second) noexcept;
     void reset(double value) noexcept { smoothed_ = value; }
     // Maps and smooths one frame's feature value.
     double map(const Features& features) noexcept;

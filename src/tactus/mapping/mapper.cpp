@@ -1,5 +1,6 @@
 #include "tactus/mapping/mapper.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "tactus/core/units.hpp"
@@ -16,12 +17,19 @@ constexpr double kStepHysteresis = 0.1;  // of one step
 }  // namespace
 
 void Mapper::prepare(const Settings& s, double frames_per_second, double output_ceiling) {
-    amplitude_.prepare(s, P::amplitude_source, frames_per_second);
-    frequency_.prepare(s, P::frequency_source, frames_per_second);
-    square_mix_.prepare(s, P::square_mix_source, frames_per_second);
-    flutter_level_.prepare(s, P::flutter_level_source, frames_per_second);
-    flutter_rate_.prepare(s, P::flutter_rate_source, frames_per_second);
-    pressure_level_.prepare(s, P::pressure_level_source, frames_per_second);
+    frames_per_second_ = frames_per_second;
+    set_live(s, output_ceiling);
+    reset();
+}
+
+void Mapper::set_live(const Settings& s, double output_ceiling) noexcept {
+    const double fps = frames_per_second_;
+    amplitude_.configure(s, P::amplitude_source, fps);
+    frequency_.configure(s, P::frequency_source, fps);
+    square_mix_.configure(s, P::square_mix_source, fps);
+    flutter_level_.configure(s, P::flutter_level_source, fps);
+    flutter_rate_.configure(s, P::flutter_rate_source, fps);
+    pressure_level_.configure(s, P::pressure_level_source, fps);
     gate_db_ = s[P::mapping_gate_db];
     envelope_.attack_ms = s[P::envelope_attack_ms];
     envelope_.decay_ms = s[P::envelope_decay_ms];
@@ -33,7 +41,7 @@ void Mapper::prepare(const Settings& s, double frames_per_second, double output_
     // Pressure weight is a fraction of the output ceiling (the post chain keeps that headroom).
     pressure_weight_ = pressure_enabled(s) ? s[P::pressure_weight] * output_ceiling : 0.0;
     pressure_steps_ = static_cast<int>(std::lround(s[P::pressure_steps]));
-    reset();
+    pressure_step_ = std::min(pressure_step_, pressure_steps_);
 }
 
 void Mapper::reset() noexcept {

@@ -30,6 +30,8 @@ class Mapper {
         prepare(settings, frames_per_second, db_to_gain(settings[P::post_ceiling_db]));
     }
     void reset() noexcept;
+    // Live (audio thread): every mapping setting; smoothed values and pressure steps go on.
+    void set_live(const Settings& settings, double output_ceiling) noexcept;
     ControlFrame map(const Features& features) noexcept;
 
   private:
@@ -39,7 +41,7 @@ class Mapper {
     FeatureMapping flutter_level_, flutter_rate_, pressure_level_;
     double flutter_gain_ = 0, pressure_weight_ = 0;
     int pressure_steps_ = 0, pressure_step_ = 0;
-    double gate_db_ = -70;
+    double gate_db_ = -70, frames_per_second_ = 1;
     ControlFrame envelope_;  // attack, decay, sustain from settings
 };
 

@@ -21,18 +21,30 @@ double FlatteningFilter::target_db(double frequency_hz) const {
     return -std::min(design_.strength * spread, design_.range_db);
 }
 
-void FlatteningFilter::prepare(double sample_rate_hz, double low_hz, double high_hz,
-                               const FlatteningDesign& design) {
-    design_ = design;
+FlatteningFilter::Design FlatteningFilter::design(double sample_rate_hz, double low_hz,
+                                                  double high_hz, const FlatteningDesign& inputs) {
+    FlatteningFilter filter;
+    filter.design_ = inputs;
     // The contour's largest value in the band: on the fitting grid and, for a maximum between
     // its points (small contacts: the summation ramp at 40-80 Hz), on a finer scan.
     high_hz = FittedEq::highest_fitted_hz(high_hz, sample_rate_hz);
-    reference_db_ = -1e9;
+    double& reference_db = filter.reference_db_;
+    reference_db = -1e9;
     for (double f : FittedEq::grid(low_hz, high_hz))
-        reference_db_ = std::max(reference_db_, contour_db(f));
+        reference_db = std::max(reference_db, filter.contour_db(f));
     for (double f = low_hz; f < high_hz; f *= kScanRatio)
-        reference_db_ = std::max(reference_db_, contour_db(f));
-    eq_.design(sample_rate_hz, low_hz, high_hz, [this](double f) { return target_db(f); });
+        reference_db = std::max(reference_db, filter.contour_db(f));
+    return {inputs, reference_db,
+            FittedEq::fit(sample_rate_hz, low_hz, high_hz,
+                          [&filter](double f) { return filter.target_db(f); })};
+}
+
+void FlatteningFilter::prepare(double sample_rate_hz, double low_hz, double high_hz,
+                               const FlatteningDesign& inputs) {
+    const Design d = design(sample_rate_hz, low_hz, high_hz, inputs);
+    design_ = d.inputs;
+    reference_db_ = d.reference_db;
+    eq_.prepare(sample_rate_hz, d.eq);
 }
 
 }  // namespace tactus

@@ -23,6 +23,16 @@ struct FlatteningDesign {
 
 class FlatteningFilter {
   public:
+    // A complete design, copied without allocation: what a control thread hands the audio thread.
+    struct Design {
+        FlatteningDesign inputs;
+        double reference_db = 0;
+        FittedEq::Design eq;
+    };
+    // Allocates (the fit).
+    static Design design(double sample_rate_hz, double low_hz, double high_hz,
+                         const FlatteningDesign& inputs);
+
     void prepare(double sample_rate_hz, double low_hz, double high_hz,
                  const FlatteningDesign& design);  // may allocate (design)
     // The threshold curve at the reference contact.
@@ -31,6 +41,12 @@ class FlatteningFilter {
         prepare(sample_rate_hz, low_hz, high_hz, {.strength = strength, .range_db = range_db});
     }
     void reset() noexcept { eq_.reset(); }
+    // Audio thread: glides to a design() made for the same rate and band over `samples`.
+    void glide_to(const Design& design, int samples) noexcept {
+        design_ = design.inputs;
+        reference_db_ = design.reference_db;
+        eq_.glide_to(design.eq, samples);
+    }
     void process(float* samples, int count) noexcept { eq_.process(samples, count); }
 
     double target_db(double frequency_hz) const;  // what the design aims for

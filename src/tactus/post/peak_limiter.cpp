@@ -8,17 +8,32 @@
 
 namespace tactus {
 
-void PeakLimiter::prepare(double sample_rate_hz, double lookahead_ms, double release_ms,
-                          double drive_db, double threshold_db, double ceiling) {
+PeakLimiter::Gains PeakLimiter::gains_of(const LimiterLevels& l) noexcept {
+    return {.drive = db_to_gain(l.drive_db),
+            .threshold = l.ceiling * db_to_gain(l.threshold_db),
+            .ceiling = float_at_most(l.ceiling)};  // output samples are floats
+}
+
+void PeakLimiter::prepare(double sample_rate_hz, double lookahead_ms, const LimiterLevels& levels) {
+    sample_rate_hz_ = sample_rate_hz;
     lookahead_ = std::max<int>(1, static_cast<int>(ms_to_samples(lookahead_ms, sample_rate_hz)));
-    release_ = one_pole_coefficient(release_ms, sample_rate_hz);
-    drive_ = db_to_gain(drive_db);
-    ceiling_ = float_at_most(ceiling);  // output samples are floats
-    threshold_ = ceiling * db_to_gain(threshold_db);
+    set_levels(levels, 0);
     delay_.assign(static_cast<size_t>(lookahead_), 0.0);
     held_gain_.assign(static_cast<size_t>(lookahead_), 1.0);
     minimum_.assign(static_cast<size_t>(lookahead_ + 2), {0, 1.0});
     reset();
+}
+
+void PeakLimiter::set_levels(const LimiterLevels& levels, int samples) noexcept {
+    release_ = one_pole_coefficient(levels.release_ms, sample_rate_hz_);
+    target_ = gains_of(levels);
+    glide_left_ = std::max(0, samples);
+    if (glide_left_ == 0) {
+        drive_ = target_.drive, threshold_ = target_.threshold, ceiling_ = target_.ceiling;
+        return;
+    }
+    step_ = {(target_.drive - drive_) / glide_left_, (target_.threshold - threshold_) / glide_left_,
+             (target_.ceiling - ceiling_) / glide_left_};
 }
 
 void PeakLimiter::reset() noexcept {
@@ -43,6 +58,13 @@ void PeakLimiter::process(float* samples, int count) noexcept {
     const size_t capacity = minimum_.size();
     const auto length = static_cast<size_t>(lookahead_);
     for (int i = 0; i < count; ++i) {
+        if (glide_left_ > 0) {
+            if (--glide_left_ == 0) {
+                drive_ = target_.drive, threshold_ = target_.threshold, ceiling_ = target_.ceiling;
+            } else {
+                drive_ += step_.drive, threshold_ += step_.threshold, ceiling_ += step_.ceiling;
+            }
+        }
         double x = samples[i];
         if (!std::isfinite(x)) x = 0.0;
         x *= drive_;

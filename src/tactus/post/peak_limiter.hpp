@@ -7,7 +7,8 @@
 // is kept) even 60 dB over the knee. The required gain
 // is held for the look-ahead (sliding minimum) and averaged over it (box filter), which
 // guarantees the gain is fully down when the peak leaves the delay line; recovery is a one-pole
-// release. Non-finite input is treated as 0.
+// release. Non-finite input is treated as 0. Drive, threshold and ceiling are live: set_levels()
+// glides them linearly per sample (audio thread); the look-ahead is structural (prepare).
 #pragma once
 
 #include <cstddef>
@@ -16,10 +17,21 @@
 
 namespace tactus {
 
+// The limiter's levels, by name: no two of them can be swapped at a call.
+struct LimiterLevels {
+    double drive_db = 12;       // gain into the limiter
+    double threshold_db = -6;   // soft knee start, relative to the ceiling
+    double ceiling = 1;         // hard output bound, full scale
+    double release_ms = 80;     // gain recovery time constant
+};
+
 class PeakLimiter {
   public:
-    void prepare(double sample_rate_hz, double lookahead_ms, double release_ms, double drive_db,
-                 double threshold_db, double ceiling);  // may allocate
+    void prepare(double sample_rate_hz, double lookahead_ms,
+                 const LimiterLevels& levels);  // may allocate
+    // Audio thread: drive, threshold and ceiling glide to `levels` over `samples` samples (at
+    // once when 0); the release applies at once.
+    void set_levels(const LimiterLevels& levels, int samples) noexcept;
     void reset() noexcept;
     void process(float* samples, int count) noexcept;
     int latency_samples() const { return lookahead_; }
@@ -27,8 +39,15 @@ class PeakLimiter {
     double curve(double peak) const noexcept;
 
   private:
+    struct Gains {
+        double drive = 1, threshold = 0.5, ceiling = 1;
+    };
+    static Gains gains_of(const LimiterLevels& levels) noexcept;
     int lookahead_ = 1;
-    double drive_ = 1, threshold_ = 0.5, ceiling_ = 1, release_ = 0;
+    double sample_rate_hz_ = 48000, release_ = 0;
+    double drive_ = 1, threshold_ = 0.5, ceiling_ = 1;  // now
+    Gains target_, step_;                                // a glide: per-sample steps
+    int glide_left_ = 0;
     std::vector<double> delay_;      // look-ahead delay line (double: no overflow)
     std::vector<double> held_gain_;  // ring for the box average
     std::vector<std::pair<int64_t, double>> minimum_;  // monotonic deque (ring) for sliding min

@@ -16,32 +16,50 @@ constexpr double kFlutterPeakQ = 2.0;
 // With the flutter on, the last high-pass (1 Hz) rings for seconds after the sound stops; below
 // -180 dBFS its output is set to 0, so silence still ends in exact zeros.
 constexpr float kSilentOutput = 1e-9f;
+
+FlatteningDesign flattening_inputs(const Settings& s) {
+    return {.strength = s[P::post_flatten_strength],
+            .range_db = s[P::post_flatten_range_db],
+            .contact_area_cm2 = s[P::perception_contact_area_cm2],
+            .level_db = s[P::post_flatten_level_db]};
+}
+
 }  // namespace
 
 void PostChain::prepare(double sample_rate_hz, const Settings& s, const ActuatorProfile* actuator) {
     const double low_hz = s[P::post_band_low_hz], high_hz = s[P::post_band_high_hz];
+    sample_rate_hz_ = sample_rate_hz, low_hz_ = low_hz, high_hz_ = high_hz;
     flutter_on_ = flutter_enabled(s);
     pressure_on_ = pressure_enabled(s);
-    flutter_peak_on_ = flutter_on_ && s[P::post_flutter_peak_db] != 0.0;
     first_band_.prepare(sample_rate_hz, low_hz, high_hz, kFirstBandOrder);
-    flatten_.prepare(sample_rate_hz, low_hz, high_hz,
-                     {.strength = s[P::post_flatten_strength],
-                      .range_db = s[P::post_flatten_range_db],
-                      .contact_area_cm2 = s[P::perception_contact_area_cm2],
-                      .level_db = s[P::post_flatten_level_db]});
-    flutter_peak_.set(BiquadCoefficients::peaking(kFlutterPeakHz, kFlutterPeakQ,
-                                                  s[P::post_flutter_peak_db], sample_rate_hz));
+    flatten_.prepare(sample_rate_hz, low_hz, high_hz, flattening_inputs(s));
     compensate_ = actuator != nullptr;
     if (actuator) compensation_.prepare(sample_rate_hz, *actuator);
-    ceiling_ = db_to_gain(s[P::post_ceiling_db]);
-    if (actuator) ceiling_ = std::min(ceiling_, actuator->max_drive);
-    const double pressure_headroom = pressure_on_ ? s[P::pressure_weight] * ceiling_ : 0.0;
-    limiter_.prepare(sample_rate_hz, s[P::post_lookahead_ms], s[P::post_release_ms],
-                     s[P::post_drive_db], s[P::post_limiter_threshold_db],
-                     (ceiling_ - pressure_headroom) * db_to_gain(-kRingingMarginDb));
+    max_drive_ = actuator ? actuator->max_drive : 1.0;
+    limiter_.prepare(sample_rate_hz, s[P::post_lookahead_ms], {});
+    set_live(s, 0);
     last_band_.prepare(sample_rate_hz, flutter_on_ ? s[P::post_flutter_low_hz] : low_hz, high_hz,
                        kLastBandOrder);
     reset();
+}
+
+FlatteningFilter::Design PostChain::flattening_design(const Settings& s) const {
+    return FlatteningFilter::design(sample_rate_hz_, low_hz_, high_hz_, flattening_inputs(s));
+}
+
+void PostChain::set_live(const Settings& s, int glide_samples) noexcept {
+    flutter_peak_on_ = flutter_on_ && s[P::post_flutter_peak_db] != 0.0;
+    flutter_peak_.set(BiquadCoefficients::peaking(kFlutterPeakHz, kFlutterPeakQ,
+                                                  s[P::post_flutter_peak_db], sample_rate_hz_));
+    const double ceiling = std::min(db_to_gain(s[P::post_ceiling_db]), max_drive_);
+    clip_ceiling_ = glide_samples > 0 ? std::max(ceiling, ceiling_) : ceiling;
+    ceiling_ = ceiling;
+    const double pressure_headroom = pressure_on_ ? s[P::pressure_weight] * ceiling_ : 0.0;
+    limiter_.set_levels({.drive_db = s[P::post_drive_db],
+                         .threshold_db = s[P::post_limiter_threshold_db],
+                         .ceiling = (ceiling_ - pressure_headroom) * db_to_gain(-kRingingMarginDb),
+                         .release_ms = s[P::post_release_ms]},
+                        glide_samples);
 }
 
 void PostChain::reset() noexcept {
@@ -71,7 +89,8 @@ void PostChain::process(float* samples, float* flutter, const float* pressure, i
             if (std::abs(samples[i]) < kSilentOutput) samples[i] = 0.0f;
     if (pressure_on_ && pressure)
         for (int i = 0; i < count; ++i) samples[i] += pressure[i];
-    clipped_ += clip(samples, count, float_at_most(ceiling_));
+    clipped_ += clip(samples, count, float_at_most(clip_ceiling_));
+    clip_ceiling_ = ceiling_;
 }
 
 }  // namespace tactus

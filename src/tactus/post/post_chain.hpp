@@ -39,6 +39,15 @@ class PostChain {
     void prepare(double sample_rate_hz, const Settings& settings,
                  const ActuatorProfile* actuator = nullptr);
     void reset() noexcept;
+    // The flattening filter `settings` ask for at this chain's rate and band (allocates: a
+    // control thread designs it, glide_flattening() takes it live).
+    FlatteningFilter::Design flattening_design(const Settings& settings) const;
+    // Live (audio thread), each over `glide_samples`: drive, limiter threshold, ceiling (and the
+    // pressure headroom under it) and the flutter's peaking filter; release at once.
+    void set_live(const Settings& settings, int glide_samples) noexcept;
+    void glide_flattening(const FlatteningFilter::Design& design, int glide_samples) noexcept {
+        flatten_.glide_to(design, glide_samples);
+    }
     // The carrier alone (flutter and pressure off).
     void process(float* samples, int count) noexcept { process(samples, nullptr, nullptr, count); }
     // carrier: in place, becomes the output. flutter (filtered in place) and pressure may be
@@ -57,7 +66,9 @@ class PostChain {
     PeakLimiter limiter_;
     Biquad flutter_peak_;
     bool flutter_on_ = false, flutter_peak_on_ = false, pressure_on_ = false;
-    double ceiling_ = 1.0;
+    double sample_rate_hz_ = 48000, low_hz_ = 30, high_hz_ = 1000;
+    double max_drive_ = 1.0;  // the actuator's, 1 without one
+    double ceiling_ = 1.0, clip_ceiling_ = 1.0;  // clip_ceiling_: the higher during a glide
     int64_t clipped_ = 0;
 };
 
