@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -48,18 +50,28 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (size > 0 && std::fwrite(data, 1, size, file) != size) std::abort();
     std::fclose(file);
 
-    static tactus::Engine engine;
-    if (engine.sample_rate_hz() == 0) engine.prepare(44100, kBlock);
-    engine.reset();
+    // One engine per channel count, prepared once: the engine downmixes.
+    static std::map<int, std::unique_ptr<tactus::Engine>> engines;
     try {
         tactus::AudioReader reader(path);
-        float in[kBlock], out[kBlock];
-        while (const int got = reader.read(in, kBlock)) {
-            engine.process(in, out, got);
+        std::unique_ptr<tactus::Engine>& engine = engines[reader.channels()];
+        if (!engine) {
+            engine = std::make_unique<tactus::Engine>();
+            engine->prepare(
+                {.sample_rate_hz = 44100, .max_block = kBlock, .input_channels = reader.channels()});
+        }
+        engine->reset();
+        tactus::ChannelBlock in(reader.channels(), kBlock);
+        float out[kBlock];
+        float* outs[] = {out};
+        while (const int got = reader.read(in.data(), kBlock)) {
+            engine->process(in.data(), outs, got);
             for (int i = 0; i < got; ++i)
                 if (!(std::abs(out[i]) <= 1.0f)) std::abort();
         }
     } catch (const std::runtime_error& e) {
+        tactus::fuzz::check_message(e.what());
+    } catch (const std::invalid_argument& e) {  // a channel count the engine does not take
         tactus::fuzz::check_message(e.what());
     }
     return 0;

@@ -139,7 +139,7 @@ void analyze(const AnalyzeOptions& o) {
     engine.set_observer(&writer);
     run_with_progress(
         o.input, engine, "analyze",
-        {.on_output = [&](const float* v, int n) { writer.vibration(v, n); },
+        {.on_output = [&](const float* const* v, int n) { writer.vibration(v[0], n); },
          .on_start = [&](double sample_rate_hz, int) { writer.start(sample_rate_hz); }});
     writer.finish();
     output.commit();

@@ -9,6 +9,7 @@
 #include "actuator_option.hpp"
 #include "commands.hpp"
 #include "common.hpp"
+#include "tactus/dsp/downmix.hpp"
 #include "tactus/io/text_output.hpp"
 
 namespace tactus::cli {
@@ -63,14 +64,21 @@ void meter(const MeterOptions& o) {
     };
     perception::SensationMeter meter;
     Progress progress("meter");
+    std::vector<float> mono;
+    int input_channels = 1;
     const RunSummary run = stream_file(
         o.input,
-        [&](double sample_rate_hz) {
+        [&](double sample_rate_hz, int channels) {
             meter.prepare(
                 sample_rate_hz, [&](double f) { return actuator.displacement_um_at(f); },
                 o.contact_area_cm2);
+            input_channels = channels;
+            mono.resize(kStreamBlockFrames);
         },
-        [&](const float* in, int frames) { meter.write(in, frames, on_reading); },
+        [&](const float* const* in, int frames) {  // the actuators' mean
+            downmix_mean(in, input_channels, 0, mono.data(), frames);
+            meter.write(mono.data(), frames, on_reading);
+        },
         with_progress(progress));
     meter.finish(on_reading);
     if (csv) csv->commit();

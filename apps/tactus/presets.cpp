@@ -11,15 +11,20 @@ namespace tactus::cli {
 namespace {
 
 void print_params() {
-    constexpr std::string_view kRow = "{:<36} {:>10} {:>10} {:>10} {:<4}  {}\n";
-    std::cout << fmt::format(kRow, "key", "default", "min", "max", "unit", "help");
+    constexpr std::string_view kRow = "{:>3} {:<36} {:<7} {:>10} {:>10} {:>10} {:<4} {:<10}  {}\n";
+    constexpr std::string_view kTypes[] = {"real", "integer", "toggle", "choice"};
+    std::cout << fmt::format(kRow, "id", "key", "type", "default", "min", "max", "unit", "change",
+                             "help");
     const Settings defaults;
-    for (size_t i = 0; i < param_table().size(); ++i) {
-        const ParamSpec& s = param_table()[i];
+    for (const ParamSpec& s : param_table()) {
         std::string range_min = fmt::format("{:g}", s.min), range_max = fmt::format("{:g}", s.max);
-        if (s.kind == ParamKind::choice) range_min = range_max = "";
-        std::cout << fmt::format(kRow, s.key, defaults.text_of(static_cast<P>(i)), range_min,
-                                 range_max, s.unit, s.help);
+        if (!s.choices.empty()) range_min = range_max = "";
+        const std::string change = s.change == ParamChange::structural ? "structural"
+                                   : s.smoothing_ms > 0 ? fmt::format("{:g} ms", s.smoothing_ms)
+                                                        : "live";
+        std::cout << fmt::format(kRow, s.id, s.key, kTypes[static_cast<int>(s.type)],
+                                 defaults.text_of(s.param), range_min, range_max, s.unit, change,
+                                 s.help);
     }
 }
 

@@ -81,13 +81,15 @@ std::string render_one(const Job& job, const Settings& settings,
                        const std::optional<ActuatorProfile>& actuator, int channels,
                        const std::function<void(int64_t done, int64_t total)>& on_progress) {
     Engine engine(settings);
-    engine.set_actuator(actuator);
+    engine.set_actuators(std::vector<ActuatorOutput>(static_cast<size_t>(channels),
+                                                     ActuatorOutput{.profile = actuator}));
     OnsetCounter counter;
     engine.set_observer(&counter);
     std::optional<AudioWriter> writer;  // opened at the input's sample rate
     float peak = 0.0f;
-    const auto write = [&](const float* v, int n) {
-        for (int i = 0; i < n; ++i) peak = std::max(peak, std::abs(v[i]));
+    const auto write = [&](const float* const* v, int n) {
+        for (int c = 0; c < channels; ++c)
+            for (int i = 0; i < n; ++i) peak = std::max(peak, std::abs(v[c][i]));
         writer->write(v, n);
     };
     const auto open = [&](double sample_rate_hz, int) {

@@ -41,10 +41,14 @@ class IoTest : public test::TempDirTest {
 TEST_F(IoTest, WriterCommitsAtomicallyAndReaderRoundTrips) {
     const fs::path path = dir_ / "out.wav";
     const std::vector<float> x = test::white_noise(10000, 1, 0.9);
+    std::vector<float> negated(x.size()), halved(x.size());
+    for (size_t i = 0; i < x.size(); ++i) negated[i] = -x[i], halved[i] = 0.5f * x[i];
     {
         AudioWriter writer(path, 44100, 3);
-        writer.write(x.data(), 4000);
-        writer.write(x.data() + 4000, 6000);
+        const float* first[] = {x.data(), negated.data(), halved.data()};
+        const float* rest[] = {x.data() + 4000, negated.data() + 4000, halved.data() + 4000};
+        writer.write(first, 4000);
+        writer.write(rest, 6000);
         EXPECT_FALSE(fs::exists(path)) << "visible before commit";
         EXPECT_TRUE(fs::exists(temporary_path_for(path)));
         writer.commit();
@@ -56,9 +60,14 @@ TEST_F(IoTest, WriterCommitsAtomicallyAndReaderRoundTrips) {
     EXPECT_EQ(reader.sample_rate_hz(), 44100);
     EXPECT_EQ(reader.channels(), 3);
     EXPECT_EQ(reader.frames(), 10000);
-    const std::vector<float> mono = read_all(path);  // the average of three identical channels
+    ChannelBlock block(3, 10000);  // each channel as written, bit for bit
+    ASSERT_EQ(reader.read(block.data(), 10000), 10000);
+    EXPECT_TRUE(std::equal(x.begin(), x.end(), block[0]));
+    EXPECT_TRUE(std::equal(negated.begin(), negated.end(), block[1]));
+    EXPECT_TRUE(std::equal(halved.begin(), halved.end(), block[2]));
+    const std::vector<float> mono = read_all(path);  // their mean
     ASSERT_EQ(mono.size(), x.size());
-    for (size_t i = 0; i < x.size(); ++i) ASSERT_FLOAT_EQ(mono[i], x[i]) << i;
+    for (size_t i = 0; i < x.size(); ++i) ASSERT_NEAR(mono[i], halved[i] / 3.0f, 1e-7) << i;
 }
 
 TEST_F(IoTest, UncommittedWriterLeavesNothing) {
@@ -170,7 +179,8 @@ TEST_F(IoTest, ReaderRefusesATruncatedWavAndAnEmptyFile) {
     {
         AudioWriter writer(whole, 48000, 2);
         const auto x = test::white_noise(48000, 3, 0.5);
-        writer.write(x.data(), static_cast<int>(x.size()));
+        const float* channels[] = {x.data(), x.data()};
+        writer.write(channels, static_cast<int>(x.size()));
         writer.commit();
     }
     const fs::path cut = dir_ / "cut.wav";

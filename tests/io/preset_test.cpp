@@ -178,7 +178,7 @@ void expect_loaded(const Settings& s, const toml::table& table, const std::strin
         if (key == "description" || key == "name") continue;
         const auto id = find_param(key);
         ASSERT_TRUE(id.has_value()) << key;
-        if (spec(*id).kind == ParamKind::choice) {
+        if (!spec(*id).choices.empty()) {
             EXPECT_EQ(s.text_of(*id), node.value<std::string>().value_or("?")) << key;
         } else {
             EXPECT_EQ(s[*id], node.value<double>().value_or(-1e300)) << key;

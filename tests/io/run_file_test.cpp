@@ -46,7 +46,7 @@ TEST_F(RunFileTest, OutputMatchesTheEngineAndProgressReachesTheEnd) {
     int reports = 0;
     const RunSummary summary =
         run_file(path, engine,
-                 {[&](const float* v, int n) { streamed.insert(streamed.end(), v, v + n); },
+                 {[&](const float* const* v, int n) { streamed.insert(streamed.end(), v[0], v[0] + n); },
                   [&](int64_t done, int64_t total) {
                       EXPECT_GE(done, last_done);
                       last_done = done, last_total = total;

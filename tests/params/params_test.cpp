@@ -45,7 +45,7 @@ TEST(Params, TableIsCompleteAndDefaultsAreInRange) {
         EXPECT_EQ(&spec(id), &table[i]);
         ASSERT_TRUE(find_param(s.key).has_value()) << s.key;
         EXPECT_EQ(*find_param(s.key), id);
-        if (s.kind == ParamKind::choice) {
+        if (!s.choices.empty()) {
             EXPECT_FALSE(s.choices.empty()) << s.key;
             EXPECT_EQ(s.max, static_cast<double>(s.choices.size() - 1)) << s.key;
             EXPECT_EQ(defaults[id], std::round(defaults[id])) << s.key;

@@ -41,6 +41,8 @@ struct ActuatorProfile {
     std::vector<std::pair<double, double>> points;  // (Hz, dB), increasing Hz
     double erm_min_drive_hz = 0.0, erm_max_drive_hz = 0.0;
 
+    bool operator==(const ActuatorProfile&) const = default;
+
     // Displacement response relative to reference_hz, dB (-inf at DC without DC capability).
     double response_db(double frequency_hz) const;
     // Peak displacement (um) of a full-scale sine at a frequency.

@@ -1,5 +1,7 @@
 #include "tactus/io/audio_reader.hpp"
 
+#include "tactus/dsp/downmix.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -61,14 +63,14 @@ AudioReader::~AudioReader() {
     if (file_) sf_close(file_);
 }
 
-int AudioReader::read(float* mono, int max_frames) {
+int AudioReader::read(float* const* out, int max_frames) {
     const int channels = info_.channels;
     const auto samples = static_cast<size_t>(max_frames) * channels;
     // 16-bit PCM is read as integers and scaled here: libsndfile's own conversion to float
     // costs more than the whole WAV read.
     const bool pcm16 = (info_.format & SF_FORMAT_SUBMASK) == SF_FORMAT_PCM_16 &&
                        (info_.format & SF_FORMAT_TYPEMASK) != SF_FORMAT_FLAC;
-    float* destination = mono;
+    float* destination = out[0];
     if (channels > 1) {
         interleaved_.resize(samples);
         destination = interleaved_.data();
@@ -96,26 +98,27 @@ int AudioReader::read(float* mono, int max_frames) {
         throw std::runtime_error(fmt::format(
             "{}: truncated or corrupt: the header announces {} frames, only {} could be decoded",
             path_.string(), info_.frames, frames_read_));
-    if (channels == 2) {  // the common case, in a loop that vectorises
-        for (sf_count_t i = 0; i < got; ++i)
-            mono[i] = (interleaved_[2 * i] + interleaved_[2 * i + 1]) * 0.5f;
-    } else if (channels > 2) {
-        const float scale = 1.0f / static_cast<float>(channels);
-        for (sf_count_t i = 0; i < got; ++i) {
-            float sum = 0.0f;
-            for (int c = 0; c < channels; ++c) sum += interleaved_[i * channels + c];
-            mono[i] = sum * scale;
-        }
-    }
+    if (channels > 1)
+        for (int c = 0; c < channels; ++c)
+            for (sf_count_t i = 0; i < got; ++i) out[c][i] = interleaved_[i * channels + c];
     return static_cast<int>(got);
+}
+
+ChannelBlock::ChannelBlock(int channels, int frames)
+    : samples_(static_cast<size_t>(channels) * frames), pointers_(static_cast<size_t>(channels)) {
+    for (int c = 0; c < channels; ++c) pointers_[c] = samples_.data() + static_cast<size_t>(c) * frames;
 }
 
 MonoAudio read_mono(const std::filesystem::path& path) {
     AudioReader reader(path);
     MonoAudio audio{{}, reader.sample_rate_hz()};
-    std::vector<float> block(4096);
-    while (const int got = reader.read(block.data(), static_cast<int>(block.size())))
-        audio.samples.insert(audio.samples.end(), block.begin(), block.begin() + got);
+    constexpr int kBlock = 4096;
+    ChannelBlock block(reader.channels(), kBlock);
+    std::vector<float> mono(kBlock);
+    while (const int got = reader.read(block.data(), kBlock)) {
+        downmix_mean(block.data(), reader.channels(), 0, mono.data(), got);
+        audio.samples.insert(audio.samples.end(), mono.begin(), mono.begin() + got);
+    }
     return audio;
 }
 

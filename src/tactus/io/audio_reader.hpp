@@ -1,5 +1,5 @@
-// Streams any file libsndfile reads (WAV, AIFF, FLAC, OGG, MP3, ...) as mono float blocks:
-// channels are averaged. Constant memory whatever the length.
+// Streams any file libsndfile reads (WAV, AIFF, FLAC, OGG, MP3, ...) as float blocks, one
+// buffer per channel (the engine downmixes). Constant memory whatever the length.
 #pragma once
 
 #include <sndfile.h>
@@ -21,9 +21,10 @@ class AudioReader {
     double sample_rate_hz() const { return info_.samplerate; }
     int channels() const { return info_.channels; }
     int64_t frames() const { return info_.frames; }  // may be unknown (<= 0) for some formats
-    // Reads up to `max_frames` mono frames; returns how many (0 at the end). Throws
-    // std::runtime_error for undecodable data or a stream that ends before its header says.
-    int read(float* mono, int max_frames);
+    // Reads up to `max_frames` frames into channels()[c][0 ... max_frames); returns how many
+    // (0 at the end). Throws std::runtime_error for undecodable data or a stream that ends
+    // before its header says.
+    int read(float* const* channels, int max_frames);
 
   private:
     std::filesystem::path path_;
@@ -34,7 +35,22 @@ class AudioReader {
     int64_t frames_read_ = 0;
 };
 
-// A whole file as mono samples, for tools and tests; streaming code uses AudioReader.
+// Buffers for `channels` channels of `frames` samples, as AudioReader::read and
+// Engine::process take them.
+class ChannelBlock {
+  public:
+    ChannelBlock(int channels, int frames);
+    float* const* data() { return pointers_.data(); }
+    const float* const* data() const { return pointers_.data(); }
+    float* operator[](int channel) { return pointers_[static_cast<size_t>(channel)]; }
+
+  private:
+    std::vector<float> samples_;
+    std::vector<float*> pointers_;
+};
+
+// A whole file as mono samples (the channels' mean), for tools and tests; streaming code uses
+// AudioReader.
 struct MonoAudio {
     std::vector<float> samples;
     double sample_rate_hz = 0;

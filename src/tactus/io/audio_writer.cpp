@@ -30,12 +30,12 @@ AudioWriter::~AudioWriter() {
     }
 }
 
-void AudioWriter::write(const float* mono, int frames) {
-    const float* data = mono;
+void AudioWriter::write(const float* const* channels, int frames) {
+    const float* data = channels[0];
     if (channels_ > 1) {
         interleaved_.resize(static_cast<size_t>(frames) * channels_);
-        for (int i = 0; i < frames; ++i)
-            for (int c = 0; c < channels_; ++c) interleaved_[i * channels_ + c] = mono[i];
+        for (int c = 0; c < channels_; ++c)
+            for (int i = 0; i < frames; ++i) interleaved_[i * channels_ + c] = channels[c][i];
         data = interleaved_.data();
     }
     if (sf_writef_float(file_, data, frames) != frames)

@@ -1,5 +1,4 @@
-// Writes a float WAV with N identical channels (the paper drives every tonehole with one
-// signal), atomically: audio goes to a temporary file in the target directory, renamed over the
+// Writes a float WAV with N channels, atomically: audio goes to a temporary file in the target directory, renamed over the
 // target only by commit(). Destroying an uncommitted writer deletes the temporary file, so a
 // failed run leaves nothing behind.
 #pragma once
@@ -18,7 +17,10 @@ class AudioWriter {
     AudioWriter(const AudioWriter&) = delete;
     AudioWriter& operator=(const AudioWriter&) = delete;
 
-    void write(const float* mono, int frames);
+    // channels[c][0 ... frames) for every channel.
+    void write(const float* const* channels, int frames);
+    // One channel (a writer opened with 1 channel).
+    void write(const float* mono, int frames) { write(&mono, frames); }
     void commit();
 
   private:

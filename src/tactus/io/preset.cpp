@@ -42,7 +42,9 @@ void apply_node(Settings& settings, const std::string& key, const toml::node& no
                                              nearest_param(key)));
     const ParamSpec& s = spec(*id);
     try {
-        if (s.kind == ParamKind::choice) {
+        if (s.type == ParamType::toggle && node.is_boolean()) {
+            settings.set(*id, *node.value<bool>() ? 1.0 : 0.0);
+        } else if (!s.choices.empty()) {
             if (!node.is_string())
                 throw std::invalid_argument(fmt::format("{} must be a name in quotes", key));
             settings.set_from_text(*id, *node.value<std::string>());

@@ -2,31 +2,31 @@
 
 #include <fmt/format.h>
 
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
 #include "tactus/dsp/denormals.hpp"
+#include "tactus/dsp/downmix.hpp"
 #include "tactus/io/audio_reader.hpp"
 
 namespace tactus {
 namespace {
-
-constexpr int kBlock = Engine::kMaxBlock;  // large reads: fewer system calls
-
+constexpr int kBlock = kStreamBlockFrames;
 }  // namespace
 
 RunSummary stream_file(const std::filesystem::path& input,
-                       const std::function<void(double sample_rate_hz)>& prepare,
-                       const std::function<void(const float* in, int frames)>& process,
+                       const std::function<void(double sample_rate_hz, int channels)>& prepare,
+                       const std::function<void(const float* const* channels, int frames)>& process,
                        const RunCallbacks& callbacks) {
     AudioReader reader(input);
     try {
-        prepare(reader.sample_rate_hz());
+        prepare(reader.sample_rate_hz(), reader.channels());
     } catch (const std::invalid_argument& e) {
         throw std::runtime_error(fmt::format("{}: {}", input.string(), e.what()));
     }
     if (callbacks.on_start) callbacks.on_start(reader.sample_rate_hz(), reader.channels());
-    std::vector<float> in(kBlock);
+    ChannelBlock in(reader.channels(), kBlock);
     RunSummary summary{reader.sample_rate_hz(), reader.channels(), 0};
     const int64_t report_every = std::max<int64_t>(kBlock, reader.frames() / 100);
     int64_t next_report = 0;
@@ -48,12 +48,18 @@ RunSummary stream_file(const std::filesystem::path& input,
 
 RunSummary run_file(const std::filesystem::path& input, Engine& engine,
                     const RunCallbacks& callbacks) {
-    std::vector<float> out(kBlock);
+    std::optional<ChannelBlock> out;
     return stream_file(
-        input, [&](double sample_rate_hz) { engine.prepare(sample_rate_hz, kBlock); },
-        [&](const float* in, int frames) {
-            engine.process(in, out.data(), frames);
-            if (callbacks.on_output) callbacks.on_output(out.data(), frames);
+        input,
+        [&](double sample_rate_hz, int channels) {
+            engine.prepare({.sample_rate_hz = sample_rate_hz,
+                            .max_block = kBlock,
+                            .input_channels = channels});
+            out.emplace(engine.actuators(), kBlock);
+        },
+        [&](const float* const* in, int frames) {
+            engine.process(in, out->data(), frames);
+            if (callbacks.on_output) callbacks.on_output(out->data(), frames);
         },
         callbacks);
 }
@@ -62,15 +68,23 @@ RunSummary analyse_file(const std::filesystem::path& input, Analyzer& analyzer,
                         const Settings& settings, FeatureSet features,
                         const std::function<void(const Features&)>& on_frame,
                         const RunCallbacks& callbacks) {
+    std::vector<float> mono(kBlock);
+    int input_channels = 1;
     return stream_file(
         input,
-        [&](double sample_rate_hz) {
+        [&](double sample_rate_hz, int channels) {
             Engine::check_sample_rate(sample_rate_hz);
             analyzer.prepare(sample_rate_hz, settings);
             analyzer.set_features(features);
+            input_channels = channels;
         },
-        [&](const float* in, int frames) {
+        [&](const float* const* channels, int frames) {
             const ScopedFlushDenormals no_denormals;  // as in Engine::process
+            const float* in = channels[0];
+            if (input_channels > 1) {  // the engine's default downmix
+                downmix_mean(channels, input_channels, 0, mono.data(), frames);
+                in = mono.data();
+            }
             for (int done = 0; done < frames;) {
                 const int chunk = std::min(frames - done, analyzer.samples_to_next_frame());
                 if (analyzer.write(in + done, chunk)) on_frame(analyzer.analyse());

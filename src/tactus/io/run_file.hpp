@@ -10,9 +10,13 @@
 
 namespace tactus {
 
+// Frames stream_file reads and hands on at a time (large reads: fewer system calls).
+inline constexpr int kStreamBlockFrames = Engine::kMaxBlock;
+
 struct RunCallbacks {
-    // Each block of vibration as it is produced (may be empty; run_file only).
-    std::function<void(const float* vibration, int frames)> on_output{};
+    // Each block of vibration as it is produced, one buffer per actuator (may be empty;
+    // run_file only).
+    std::function<void(const float* const* vibration, int frames)> on_output{};
     // Frames done and the total (total <= 0 when unknown), about every 1 % of the file.
     std::function<void(int64_t done, int64_t total)> on_progress{};
     // Once the file is open and the engine or analyzer prepared, before any audio (may be
@@ -26,21 +30,23 @@ struct RunSummary {
     int64_t frames = 0;
 };
 
-// Opens `input`, calls prepare(its sample rate) (an std::invalid_argument becomes a
-// std::runtime_error naming the file), then process(block, frames) for every block to the end;
-// a file without frames is an error. The driver under run_file and analyse_file.
-RunSummary stream_file(const std::filesystem::path& input,
-                       const std::function<void(double sample_rate_hz)>& prepare,
-                       const std::function<void(const float* in, int frames)>& process,
-                       const RunCallbacks& callbacks = {});
+// Opens `input`, calls prepare(its sample rate, its channel count) (an std::invalid_argument
+// becomes a std::runtime_error naming the file), then process(channels, frames) for every block
+// to the end; a file without frames is an error. The driver under run_file and analyse_file.
+RunSummary stream_file(
+    const std::filesystem::path& input,
+    const std::function<void(double sample_rate_hz, int channels)>& prepare,
+    const std::function<void(const float* const* channels, int frames)>& process,
+    const RunCallbacks& callbacks = {});
 
-// Opens `input`, prepares `engine` at the file's sample rate, runs it to the end.
+// Opens `input`, prepares `engine` at the file's sample rate and channel count (the engine
+// downmixes), runs it to the end.
 RunSummary run_file(const std::filesystem::path& input, Engine& engine,
                     const RunCallbacks& callbacks = {});
 
 // Opens `input`, prepares `analyzer` at the file's sample rate with `settings` and computes
-// `features` (and the onsets), and calls on_frame for every analysis frame: the features of
-// run_file's engine without its synthesis.
+// `features` (and the onsets) of the channels' mean, and calls on_frame for every analysis
+// frame: the features of run_file's engine without its synthesis.
 RunSummary analyse_file(const std::filesystem::path& input, Analyzer& analyzer,
                         const Settings& settings, FeatureSet features,
                         const std::function<void(const Features&)>& on_frame,

@@ -14,7 +14,8 @@
 namespace tactus {
 namespace {
 
-using enum ParamKind;
+using enum ParamType;
+using enum ParamChange;
 using enum ParamCurve;
 
 constexpr std::span<const std::string_view> kSources{kFeatureSourceNames};
@@ -29,144 +30,186 @@ constexpr double kNpiHighHz = perception::info(perception::Channel::NPI).range_h
 constexpr double kNpiLowHz = perception::info(perception::Channel::NPI).range_low_hz;
 
 // clang-format off
-const ParamSpec kTable[] = {
+constexpr ParamSpec kTable[] = {
     // Analysis (paper §6, Figure 4: feature extraction).
-    {"analysis.window_ms", "ms", number, 5, 100, 23.2, log,
+    {P::analysis_window_ms, 1, "analysis.window_ms", "ms", real, 5, 100, 23.2, log, structural, 0,
      "STFT window for brightness, noisiness (nearest power of two in samples)"},
-    {"analysis.hop_ms", "ms", number, 0.5, 20, 2.9, log,
+    {P::analysis_hop_ms, 2, "analysis.hop_ms", "ms", real, 0.5, 20, 2.9, log, structural, 0,
      "time between analysis frames; control rate of the vibration program"},
-    {"loudness.window_ms", "ms", number, 2, 400, 10, log,
+    {P::loudness_window_ms, 3, "loudness.window_ms", "ms", real, 2, 400, 10, log, structural, 0,
      "integration window of the K-weighted loudness (ITU-R BS.1770 filter, short window)"},
-    {"pitch.min_hz", "Hz", number, 30, 1000, 50, log, "lowest f0 the pitch tracker reports"},
-    {"pitch.max_hz", "Hz", number, 100, 4000, 1500, log, "highest f0 the pitch tracker reports"},
-    {"pitch.threshold", "", number, 0.01, 0.5, 0.15, lin,
+    {P::pitch_min_hz, 4, "pitch.min_hz", "Hz", real, 30, 1000, 50, log, structural, 0,
+     "lowest f0 the pitch tracker reports"},
+    {P::pitch_max_hz, 5, "pitch.max_hz", "Hz", real, 100, 4000, 1500, log, structural, 0,
+     "highest f0 the pitch tracker reports"},
+    {P::pitch_threshold, 6, "pitch.threshold", "", real, 0.01, 0.5, 0.15, lin, live, 0,
      "YIN absolute threshold on the cumulative-mean-normalised difference"},
-    {"onset.window_ms", "ms", number, 2, 50, 5.8, log,
+    {P::onset_window_ms, 7, "onset.window_ms", "ms", real, 2, 50, 5.8, log, structural, 0,
      "STFT window of the onset detection function (short, for low latency; nearest power of two)"},
-    {"onset.threshold", "", number, 0, 100, 10, lin,
+    {P::onset_threshold, 8, "onset.threshold", "", real, 0, 100, 10, lin, live, 0,
      "fixed part of the adaptive threshold on the log spectral flux"},
-    {"onset.ratio", "", number, 0, 10, 1.25, lin,
+    {P::onset_ratio, 9, "onset.ratio", "", real, 0, 10, 1.25, lin, live, 0,
      "multiple of the recent mean flux the flux must exceed to be an onset"},
-    {"onset.history_ms", "ms", number, 10, 2000, 60, log,
+    {P::onset_history_ms, 10, "onset.history_ms", "ms", real, 10, 2000, 60, log, structural, 0,
      "length of the flux history the adaptive threshold averages"},
-    {"onset.min_interval_ms", "ms", number, 5, 500, 50, log,
+    {P::onset_min_interval_ms, 11, "onset.min_interval_ms", "ms", real, 5, 500, 50, log, live, 0,
      "shortest time between two onsets"},
     // Mapping (paper §6): features -> the vibration program.
-    {"mapping.gate_db", "dB", number, -120, 0, -70, lin,
+    {P::mapping_gate_db, 12, "mapping.gate_db", "dB", real, -120, 0, -70, lin, live, 20,
      "below this loudness the vibration is silent and mapped parameters hold"},
-    {"mapping.amplitude.source", "", choice, 0, kLastSource, 0, lin,
+    {P::amplitude_source, 13, "mapping.amplitude.source", "", choice, 0, kLastSource, 0, lin, live, 0,
      "feature mapped to vibration amplitude", kSources},
-    {"mapping.amplitude.in_min", "", number, -1e6, 1e6, -60, lin, "source value mapped to out_min"},
-    {"mapping.amplitude.in_max", "", number, -1e6, 1e6, 0, lin, "source value mapped to out_max"},
-    {"mapping.amplitude.out_min", "", number, 0, 1, 0.03, lin, "amplitude at in_min (full scale 1)"},
-    {"mapping.amplitude.out_max", "", number, 0, 1, 1, lin, "amplitude at in_max (full scale 1)"},
-    {"mapping.amplitude.curve", "", choice, 0, kLastCurve, 2, lin,
+    {P::amplitude_in_min, 14, "mapping.amplitude.in_min", "", real, -1e6, 1e6, -60, lin, live, 20,
+     "source value mapped to out_min"},
+    {P::amplitude_in_max, 15, "mapping.amplitude.in_max", "", real, -1e6, 1e6, 0, lin, live, 20,
+     "source value mapped to out_max"},
+    {P::amplitude_out_min, 16, "mapping.amplitude.out_min", "", real, 0, 1, 0.03, lin, live, 20,
+     "amplitude at in_min (full scale 1)"},
+    {P::amplitude_out_max, 17, "mapping.amplitude.out_max", "", real, 0, 1, 1, lin, live, 20,
+     "amplitude at in_max (full scale 1)"},
+    {P::amplitude_curve, 18, "mapping.amplitude.curve", "", choice, 0, kLastCurve, 2, lin, live, 0,
      "lin, log (ratio to ratio) or exp (dB to amplitude)", kCurves},
-    {"mapping.amplitude.smoothing_ms", "ms", number, 0, 1000, 0, lin,
+    {P::amplitude_smoothing_ms, 19, "mapping.amplitude.smoothing_ms", "ms", real, 0, 1000, 0, lin, live, 0,
      "one-pole time constant applied to the mapped amplitude"},
-    {"mapping.frequency.source", "", choice, 0, kLastSource, 1, lin,
+    {P::frequency_source, 20, "mapping.frequency.source", "", choice, 0, kLastSource, 1, lin, live, 0,
      "feature mapped to vibration frequency", kSources},
-    {"mapping.frequency.in_min", "", number, -1e6, 1e6, 70, lin, "source value mapped to out_min"},
-    {"mapping.frequency.in_max", "", number, -1e6, 1e6, 2000, lin, "source value mapped to out_max"},
-    {"mapping.frequency.out_min", "Hz", number, 1, 1000, 40, log, "vibration frequency at in_min"},
-    {"mapping.frequency.out_max", "Hz", number, 1, 1000, 400, log, "vibration frequency at in_max"},
-    {"mapping.frequency.curve", "", choice, 0, kLastCurve, 1, lin,
+    {P::frequency_in_min, 21, "mapping.frequency.in_min", "", real, -1e6, 1e6, 70, lin, live, 20,
+     "source value mapped to out_min"},
+    {P::frequency_in_max, 22, "mapping.frequency.in_max", "", real, -1e6, 1e6, 2000, lin, live, 20,
+     "source value mapped to out_max"},
+    {P::frequency_out_min, 23, "mapping.frequency.out_min", "Hz", real, 1, 1000, 40, log, live, 20,
+     "vibration frequency at in_min"},
+    {P::frequency_out_max, 24, "mapping.frequency.out_max", "Hz", real, 1, 1000, 400, log, live, 20,
+     "vibration frequency at in_max"},
+    {P::frequency_curve, 25, "mapping.frequency.curve", "", choice, 0, kLastCurve, 1, lin, live, 0,
      "lin, log (ratio to ratio) or exp (dB to amplitude)", kCurves},
-    {"mapping.frequency.smoothing_ms", "ms", number, 0, 1000, 5, lin,
+    {P::frequency_smoothing_ms, 26, "mapping.frequency.smoothing_ms", "ms", real, 0, 1000, 5, lin, live, 0,
      "one-pole time constant applied to the mapped frequency"},
-    {"mapping.square_mix.source", "", choice, 0, kLastSource, 3, lin,
+    {P::square_mix_source, 27, "mapping.square_mix.source", "", choice, 0, kLastSource, 3, lin, live, 0,
      "feature mapped to the sine (0) / square (1) mix", kSources},
-    {"mapping.square_mix.in_min", "", number, -1e6, 1e6, 0.3, lin, "source value mapped to out_min"},
-    {"mapping.square_mix.in_max", "", number, -1e6, 1e6, 0.9, lin, "source value mapped to out_max"},
-    {"mapping.square_mix.out_min", "", number, 0, 1, 0, lin, "square mix at in_min"},
-    {"mapping.square_mix.out_max", "", number, 0, 1, 1, lin, "square mix at in_max"},
-    {"mapping.square_mix.curve", "", choice, 0, kLastCurve, 0, lin,
+    {P::square_mix_in_min, 28, "mapping.square_mix.in_min", "", real, -1e6, 1e6, 0.3, lin, live, 20,
+     "source value mapped to out_min"},
+    {P::square_mix_in_max, 29, "mapping.square_mix.in_max", "", real, -1e6, 1e6, 0.9, lin, live, 20,
+     "source value mapped to out_max"},
+    {P::square_mix_out_min, 30, "mapping.square_mix.out_min", "", real, 0, 1, 0, lin, live, 20,
+     "square mix at in_min"},
+    {P::square_mix_out_max, 31, "mapping.square_mix.out_max", "", real, 0, 1, 1, lin, live, 20,
+     "square mix at in_max"},
+    {P::square_mix_curve, 32, "mapping.square_mix.curve", "", choice, 0, kLastCurve, 0, lin, live, 0,
      "lin, log (ratio to ratio) or exp (dB to amplitude)", kCurves},
-    {"mapping.square_mix.smoothing_ms", "ms", number, 0, 1000, 20, lin,
+    {P::square_mix_smoothing_ms, 33, "mapping.square_mix.smoothing_ms", "ms", real, 0, 1000, 20, lin, live, 0,
      "one-pole time constant applied to the mapped square mix"},
     // Synthesis: AD envelope retriggered by onsets (paper §6, bonk~ driving an envelope).
-    {"envelope.attack_ms", "ms", number, 0.1, 100, 1, log, "rise time from trigger to peak"},
-    {"envelope.decay_ms", "ms", number, 5, 5000, 150, log,
+    {P::envelope_attack_ms, 34, "envelope.attack_ms", "ms", real, 0.1, 100, 1, log, live, 0,
+     "rise time from trigger to peak"},
+    {P::envelope_decay_ms, 35, "envelope.decay_ms", "ms", real, 5, 5000, 150, log, live, 0,
      "time from peak to -60 dB below it (towards the sustain level)"},
-    {"envelope.sustain", "", number, 0, 1, 0, lin,
+    {P::envelope_sustain, 36, "envelope.sustain", "", real, 0, 1, 0, lin, live, 0,
      "level the envelope decays to, so sustained sounds stay felt (0 = discrete pulses)"},
     // Synthesis: one component per further channel of touch (paper §5.2, §5.4). Off by default.
-    {"flutter.weight", "", number, 0, 1, 0, lin,
+    {P::flutter_weight, 37, "flutter.weight", "", real, 0, 1, 0, lin, live, 20,
      "NPI flutter (2-40 Hz) level at mapped level 1, full scale (0 = off; paper 5.2)"},
-    {"flutter.equalize", "", choice, 0, 1, 0, lin,
+    {P::flutter_equalize, 38, "flutter.equalize", "", toggle, 0, 1, 0, lin, live, 0,
      "scale the flutter by the P/NPI innervation ratio 21/140 (-16.5 dB) so both channels are "
      "engaged about equally loudly (paper 5.2)", kSwitch},
-    {"mapping.flutter_level.source", "", choice, 0, kLastSource, 0, lin,
+    {P::flutter_level_source, 39, "mapping.flutter_level.source", "", choice, 0, kLastSource, 0, lin, live, 0,
      "feature mapped to the flutter level", kSources},
-    {"mapping.flutter_level.in_min", "", number, -1e6, 1e6, -60, lin, "source value mapped to out_min"},
-    {"mapping.flutter_level.in_max", "", number, -1e6, 1e6, 0, lin, "source value mapped to out_max"},
-    {"mapping.flutter_level.out_min", "", number, 0, 1, 0.03, lin, "flutter level at in_min (0 ... 1)"},
-    {"mapping.flutter_level.out_max", "", number, 0, 1, 1, lin, "flutter level at in_max (0 ... 1)"},
-    {"mapping.flutter_level.curve", "", choice, 0, kLastCurve, 2, lin,
+    {P::flutter_level_in_min, 40, "mapping.flutter_level.in_min", "", real, -1e6, 1e6, -60, lin, live, 20,
+     "source value mapped to out_min"},
+    {P::flutter_level_in_max, 41, "mapping.flutter_level.in_max", "", real, -1e6, 1e6, 0, lin, live, 20,
+     "source value mapped to out_max"},
+    {P::flutter_level_out_min, 42, "mapping.flutter_level.out_min", "", real, 0, 1, 0.03, lin, live, 20,
+     "flutter level at in_min (0 ... 1)"},
+    {P::flutter_level_out_max, 43, "mapping.flutter_level.out_max", "", real, 0, 1, 1, lin, live, 20,
+     "flutter level at in_max (0 ... 1)"},
+    {P::flutter_level_curve, 44, "mapping.flutter_level.curve", "", choice, 0, kLastCurve, 2, lin, live, 0,
      "lin, log (ratio to ratio) or exp (dB to amplitude)", kCurves},
-    {"mapping.flutter_level.smoothing_ms", "ms", number, 0, 1000, 40, lin,
+    {P::flutter_level_smoothing_ms, 45, "mapping.flutter_level.smoothing_ms", "ms", real, 0, 1000, 40, lin, live, 0,
      "one-pole time constant applied to the mapped flutter level"},
-    {"mapping.flutter_rate.source", "", choice, 0, kLastSource, 1, lin,
+    {P::flutter_rate_source, 46, "mapping.flutter_rate.source", "", choice, 0, kLastSource, 1, lin, live, 0,
      "feature mapped to the flutter rate", kSources},
-    {"mapping.flutter_rate.in_min", "", number, -1e6, 1e6, 100, lin, "source value mapped to out_min"},
-    {"mapping.flutter_rate.in_max", "", number, -1e6, 1e6, 6000, lin, "source value mapped to out_max"},
-    {"mapping.flutter_rate.out_min", "Hz", number, kNpiLowHz, kNpiHighHz, 8, log,
+    {P::flutter_rate_in_min, 47, "mapping.flutter_rate.in_min", "", real, -1e6, 1e6, 100, lin, live, 20,
+     "source value mapped to out_min"},
+    {P::flutter_rate_in_max, 48, "mapping.flutter_rate.in_max", "", real, -1e6, 1e6, 6000, lin, live, 20,
+     "source value mapped to out_max"},
+    {P::flutter_rate_out_min, 49, "mapping.flutter_rate.out_min", "Hz", real, kNpiLowHz, kNpiHighHz, 8, log, live, 20,
      "flutter rate at in_min (inside NPI's 2-40 Hz)"},
-    {"mapping.flutter_rate.out_max", "Hz", number, kNpiLowHz, kNpiHighHz, 30, log,
+    {P::flutter_rate_out_max, 50, "mapping.flutter_rate.out_max", "Hz", real, kNpiLowHz, kNpiHighHz, 30, log, live, 20,
      "flutter rate at in_max (inside NPI's 2-40 Hz)"},
-    {"mapping.flutter_rate.curve", "", choice, 0, kLastCurve, 1, lin,
+    {P::flutter_rate_curve, 51, "mapping.flutter_rate.curve", "", choice, 0, kLastCurve, 1, lin, live, 0,
      "lin, log (ratio to ratio) or exp (dB to amplitude)", kCurves},
-    {"mapping.flutter_rate.smoothing_ms", "ms", number, 0, 1000, 20, lin,
+    {P::flutter_rate_smoothing_ms, 52, "mapping.flutter_rate.smoothing_ms", "ms", real, 0, 1000, 20, lin, live, 0,
      "one-pole time constant applied to the mapped flutter rate"},
-    {"pressure.weight", "", number, 0, 0.5, 0, lin,
+    {P::pressure_weight, 53, "pressure.weight", "", real, 0, 0.5, 0, lin, live, 20,
      "NPIII pressure offset at mapped level 1, as a fraction of the output ceiling; the vibration "
      "gives up this much headroom (0 = off; needs actuator.dc; paper 5.4)"},
-    {"pressure.steps", "", number, 0, 8, 0, lin,
+    {P::pressure_steps, 54, "pressure.steps", "", integer, 0, 8, 0, lin, live, 0,
      "sustained pressure levels above 0, rounded (0 = continuous; paper 5.4 step functions)"},
-    {"mapping.pressure_level.source", "", choice, 0, kLastSource, 0, lin,
+    {P::pressure_level_source, 55, "mapping.pressure_level.source", "", choice, 0, kLastSource, 0, lin, live, 0,
      "feature mapped to the pressure level", kSources},
-    {"mapping.pressure_level.in_min", "", number, -1e6, 1e6, -60, lin, "source value mapped to out_min"},
-    {"mapping.pressure_level.in_max", "", number, -1e6, 1e6, 0, lin, "source value mapped to out_max"},
-    {"mapping.pressure_level.out_min", "", number, 0, 1, 0, lin, "pressure level at in_min (0 ... 1)"},
-    {"mapping.pressure_level.out_max", "", number, 0, 1, 1, lin, "pressure level at in_max (0 ... 1)"},
-    {"mapping.pressure_level.curve", "", choice, 0, kLastCurve, 0, lin,
+    {P::pressure_level_in_min, 56, "mapping.pressure_level.in_min", "", real, -1e6, 1e6, -60, lin, live, 20,
+     "source value mapped to out_min"},
+    {P::pressure_level_in_max, 57, "mapping.pressure_level.in_max", "", real, -1e6, 1e6, 0, lin, live, 20,
+     "source value mapped to out_max"},
+    {P::pressure_level_out_min, 58, "mapping.pressure_level.out_min", "", real, 0, 1, 0, lin, live, 20,
+     "pressure level at in_min (0 ... 1)"},
+    {P::pressure_level_out_max, 59, "mapping.pressure_level.out_max", "", real, 0, 1, 1, lin, live, 20,
+     "pressure level at in_max (0 ... 1)"},
+    {P::pressure_level_curve, 60, "mapping.pressure_level.curve", "", choice, 0, kLastCurve, 0, lin, live, 0,
      "lin, log (ratio to ratio) or exp (dB to amplitude)", kCurves},
-    {"mapping.pressure_level.smoothing_ms", "ms", number, 0, 5000, 300, lin,
+    {P::pressure_level_smoothing_ms, 61, "mapping.pressure_level.smoothing_ms", "ms", real, 0, 5000, 300, lin, live, 0,
      "one-pole time constant applied to the mapped pressure level"},
     // Actuator capabilities.
-    {"actuator.dc", "", choice, 0, 1, 0, lin,
+    {P::actuator_dc, 62, "actuator.dc", "", toggle, 0, 1, 0, lin, structural, 0,
      "the actuator holds a sustained offset (DC); without it the pressure component is silent "
      "(paper 5.4)", kSwitch},
     // Post-processing in the paper's order (§6).
-    {"post.band_low_hz", "Hz", number, 1, 200, 30, log, "lower edge of the vibrotactile band"},
-    {"post.band_high_hz", "Hz", number, 200, 2000, 1000, log,
+    {P::post_band_low_hz, 63, "post.band_low_hz", "Hz", real, 1, 200, 30, log, structural, 0,
+     "lower edge of the vibrotactile band"},
+    {P::post_band_high_hz, 64, "post.band_high_hz", "Hz", real, 200, 2000, 1000, log, structural, 0,
      "upper edge of the vibrotactile band; also the oscillator's harmonic limit"},
-    {"post.flutter_low_hz", "Hz", number, 0.5, 30, 1, log,
+    {P::post_flutter_low_hz, 65, "post.flutter_low_hz", "Hz", real, 0.5, 30, 1, log, structural, 0,
      "high-pass edge of the last band-limit when the flutter is on (NPI starts at 2 Hz)"},
-    {"post.flutter_peak_db", "dB", number, -12, 12, 0, lin,
+    {P::post_flutter_peak_db, 66, "post.flutter_peak_db", "dB", real, -12, 12, 0, lin, live, 20,
      "peaking filter at 30 Hz on the flutter, for NPI's notch (paper 5.2 note 4; 0 = none)"},
-    {"post.flatten_strength", "", number, 0, 1, 1, lin,
+    {P::post_flatten_strength, 67, "post.flatten_strength", "", real, 0, 1, 1, lin, live, 50,
      "fraction of the P-channel threshold curve the flattening filter compensates"},
-    {"post.flatten_range_db", "dB", number, 0, 40, 30, lin,
+    {P::post_flatten_range_db, 68, "post.flatten_range_db", "dB", real, 0, 40, 30, lin, live, 50,
      "largest level difference the flattening filter applies across the band"},
-    {"post.flatten_level_db", "dB", number, 0, 70, 0, lin,
+    {P::post_flatten_level_db, 69, "post.flatten_level_db", "dB", real, 0, 70, 0, lin, live, 50,
      "sensation level whose equal-sensation contour is flattened (0 = threshold curve; contours "
      "flatten as level rises)"},
-    {"post.drive_db", "dB", number, -40, 40, 12, lin, "gain into the peak limiter"},
-    {"post.limiter_threshold_db", "dB", number, -40, 0, -6, lin,
+    {P::post_drive_db, 70, "post.drive_db", "dB", real, -40, 40, 12, lin, live, 20,
+     "gain into the peak limiter"},
+    {P::post_limiter_threshold_db, 71, "post.limiter_threshold_db", "dB", real, -40, 0, -6, lin, live, 20,
      "level, relative to the ceiling, where the limiter's soft knee starts"},
-    {"post.ceiling_db", "dB", number, -40, 0, 0, lin,
+    {P::post_ceiling_db, 72, "post.ceiling_db", "dB", real, -40, 0, 0, lin, live, 20,
      "hard ceiling of the output peak, dB full scale"},
-    {"post.lookahead_ms", "ms", number, 0.1, 20, 1.5, log, "limiter look-ahead (adds latency)"},
-    {"post.release_ms", "ms", number, 1, 2000, 80, log, "limiter gain recovery time constant"},
+    {P::post_lookahead_ms, 73, "post.lookahead_ms", "ms", real, 0.1, 20, 1.5, log, structural, 0,
+     "limiter look-ahead (adds latency)"},
+    {P::post_release_ms, 74, "post.release_ms", "ms", real, 1, 2000, 80, log, live, 0,
+     "limiter gain recovery time constant"},
     // Perception model (perception.md): conditions the thresholds depend on.
-    {"perception.contact_area_cm2", "cm2", number, 0.005, 20, 2.9, log,
+    {P::perception_contact_area_cm2, 75, "perception.contact_area_cm2", "cm2", real, 0.005, 20, 2.9, log, live, 50,
      "skin contact area of the actuator (P channel spatial summation; 2.9 = reference curves)"},
 };
 // clang-format on
 
-static_assert(std::size(kTable) == static_cast<size_t>(P::count),
-              "one table row per parameter identifier");
+// Row i describes P(i), and no two rows share a stable id: checked at compile time, so the
+// table's order and the enum cannot drift apart.
+constexpr bool rows_in_enum_order() {
+    for (size_t i = 0; i < std::size(kTable); ++i)
+        if (kTable[i].param != static_cast<P>(i)) return false;
+    return std::size(kTable) == static_cast<size_t>(P::count);
+}
+static_assert(rows_in_enum_order(), "one table row per P, in P's order");
+constexpr bool ids_unique() {
+    for (size_t i = 0; i < std::size(kTable); ++i)
+        for (size_t j = i + 1; j < std::size(kTable); ++j)
+            if (kTable[i].id == kTable[j].id) return false;
+    return true;
+}
+static_assert(ids_unique(), "stable ids are unique");
 
 size_t edit_distance(std::string_view a, std::string_view b) {
     std::vector<size_t> row(b.size() + 1);
@@ -199,6 +242,12 @@ std::optional<P> find_param(std::string_view key) {
     return std::nullopt;
 }
 
+std::optional<P> find_param(uint32_t stable_id) {
+    for (const ParamSpec& s : kTable)
+        if (s.id == stable_id) return s.param;
+    return std::nullopt;
+}
+
 std::string nearest_param(std::string_view key) {
     // Edit distance costs length x length per key: a megabyte of typing must not hang the
     // suggestion, and past the longest key's length it cannot change much.
@@ -227,13 +276,13 @@ void Settings::set(P id, double value) {
         throw std::invalid_argument(
             fmt::format("{} = {} is out of range: allowed {}", s.key, value, range_text(s)));
     }
-    if (s.kind == ParamKind::choice) value = std::round(value);
+    if (s.type != ParamType::real) value = std::round(value);
     values_[static_cast<int>(id)] = value;
 }
 
 void Settings::set_from_text(P id, std::string_view text) {
     const ParamSpec& s = spec(id);
-    if (s.kind == ParamKind::choice) {
+    if (!s.choices.empty()) {
         for (size_t i = 0; i < s.choices.size(); ++i)
             if (s.choices[i] == text) return set(id, static_cast<double>(i));
         std::string allowed;
@@ -252,7 +301,7 @@ void Settings::set_from_text(P id, std::string_view text) {
 std::string Settings::text_of(P id) const {
     const ParamSpec& s = spec(id);
     const double v = (*this)[id];
-    if (s.kind == ParamKind::choice) return std::string(s.choices[static_cast<size_t>(v)]);
+    if (!s.choices.empty()) return std::string(s.choices[static_cast<size_t>(v)]);
     return fmt::format("{}", v);
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -11,19 +12,29 @@
 
 namespace tactus {
 
-enum class ParamKind { number, choice };
+enum class ParamType { real, integer, toggle, choice };  // the control a host shows
 enum class ParamCurve { lin, log };  // how a front end should lay the range out on a slider
+// live: set while audio runs (no allocation, no lock), gliding over smoothing_ms;
+// structural: the engine must be prepared again (buffer sizes, rates, routing).
+enum class ParamChange { live, structural };
+
+enum class P : int;
 
 struct ParamSpec {
+    P param;                // the row's identifier inside the library (table order)
+    uint32_t id;            // stable numeric id: hosts store automation and state by it; an id
+                            // is never renumbered or reused (param_ids.txt, checked by a test)
     std::string_view key;   // dotted name, as in presets: "mapping.frequency.out_max"
     std::string_view unit;  // "dB", "Hz", "ms", "" ...
-    ParamKind kind;
+    ParamType type;         // integer, toggle and choice values are whole numbers
     double min;
     double max;
     double default_value;
     ParamCurve curve;
+    ParamChange change;
+    double smoothing_ms;    // live: the time a change glides over (0: at once)
     std::string_view help;
-    std::span<const std::string_view> choices = {};  // for ParamKind::choice: value is the index
+    std::span<const std::string_view> choices = {};  // toggle, choice: the value is the index
 };
 
 // Features a mapping can read (analysis outputs), in the order of FeatureSource.
@@ -46,10 +57,10 @@ enum class FeatureSource {
 inline constexpr std::array<std::string_view, 3> kCurveNames = {"lin", "log", "exp"};
 enum class MappingCurve { lin, log, exp };
 
-// On/off settings (ParamKind::choice): the value is 0 (off) or 1 (on).
+// On/off settings (ParamType::toggle): the value is 0 (off) or 1 (on).
 inline constexpr std::array<std::string_view, 2> kSwitchNames = {"off", "on"};
 
-// Parameter identifiers, in table order.
+// Parameter identifiers inside the library, in table order (not stable: ParamSpec::id is).
 enum class P : int {
     analysis_window_ms,
     analysis_hop_ms,
@@ -100,6 +111,7 @@ enum class P : int {
 std::span<const ParamSpec> param_table();
 const ParamSpec& spec(P id);
 std::optional<P> find_param(std::string_view key);
+std::optional<P> find_param(uint32_t stable_id);
 // The known key closest to `key` (edit distance), for "did you mean" messages.
 std::string nearest_param(std::string_view key);
 
@@ -113,6 +125,8 @@ class Settings {
     double operator[](P id) const { return values_[static_cast<int>(id)]; }
     // Sets a value after checking its range; throws std::invalid_argument naming the key.
     void set(P id, double value);
+    // A value set() has accepted (on another thread, say): no check, never throws.
+    void assign(P id, double value) noexcept { values_[static_cast<int>(id)] = value; }
     // Parses "value" for a key: a number for numeric parameters, a name for choices.
     void set_from_text(P id, std::string_view text);
     std::string text_of(P id) const;

@@ -51,7 +51,7 @@ void PostChain::set_live(const Settings& s, int glide_samples) noexcept {
     flutter_peak_on_ = flutter_on_ && s[P::post_flutter_peak_db] != 0.0;
     flutter_peak_.set(BiquadCoefficients::peaking(kFlutterPeakHz, kFlutterPeakQ,
                                                   s[P::post_flutter_peak_db], sample_rate_hz_));
-    const double ceiling = std::min(db_to_gain(s[P::post_ceiling_db]), max_drive_);
+    const double ceiling = ceiling_for(s);
     clip_ceiling_ = glide_samples > 0 ? std::max(ceiling, ceiling_) : ceiling;
     ceiling_ = ceiling;
     const double pressure_headroom = pressure_on_ ? s[P::pressure_weight] * ceiling_ : 0.0;

@@ -19,9 +19,11 @@
 // paper's.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include "tactus/actuator/compensation.hpp"
+#include "tactus/core/units.hpp"
 #include "tactus/params/params.hpp"
 #include "tactus/post/band_limit.hpp"
 #include "tactus/post/flattening_filter.hpp"
@@ -45,6 +47,11 @@ class PostChain {
     // Live (audio thread), each over `glide_samples`: drive, limiter threshold, ceiling (and the
     // pressure headroom under it) and the flutter's peaking filter; release at once.
     void set_live(const Settings& settings, int glide_samples) noexcept;
+    // The output ceiling `settings` give this chain (post.ceiling_db, at most the actuator's
+    // max drive).
+    double ceiling_for(const Settings& settings) const noexcept {
+        return std::min(db_to_gain(settings[P::post_ceiling_db]), max_drive_);
+    }
     void glide_flattening(const FlatteningFilter::Design& design, int glide_samples) noexcept {
         flatten_.glide_to(design, glide_samples);
     }

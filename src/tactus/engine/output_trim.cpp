@@ -1,0 +1,56 @@
+#include "tactus/engine/output_trim.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "tactus/core/units.hpp"
+
+namespace tactus {
+
+void ActuatorOutput::check(int index) const {
+    if (!(gain_db >= kMinGainDb && gain_db <= 0))
+        throw std::invalid_argument(fmt::format("actuator {}: gain {} dB is outside {} to 0 dB",
+                                                index, gain_db, kMinGainDb));
+    if (!(delay_ms >= 0 && delay_ms <= kMaxDelayMs))
+        throw std::invalid_argument(fmt::format("actuator {}: delay {} ms is outside 0 to {} ms",
+                                                index, delay_ms, kMaxDelayMs));
+}
+
+void OutputTrim::prepare(double sample_rate_hz, const ActuatorOutput& output) {
+    glide_samples_ = std::max<int>(1, static_cast<int>(ms_to_samples(kGainGlideMs, sample_rate_hz)));
+    gain_target_ = db_to_gain(output.gain_db);
+    delay_.assign(static_cast<size_t>(ms_to_samples(output.delay_ms, sample_rate_hz)), 0.0f);
+    reset();
+}
+
+void OutputTrim::reset() noexcept {
+    gain_ = gain_target_;
+    gain_left_ = 0;
+    std::fill(delay_.begin(), delay_.end(), 0.0f);
+    slot_ = 0;
+}
+
+void OutputTrim::set_gain_db(double gain_db) noexcept {
+    gain_target_ = db_to_gain(gain_db);
+    gain_left_ = glide_samples_;
+    gain_step_ = (gain_target_ - gain_) / gain_left_;
+}
+
+void OutputTrim::process(float* samples, int count) noexcept {
+    if (gain_left_ > 0 || gain_ != 1.0) {
+        for (int i = 0; i < count; ++i) {
+            if (gain_left_ > 0) gain_ = --gain_left_ == 0 ? gain_target_ : gain_ + gain_step_;
+            samples[i] = static_cast<float>(samples[i] * gain_);
+        }
+    }
+    if (!delay_.empty()) {
+        for (int i = 0; i < count; ++i) {
+            std::swap(samples[i], delay_[slot_]);
+            if (++slot_ == delay_.size()) slot_ = 0;
+        }
+    }
+}
+
+}  // namespace tactus

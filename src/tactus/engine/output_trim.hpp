@@ -1,0 +1,43 @@
+// What each actuator output adds to its chain's signal: a trim gain (live, gliding over
+// kGainGlideMs, after the limiter: it can only lower the level, so the ceiling holds) and an
+// alignment delay (structural), e.g. to line up actuators at different distances from the
+// sound, or with a sound path that has its own latency.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "tactus/actuator/profile.hpp"
+
+namespace tactus {
+
+// What an actuator output is given (control thread, before prepare).
+struct ActuatorOutput {
+    std::optional<ActuatorProfile> profile;  // none: no compensation, the ceiling of the settings
+    double gain_db = 0;                      // trim after the limiter, kMinGainDb ... 0 (live)
+    double delay_ms = 0;                     // alignment, 0 ... kMaxDelayMs (structural)
+
+    static constexpr double kMinGainDb = -60;
+    static constexpr double kMaxDelayMs = 1000;
+    // Throws std::invalid_argument naming the actuator index and the value.
+    void check(int index) const;
+};
+
+class OutputTrim {
+  public:
+    static constexpr double kGainGlideMs = 20;
+
+    void prepare(double sample_rate_hz, const ActuatorOutput& output);  // may allocate
+    void reset() noexcept;
+    void set_gain_db(double gain_db) noexcept;  // audio thread
+    void process(float* samples, int count) noexcept;
+    int delay_samples() const { return static_cast<int>(delay_.size()); }
+
+  private:
+    double gain_ = 1, gain_target_ = 1, gain_step_ = 0;
+    int gain_left_ = 0, glide_samples_ = 1;
+    std::vector<float> delay_;  // ring of delay_samples()
+    size_t slot_ = 0;
+};
+
+}  // namespace tactus
