@@ -20,8 +20,10 @@
 #include <mutex>
 #include <new>
 #include <optional>
+#include <thread>
 #include <vector>
 
+#include "support/live_values.hpp"
 #include "support/signals.hpp"
 #include "tactus/io/preset.hpp"
 #include "tactus/engine/engine.hpp"
@@ -352,6 +354,58 @@ TEST(RealTime, FourChannelComponents) {
 TEST(RealTime, WithActuatorCompensation) {
     for (const char* name : {"voice-coil", "lra-175", "erm"})
         expect_process_is_real_time_safe(48000, Settings{}, load_actuator(resolve_actuator(name)));
+}
+
+// Every live parameter turned while audio runs, and an actuator's trim: the changes are set on
+// another thread between blocks (Engine::set may allocate there: a flattening design), and
+// process() picks each up without an allocation or a lock. Turning a component's weight from or
+// to 0 is structural (routing): weights are turned only between values above 0.
+void expect_live_changes_are_real_time_safe(const Settings& start, double fs) {
+    const std::vector<float> x = varied_input(fs);
+    std::vector<float> y(x.size());
+    Engine engine(start);
+    engine.set_actuators({ActuatorOutput{}, ActuatorOutput{.profile = {}, .gain_db = -3}});
+    engine.enable_frame_queue();
+    engine.prepare({.sample_rate_hz = fs, .max_block = 256});
+    std::vector<float> second(x.size());
+    const auto changes = test::turned_live_values(start);
+    reset_counts();
+    size_t done = 0, change = 0;
+    AnalysisFrame frame;
+    for (size_t b = 0; done < x.size(); ++b) {
+        const int count = static_cast<int>(std::min<size_t>(x.size() - done, 64 + b % 300));
+        if (b % 7 == 0) {  // a control thread turns the next parameter back and forth
+            std::thread control([&] {
+                const auto& [id, value] = changes[change++ % changes.size()];
+                if (spec(id).key.ends_with("weight") && (value == 0 || start[id] == 0)) return;
+                engine.set(id, change / changes.size() % 2 ? start[id] : value);
+                engine.set_actuator_gain_db(1, -static_cast<double>(b % 12));
+                if (b % 35 == 0) engine.trigger(120, 0.5);
+            });
+            control.join();
+        }
+        {
+            Guard guard;
+            float* outs[] = {y.data() + done, second.data() + done};
+            const float* in = x.data() + done;
+            engine.process(&in, outs, count);
+        }
+        while (engine.pop_frame(frame)) {}
+        done += static_cast<size_t>(count);
+    }
+    EXPECT_GE(change, 2 * changes.size()) << "every live parameter turned there and back";
+    EXPECT_EQ(g_allocator_calls.load(), 0) << "allocator calls inside process()";
+    EXPECT_EQ(g_mutex_locks.load(), 0) << "mutex locks inside process()";
+    EXPECT_GT(test::peak(y), 0.05) << "the input must exercise the whole pipeline";
+}
+
+TEST(RealTime, LiveParameterChanges) {
+    expect_live_changes_are_real_time_safe(Settings{}, 48000);
+    Settings four;
+    apply_preset_file(four,
+                      std::filesystem::path(TACTUS_SOURCE_DIR) / "presets" / "four-channel.toml");
+    four.set(P::actuator_dc, 1);
+    expect_live_changes_are_real_time_safe(four, 44100);
 }
 
 // The sensation meter is an offline tool, but after prepare() it does not allocate either.

@@ -307,8 +307,9 @@ void Engine::process_chunk(const float* const* in, float* const* out, int offset
         }
         done += chunk;
     }
-    if (post_dirty_) {
-        for (auto& chain : chains_) chain.set_live(live_.now(), rendered);
+    if (post_dirty_) {  // glides over an analysis frame: LiveSettings' steps join up
+        const int glide = std::max(rendered, hop_samples() / divisor);
+        for (auto& chain : chains_) chain.set_live(live_.now(), glide);
         for (auto& chain : chains_) chain.set_pressure_reference(chains_.front().post().ceiling());
         post_dirty_ = false;
     }

@@ -16,7 +16,7 @@ void LiveSettings::ask(P id, double value) noexcept {
     const auto i = static_cast<size_t>(id);
     const auto frames =
         static_cast<int>(std::ceil(spec(id).smoothing_ms * 1e-3 * frames_per_second_));
-    if (frames <= 1 || spec(id).type != ParamType::real) {
+    if (frames <= 1) {
         now_.assign(id, value);
         if (frames_left_[i] > 0) frames_left_[i] = 1;  // its glide ends at the next step
         target_[i] = value;

@@ -34,10 +34,11 @@ void Mapper::set_live(const Settings& s, double output_ceiling) noexcept {
     envelope_.attack_ms = s[P::envelope_attack_ms];
     envelope_.decay_ms = s[P::envelope_decay_ms];
     envelope_.sustain = s[P::envelope_sustain];
-    flutter_gain_ =
-        flutter_enabled(s)
-            ? s[P::flutter_weight] * (s[P::flutter_equalize] != 0.0 ? kFlutterEqualizeGain : 1.0)
-            : 0.0;
+    // flutter.equalize glides from off (0) to on (1) when turned live: the gain in between.
+    flutter_gain_ = flutter_enabled(s) ? s[P::flutter_weight] *
+                                             std::lerp(1.0, kFlutterEqualizeGain,
+                                                       s[P::flutter_equalize])
+                                       : 0.0;
     // Pressure weight is a fraction of the output ceiling (the post chain keeps that headroom).
     pressure_weight_ = pressure_enabled(s) ? s[P::pressure_weight] * output_ceiling : 0.0;
     pressure_steps_ = static_cast<int>(std::lround(s[P::pressure_steps]));

@@ -109,7 +109,7 @@ constexpr ParamSpec kTable[] = {
     // Synthesis: one component per further channel of touch (paper §5.2, §5.4). Off by default.
     {P::flutter_weight, 37, "flutter.weight", "", real, 0, 1, 0, lin, live, 20,
      "NPI flutter (2-40 Hz) level at mapped level 1, full scale (0 = off; paper 5.2)"},
-    {P::flutter_equalize, 38, "flutter.equalize", "", toggle, 0, 1, 0, lin, live, 0,
+    {P::flutter_equalize, 38, "flutter.equalize", "", toggle, 0, 1, 0, lin, live, 20,
      "scale the flutter by the P/NPI innervation ratio 21/140 (-16.5 dB) so both channels are "
      "engaged about equally loudly (paper 5.2)", kSwitch},
     {P::flutter_level_source, 39, "mapping.flutter_level.source", "", choice, 0, kLastSource, 0, lin, live, 0,

@@ -1,0 +1,266 @@
+// What front ends ask of the Engine beyond the offline render: blocks of any size (0, 1, above
+// max_block, changing call to call) give the output of fixed blocks bit for bit; input channels
+// are downmixed in the engine (mean or a chosen channel); N actuator outputs share one analysis,
+// each with its own profile, trim and delay; live parameters turned while audio runs glide (no
+// step in the output larger than the unturned outputs have) and a turn to the current value
+// changes nothing; a structural change while running is refused; the vibration program can be
+// injected (triggers from outside) and read (frames through a queue).
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "support/engine_blocks.hpp"
+#include "support/live_values.hpp"
+#include "support/signals.hpp"
+#include "tactus/actuator/profile.hpp"
+#include "tactus/core/units.hpp"
+#include "tactus/engine/engine.hpp"
+#include "tactus/io/preset.hpp"
+
+namespace tactus {
+namespace {
+
+using ::testing::HasSubstr;
+
+bool bit_identical(const std::vector<float>& a, const std::vector<float>& b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](float x, float y) {
+               return std::bit_cast<uint32_t>(x) == std::bit_cast<uint32_t>(y);
+           });
+}
+
+Settings four_channel() {
+    Settings s;
+    apply_preset_file(s,
+                      std::filesystem::path(TACTUS_SOURCE_DIR) / "presets" / "four-channel.toml");
+    s.set(P::actuator_dc, 1);
+    return s;
+}
+
+// Runs the engine over `in` (one vector per input channel) in blocks cycling through `blocks`;
+// one output vector per actuator.
+std::vector<std::vector<float>> run(Engine& engine, const std::vector<std::vector<float>>& in,
+                                    const std::vector<int>& blocks) {
+    const size_t n = in.front().size();
+    std::vector<std::vector<float>> out(static_cast<size_t>(engine.actuators()),
+                                        std::vector<float>(n));
+    std::vector<const float*> ins(in.size());
+    std::vector<float*> outs(out.size());
+    size_t done = 0;
+    for (size_t b = 0; done < n || b < blocks.size(); ++b) {
+        const int count = static_cast<int>(
+            std::min<size_t>(n - done, static_cast<size_t>(blocks[b % blocks.size()])));
+        for (size_t c = 0; c < in.size(); ++c) ins[c] = in[c].data() + done;
+        for (size_t k = 0; k < out.size(); ++k) outs[k] = out[k].data() + done;
+        engine.process(ins.data(), outs.data(), count);
+        done += static_cast<size_t>(count);
+    }
+    return out;
+}
+
+std::vector<float> mono_render(const std::vector<float>& x, double fs, const Settings& s = {},
+                               std::optional<ActuatorProfile> actuator = std::nullopt) {
+    Engine engine(s);
+    engine.set_actuator(std::move(actuator));
+    engine.prepare(fs, 64);
+    return test::process_in_blocks(engine, x, 64);
+}
+
+TEST(EngineFrontEnd, AnyBlockSizeGivesTheOutputOfFixedBlocks) {
+    const double fs = 48000;
+    const std::vector<float> x = test::drum_pattern(fs, 3.0, 3).audio;
+    for (const Settings& s : {Settings{}, four_channel()}) {
+        const std::vector<float> reference = mono_render(x, fs, s);
+        ASSERT_GT(test::peak(reference), 0.05);
+        for (const std::vector<int>& blocks :
+             {std::vector<int>{1024}, {0, 1, 0, 4096, 63, 65, 5000, 1}, {17, 0, 300, 8192}}) {
+            Engine engine(s);
+            engine.prepare(fs, 64);  // every block above is split inside process()
+            const auto y = run(engine, {x}, blocks);
+            EXPECT_TRUE(bit_identical(y[0], reference)) << "blocks from " << blocks.front();
+        }
+    }
+}
+
+TEST(EngineFrontEnd, ChannelsAreDownmixedInTheEngine) {
+    const double fs = 44100;
+    const auto left = test::drum_pattern(fs, 2.0, 5).audio;
+    const auto right = test::drum_pattern(fs, 2.0, 6).audio;
+    std::vector<float> mean(left.size());
+    for (size_t i = 0; i < mean.size(); ++i) mean[i] = (left[i] + right[i]) * 0.5f;
+    Engine stereo;
+    stereo.prepare({.sample_rate_hz = fs, .max_block = 64, .input_channels = 2});
+    EXPECT_TRUE(bit_identical(run(stereo, {left, right}, {64})[0], mono_render(mean, fs)));
+    Engine chosen;
+    chosen.prepare(
+        {.sample_rate_hz = fs, .max_block = 64, .input_channels = 2, .input_channel = 1});
+    EXPECT_TRUE(bit_identical(run(chosen, {left, right}, {64})[0], mono_render(right, fs)));
+    Engine bad;
+    EXPECT_THROW(bad.prepare({.sample_rate_hz = fs, .input_channels = 2, .input_channel = 2}),
+                 std::invalid_argument);
+}
+
+TEST(EngineFrontEnd, ActuatorsShareOneAnalysisWithTheirOwnProfileTrimAndDelay) {
+    const double fs = 48000;
+    const auto x = test::drum_pattern(fs, 2.0, 7).audio;
+    const ActuatorProfile lra = load_actuator(resolve_actuator("lra-175"));
+    Engine engine;
+    engine.set_actuators({ActuatorOutput{},
+                          ActuatorOutput{.profile = lra, .gain_db = 0, .delay_ms = 0},
+                          ActuatorOutput{.profile = {}, .gain_db = -6, .delay_ms = 10}});
+    engine.prepare(fs, 64);
+    const auto y = run(engine, {x}, {64});
+    const auto plain = mono_render(x, fs), compensated = mono_render(x, fs, {}, lra);
+    EXPECT_TRUE(bit_identical(y[0], plain));
+    EXPECT_TRUE(bit_identical(y[1], compensated));
+    EXPECT_FALSE(bit_identical(y[0], y[1]));
+    const size_t delay = 480;  // 10 ms
+    for (size_t i = 0; i < delay; ++i) ASSERT_EQ(y[2][i], 0.0f);
+    for (size_t i = delay; i < x.size(); ++i)
+        ASSERT_EQ(y[2][i], static_cast<float>(plain[i - delay] * db_to_gain(-6))) << i;
+    EXPECT_THROW(engine.set_actuators({ActuatorOutput{.profile = {}, .gain_db = 3}}),
+                 std::invalid_argument);
+}
+
+// The largest step between neighbouring samples in [begin, end): a click is a step far larger
+// than the signal's own slope there.
+double largest_step(const std::vector<float>& y, size_t begin, size_t end) {
+    double step = 0;
+    for (size_t i = std::max<size_t>(begin, 1); i < std::min(end, y.size()); ++i)
+        step = std::max(step, double{std::fabs(y[i] - y[i - 1])});
+    return step;
+}
+
+// Each live parameter turned every 0.27 s, there and back, while drums play: around each turn
+// the output steps no more than the outputs with either value held throughout step there.
+TEST(EngineFrontEnd, LiveChangesGlideWithoutAStep) {
+    const double fs = 48000;
+    constexpr int kBlock = 64, kEvery = 200;  // blocks between turns
+    const auto x = test::drum_pattern(fs, 2.0, 9).audio;
+    for (const Settings& start : {Settings{}, four_channel()}) {
+        for (const auto& [id, value] : test::turned_live_values(start)) {
+            if (spec(id).key.ends_with("weight") && (value == 0 || start[id] == 0)) continue;
+            Settings turned = start;
+            turned.set(id, value);
+            const auto held = mono_render(x, fs, start), held_turned = mono_render(x, fs, turned);
+            Engine engine(start);
+            engine.prepare(fs, kBlock);
+            std::vector<float> y(x.size());
+            std::vector<size_t> turns;
+            for (size_t done = 0, b = 0; done < x.size(); done += kBlock, ++b) {
+                if (b % kEvery == kEvery / 2) {
+                    engine.set(id, b % (2 * kEvery) == kEvery / 2 ? value : start[id]);
+                    turns.push_back(done);
+                }
+                engine.process(x.data() + done, y.data() + done, kBlock);
+            }
+            const auto window = static_cast<size_t>(0.02 * fs);  // the turn and its glide
+            for (size_t t : turns) {
+                const double allowed = 1.5 * std::max(largest_step(held, t, t + window),
+                                                       largest_step(held_turned, t, t + window));
+                EXPECT_LE(largest_step(y, t, t + window), allowed + 1e-4)
+                    << spec(id).key << " " << start[id] << " <-> " << value << " at " << t;
+            }
+        }
+    }
+}
+
+TEST(EngineFrontEnd, TurningAParameterToItsValueChangesNothing) {
+    const double fs = 48000;
+    const auto x = test::drum_pattern(fs, 2.0, 4).audio;
+    const Settings start = four_channel();
+    const auto reference = mono_render(x, fs, start);
+    Engine engine(start);
+    engine.prepare(fs, 64);
+    std::vector<float> y(x.size());
+    for (size_t done = 0; done < x.size(); done += 64) {
+        for (const ParamSpec& s : param_table())
+            if (s.change == ParamChange::live) engine.set(s.param, start[s.param]);
+        engine.process(x.data() + done, y.data() + done, 64);
+    }
+    EXPECT_TRUE(bit_identical(y, reference));
+}
+
+TEST(EngineFrontEnd, ValuesAreCheckedAndStructuralChangesNeedPrepare) {
+    Engine engine;
+    engine.prepare(48000, 64);
+    try {
+        engine.set(P::post_drive_db, 99);
+        ADD_FAILURE() << "accepted an out-of-range value";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_THAT(e.what(), HasSubstr("post.drive_db"));
+    }
+    EXPECT_EQ(engine.settings()[P::post_drive_db], Settings{}[P::post_drive_db]);
+    try {
+        engine.set(P::analysis_hop_ms, 5);
+        ADD_FAILURE() << "a structural change while prepared";
+    } catch (const std::logic_error& e) {
+        EXPECT_THAT(e.what(), HasSubstr("analysis.hop_ms"));
+    }
+    EXPECT_THROW(engine.set(P::flutter_weight, 0.5), std::logic_error) << "turns a component on";
+    Engine unprepared;
+    unprepared.set(P::analysis_hop_ms, 5);  // before prepare: just a setting
+    EXPECT_EQ(unprepared.settings()[P::analysis_hop_ms], 5);
+}
+
+// The magnitude of y's component at frequency_hz over its first `seconds`.
+double component(const std::vector<float>& y, double fs, double frequency_hz, double seconds) {
+    double re = 0, im = 0;
+    for (size_t i = 0; i < static_cast<size_t>(seconds * fs); ++i) {
+        re += y[i] * std::cos(2 * kPi * frequency_hz * i / fs);
+        im += y[i] * std::sin(2 * kPi * frequency_hz * i / fs);
+    }
+    return std::hypot(re, im);
+}
+
+TEST(EngineFrontEnd, InjectedTriggersDriveTheSynthesis) {
+    const double fs = 48000;
+    const std::vector<float> silence(static_cast<size_t>(fs / 2), 0.0f);
+    for (double f : {200.0, 300.0}) {
+        Engine engine;
+        engine.prepare(fs, 64);
+        engine.set_program_source(ProgramSource::external);
+        engine.trigger(f, 1.0);
+        const auto y = test::process_in_blocks(engine, silence, 64);
+        EXPECT_GT(test::peak(y), 0.1) << "a pulse from silence";
+        for (double other : {f / 2, f * 0.75, f * 1.5})
+            EXPECT_GT(component(y, fs, f, 0.05), 2 * component(y, fs, other, 0.05)) << f;
+        EXPECT_THROW(engine.trigger(-1, 0.5), std::invalid_argument);
+    }
+    Engine analysed;  // the analysis alone: silence stays silent
+    analysed.prepare(fs, 64);
+    EXPECT_EQ(test::peak(test::process_in_blocks(analysed, silence, 64)), 0.0);
+}
+
+TEST(EngineFrontEnd, FramesReachAReaderThroughTheQueue) {
+    const double fs = 48000;
+    const auto drums = test::drum_pattern(fs, 2.0, 2);
+    Engine engine;
+    engine.enable_frame_queue();
+    engine.prepare(fs, 256);
+    std::vector<AnalysisFrame> frames;
+    AnalysisFrame frame;
+    std::vector<float> y(drums.audio.size());
+    for (size_t done = 0; done < y.size(); done += 256) {
+        const int count = static_cast<int>(std::min<size_t>(256, y.size() - done));
+        engine.process(drums.audio.data() + done, y.data() + done, count);
+        while (engine.pop_frame(frame)) frames.push_back(frame);
+    }
+    ASSERT_EQ(frames.size(), y.size() / static_cast<size_t>(engine.hop_samples()));
+    int onsets = 0;
+    for (size_t i = 0; i < frames.size(); ++i) {
+        EXPECT_EQ(frames[i].features.frame_end_sample,
+                  static_cast<int64_t>(i + 1) * engine.hop_samples());
+        onsets += frames[i].features.onset;
+        EXPECT_EQ(frames[i].control.trigger, frames[i].features.onset);
+    }
+    EXPECT_EQ(onsets, static_cast<int>(drums.onsets.size()));
+}
+
+}  // namespace
+}  // namespace tactus
