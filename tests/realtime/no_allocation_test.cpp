@@ -356,9 +356,10 @@ TEST(RealTime, WithActuatorCompensation) {
         expect_process_is_real_time_safe(48000, Settings{}, load_actuator(resolve_actuator(name)));
 }
 
-// Every live parameter turned while audio runs, and an actuator's trim: the changes are set on
-// another thread between blocks (Engine::set may allocate there: a flattening design), and
-// process() picks each up without an allocation or a lock. Turning a component's weight from or
+// Every live parameter turned while audio runs, an actuator's trim, triggers and a structural
+// change now and then: the changes are set on another thread between blocks (Engine::set may
+// allocate there: a flattening design, a new pipeline), and process() picks each up (catching a
+// new pipeline up and crossfading to it) without an allocation, a free or a lock. Turning a component's weight from or
 // to 0 is structural (routing): weights are turned only between values above 0.
 void expect_live_changes_are_real_time_safe(const Settings& start, double fs) {
     const std::vector<float> x = varied_input(fs);
@@ -381,6 +382,8 @@ void expect_live_changes_are_real_time_safe(const Settings& start, double fs) {
                 engine.set(id, change / changes.size() % 2 ? start[id] : value);
                 engine.set_actuator_gain_db(1, -static_cast<double>(b % 12));
                 if (b % 35 == 0) engine.trigger(120, 0.5);
+                if (b % 140 == 0)  // structural: a pipeline primed here, crossfaded in there
+                    engine.set(P::analysis_hop_ms, b % 280 == 0 ? 2.0 : start[P::analysis_hop_ms]);
             });
             control.join();
         }

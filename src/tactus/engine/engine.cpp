@@ -14,24 +14,10 @@
 namespace tactus {
 namespace {
 
-int64_t ceil_div(int64_t a, int64_t b) {
-    return (a + b - 1) / b;
-}
-
 void check_range(std::string_view what, int value, int low, int high) {
     if (value < low || value > high)
         throw std::invalid_argument(
             fmt::format("{} {} is outside the supported {}-{}", what, value, low, high));
-}
-
-// The features the mapping reads (its sources) and the gate's loudness.
-FeatureSet mapped_features(const Settings& s) {
-    FeatureSet read = FeatureSet::none();
-    read.loudness = true;
-    for (P source : {P::amplitude_source, P::frequency_source, P::square_mix_source,
-                     P::flutter_level_source, P::flutter_rate_source, P::pressure_level_source})
-        read = read | group_of(static_cast<FeatureSource>(s[source]));
-    return read;
 }
 
 // The parameters that shape the flattening filter: a change is designed on the control thread.
@@ -43,6 +29,13 @@ bool shapes_flattening(P id) {
 }  // namespace
 
 Engine::Engine(Settings settings) : settings_(settings), outputs_(1) {}
+
+Engine::~Engine() {
+    for (Change c; changes_.try_dequeue(c);) delete c.pipeline;
+    delete waiting_.pipeline;
+    delete incoming_;
+    free_retired();
+}
 
 void Engine::set_actuator(std::optional<ActuatorProfile> actuator) {
     set_actuators({ActuatorOutput{.profile = std::move(actuator)}});
@@ -63,97 +56,74 @@ void Engine::check_sample_rate(double sample_rate_hz) {
                         kMinSampleRateHz, kMaxSampleRateHz));
 }
 
+std::unique_ptr<Pipeline> Engine::make_pipeline(const Settings& settings, int64_t origin) const {
+    auto pipeline = std::make_unique<Pipeline>();
+    pipeline->prepare({.sample_rate_hz = spec_.sample_rate_hz,
+                       .max_block = spec_.max_block,
+                       .origin_sample = origin},
+                      settings, outputs_);
+    pipeline->set_extra_features(extra_features());
+    pipeline->set_source(source_);
+    return pipeline;
+}
+
 void Engine::prepare(const EngineSpec& spec) {
     check_sample_rate(spec.sample_rate_hz);
     check_range("block size", spec.max_block, 1, kMaxBlock);
     check_range("input channel count", spec.input_channels, 1, kMaxInputChannels);
     check_range("input channel", spec.input_channel, -1, spec.input_channels - 1);
     spec_ = spec;
-    const double rate = spec.sample_rate_hz;
-    rate_divisor_ =
-        std::clamp(static_cast<int>(rate / kMinInternalRateHz), 1, Upsampler::kMaxFactor);
-    const ChainSpec chain{.internal_rate_hz = rate / rate_divisor_,
-                          .rate_divisor = rate_divisor_,
-                          .max_internal_block =
-                              static_cast<int>(ceil_div(spec.max_block, rate_divisor_)) + 1,
-                          .max_block = spec.max_block};
-    // Actuators with the same profile share a chain.
-    chains_.clear();
-    chain_of_.clear();
-    first_of_chain_.clear();
-    trims_.resize(outputs_.size());
-    for (size_t k = 0; k < outputs_.size(); ++k) {
-        size_t j = 0;
-        while (j < k && outputs_[j].profile != outputs_[k].profile) ++j;
-        if (j == k) {
-            chains_.emplace_back().prepare(chain, settings_,
-                                           outputs_[k].profile ? &*outputs_[k].profile : nullptr);
-            first_of_chain_.push_back(static_cast<int>(k));
-            chain_of_.push_back(static_cast<int>(chains_.size()) - 1);
-        } else {
-            chain_of_.push_back(chain_of_[j]);
-        }
-        trims_[k].prepare(rate, outputs_[k]);
-    }
-    for (auto& c : chains_) c.set_pressure_reference(chains_.front().post().ceiling());
-    const auto internal = static_cast<size_t>(chain.max_internal_block);
-    carrier_.assign(internal, 0.0f);
-    flutter_on_ = flutter_enabled(settings_);
-    pressure_on_ = pressure_enabled(settings_);
-    flutter_.assign(flutter_on_ ? internal : 0, 0.0f);
-    pressure_.assign(pressure_on_ ? internal : 0, 0.0f);
-    mono_.assign(spec.input_channels > 1 ? static_cast<size_t>(spec.max_block) : 0, 0.0f);
-    analyzer_.prepare(rate, settings_);
-    const double frames_per_second = rate / analyzer_.hop_samples();
-    mapper_.prepare(settings_, frames_per_second, chains_.front().post().ceiling());
-    voice_.prepare(chain.internal_rate_hz, settings_[P::post_band_high_hz]);
-    live_.prepare(settings_, frames_per_second);
-    update_features();
-    // Whatever was queued before this prepare is in settings_ already.
-    for (Change c; changes_.try_dequeue(c);) {}
+    for (Change c; changes_.try_dequeue(c);) delete c.pipeline;  // settings_ holds them
     for (ControlFrame f; injected_.try_dequeue(f);) {}
-    for (FlatteningFilter::Design d; designs_.try_dequeue(d);) {}
+    delete std::exchange(waiting_.pipeline, nullptr);
+    delete std::exchange(incoming_, nullptr);
+    free_retired();
+    active_ = make_pipeline(settings_, 0);
+    rate_divisor_ = active_->rate_divisor();
+    trims_.resize(outputs_.size());
+    for (size_t k = 0; k < outputs_.size(); ++k) trims_[k].prepare(spec.sample_rate_hz, outputs_[k]);
+    const auto block = static_cast<size_t>(spec.max_block);
+    mono_.assign(spec.input_channels > 1 ? block : 0, 0.0f);
+    incoming_out_.assign(outputs_.size(), std::vector<float>(block));
+    incoming_pointers_.resize(outputs_.size());
+    mono_catch_up_.assign(block, 0.0f);
+    for (size_t k = 0; k < outputs_.size(); ++k) incoming_pointers_[k] = incoming_out_[k].data();
+    fade_samples_ = std::max<int>(1, static_cast<int>(ms_to_samples(kCrossfadeMs, spec.sample_rate_hz)));
+    ring_.prepare(ms_to_samples(2e3 * kPrimeSeconds, spec.sample_rate_hz));
     prepared_ = true;
     reset();
 }
 
 void Engine::reset() noexcept {
-    analyzer_.reset();
-    mapper_.reset();
-    voice_.reset();
-    for (auto& chain : chains_) chain.reset();
+    if (!active_) return;
+    delete std::exchange(waiting_.pipeline, nullptr);  // setup thread: no audio thread runs
+    delete std::exchange(incoming_, nullptr);
+    active_->reset();
     for (auto& trim : trims_) trim.reset();
-    position_ = 0;
+    ring_.reset();
+    latency_ = active_->latency();
+    hop_samples_ = active_->hop_samples();
 }
 
 void Engine::set_observer(FrameObserver* observer) {
     observer_ = observer;
-    update_features();
+    if (active_) active_->set_extra_features(extra_features());
 }
 
 void Engine::enable_frame_queue() {
     frames_.emplace(kQueueCapacity);
+    if (active_) active_->set_extra_features(extra_features());
 }
 
-// The analysis computes what the mapping or the observer reads.
-void Engine::update_features() noexcept {
-    FeatureSet read = mapped_features(live_.now());
-    if (observer_) read = read | observer_->reads();
-    if (frames_) read = read | FeatureSet{};
-    analyzer_.set_features(read);
+// What the engine's readers read besides the mapping's features: all, for the frame queue.
+FeatureSet Engine::extra_features() const {
+    FeatureSet read = observer_ ? observer_->reads() : FeatureSet::none();
+    return frames_ ? read | FeatureSet{} : read;
 }
 
-int Engine::latency() const {
-    if (chains_.empty()) return 0;
-    const ActuatorChain& chain = chains_.front();
-    return chain.post().latency_samples() * rate_divisor_ +
-           static_cast<int>(std::lround(chain.upsampler().delay_samples()));
-}
-
-int64_t Engine::clipped_samples() const {
-    int64_t clipped = 0;
-    for (const auto& chain : chains_) clipped += chain.clipped_samples();
-    return clipped;
+void Engine::FrameSink::on_frame(const Features& features, const ControlFrame& control) noexcept {
+    if (engine_.observer_) engine_.observer_->on_frame(features, control);
+    if (engine_.frames_) engine_.frames_->try_enqueue({features, control});  // dropped when full
 }
 
 // ---- control threads ----
@@ -163,22 +133,62 @@ void Engine::send(const Change& change) {
         throw std::runtime_error("engine: too many changes waiting for the audio thread");
 }
 
+void Engine::free_retired() {
+    for (Pipeline* p; retired_.try_dequeue(p);) delete p;
+}
+
 void Engine::set(P id, double value) {
     const std::lock_guard lock(control_);
     Settings next = settings_;
     next.set(id, value);  // throws std::invalid_argument naming the key
     if (prepared_) {
+        free_retired();
         if (tactus::spec(id).change == ParamChange::structural ||
-            flutter_enabled(next) != flutter_on_ || pressure_enabled(next) != pressure_on_)
-            throw std::logic_error(fmt::format(
-                "{} changes the engine's structure: prepare() the engine again",
-                tactus::spec(id).key));
-        if (shapes_flattening(id) &&
-            !designs_.try_enqueue(chains_.front().post().flattening_design(next)))
-            throw std::runtime_error("engine: too many changes waiting for the audio thread");
-        send({Change::Kind::parameter, static_cast<int>(id), next[id]});
+            flutter_enabled(next) != flutter_enabled(settings_) ||
+            pressure_enabled(next) != pressure_enabled(settings_)) {
+            swap_in(next);
+        } else if (shapes_flattening(id)) {
+            Change change{.kind = Change::Kind::flattening, .index = static_cast<int>(id),
+                          .value = next[id]};
+            change.design = flattening_design(spec_.sample_rate_hz / rate_divisor_, next);
+            send(change);
+        } else {
+            send({.kind = Change::Kind::parameter, .index = static_cast<int>(id),
+                  .value = next[id]});
+        }
     }
     settings_ = next;
+}
+
+// A pipeline for `settings`, primed with the input the running one has heard, handed to the
+// audio thread (which catches it up and crossfades to it).
+void Engine::swap_in(const Settings& settings) {
+    const auto prime = static_cast<int64_t>(kPrimeSeconds * spec_.sample_rate_hz);
+    std::vector<float> past;
+    int64_t to = 0, from = 0;
+    std::unique_ptr<Pipeline> pipeline;
+    for (int attempt = 0;; ++attempt) {  // the audio thread may overwrite what is being read
+        to = ring_.written();
+        from = std::max<int64_t>(0, to - prime);
+        past.resize(static_cast<size_t>(to - from));
+        if (ring_.read(from, past.data(), static_cast<int>(past.size())) || attempt == 3) break;
+    }
+    pipeline = make_pipeline(settings, from);
+    std::vector<std::vector<float>> scratch(outputs_.size(),
+                                            std::vector<float>(static_cast<size_t>(spec_.max_block)));
+    std::vector<float*> out(outputs_.size());
+    for (size_t k = 0; k < out.size(); ++k) out[k] = scratch[k].data();
+    {
+        const ScopedFlushDenormals no_denormals;
+        for (size_t done = 0; done < past.size();) {
+            const int count = static_cast<int>(
+                std::min<size_t>(past.size() - done, static_cast<size_t>(spec_.max_block)));
+            pipeline->process(past.data() + done, out.data(), count, nullptr);
+            done += static_cast<size_t>(count);
+        }
+    }
+    send({.kind = Change::Kind::pipeline, .pipeline = pipeline.get(), .primed_to = to});
+    pipeline.release();  // the audio thread owns it now; it comes back through retired_
 }
 
 void Engine::set_actuator_gain_db(int actuator, double gain_db) {
@@ -187,7 +197,8 @@ void Engine::set_actuator_gain_db(int actuator, double gain_db) {
     ActuatorOutput output = outputs_[static_cast<size_t>(actuator)];
     output.gain_db = gain_db;
     output.check(actuator);
-    if (prepared_) send({Change::Kind::actuator_gain, actuator, gain_db});
+    if (prepared_)
+        send({.kind = Change::Kind::actuator_gain, .index = actuator, .value = gain_db});
     outputs_[static_cast<size_t>(actuator)] = output;
 }
 
@@ -198,11 +209,11 @@ void Engine::inject(const ControlFrame& frame) {
 }
 
 void Engine::trigger(double frequency_hz, double amplitude) {
-    if (!(frequency_hz > 0 && frequency_hz <= tactus::spec(P::frequency_out_max).max) ||
-        !(amplitude >= 0 && amplitude <= 1))
-        throw std::invalid_argument(fmt::format(
-            "trigger {} Hz, amplitude {}: allowed 0-{} Hz and amplitude 0-1", frequency_hz,
-            amplitude, tactus::spec(P::frequency_out_max).max));
+    const double highest_hz = tactus::spec(P::frequency_out_max).max;
+    if (!(frequency_hz > 0 && frequency_hz <= highest_hz) || !(amplitude >= 0 && amplitude <= 1))
+        throw std::invalid_argument(
+            fmt::format("trigger {} Hz, amplitude {}: allowed 0-{} Hz and amplitude 0-1",
+                        frequency_hz, amplitude, highest_hz));
     ControlFrame frame;
     {
         const std::lock_guard lock(control_);
@@ -218,7 +229,9 @@ void Engine::trigger(double frequency_hz, double amplitude) {
 
 void Engine::set_program_source(ProgramSource source) {
     const std::lock_guard lock(control_);
-    send({Change::Kind::program_source, static_cast<int>(source), 0.0});
+    source_ = source;
+    if (prepared_)
+        send({.kind = Change::Kind::program_source, .index = static_cast<int>(source)});
 }
 
 bool Engine::pop_frame(AnalysisFrame& frame) {
@@ -227,35 +240,60 @@ bool Engine::pop_frame(AnalysisFrame& frame) {
 
 // ---- audio thread ----
 
+void Engine::retire(Pipeline* pipeline) noexcept {
+    // Freed on a control thread (set() frees what came back before it swaps again, prepare(),
+    // the destructor), so at most a few wait here.
+    if (pipeline) retired_.try_enqueue(pipeline);
+}
+
 void Engine::take_changes() noexcept {
     for (Change c; changes_.try_dequeue(c);) {
+        Pipeline* const running[] = {active_.get(), incoming_, waiting_.pipeline};
         switch (c.kind) {
             case Change::Kind::parameter:
-                live_.ask(static_cast<P>(c.index), c.value);
+                for (Pipeline* p : running)
+                    if (p) p->ask(static_cast<P>(c.index), c.value);
+                break;
+            case Change::Kind::flattening:
+                for (Pipeline* p : running)
+                    if (p) {
+                        p->ask(static_cast<P>(c.index), c.value);
+                        p->glide_flattening(c.design);
+                    }
                 break;
             case Change::Kind::actuator_gain:
                 trims_[static_cast<size_t>(c.index)].set_gain_db(c.value);
                 break;
             case Change::Kind::program_source:
-                source_ = static_cast<ProgramSource>(c.index);
+                for (Pipeline* p : running)
+                    if (p) p->set_source(static_cast<ProgramSource>(c.index));
+                break;
+            case Change::Kind::pipeline:
+                retire(std::exchange(waiting_.pipeline, nullptr));  // superseded
+                waiting_ = c;
                 break;
         }
     }
-    for (FlatteningFilter::Design d; designs_.try_dequeue(d);) {
-        const int glide_samples = static_cast<int>(ms_to_samples(
-            tactus::spec(P::post_flatten_strength).smoothing_ms, spec_.sample_rate_hz / rate_divisor_));
-        for (auto& chain : chains_) chain.post().glide_flattening(d, glide_samples);
+    if (!incoming_ && waiting_.pipeline) start_crossfade();
+    for (ControlFrame frame; injected_.try_dequeue(frame);) {
+        active_->apply(frame);
+        if (incoming_) incoming_->apply(frame);
     }
-    if (live_.take_changed()) apply_live();
 }
 
-// The stages take the live settings as they now are; the post chains at the end of the chunk.
-void Engine::apply_live() noexcept {
-    const Settings& s = live_.now();
-    analyzer_.set_live(s);
-    mapper_.set_live(s, chains_.front().post().ceiling_for(s));
-    update_features();
-    post_dirty_ = true;
+// The waiting pipeline hears the input since it was primed (the ring still holds it), then
+// fades in.
+void Engine::start_crossfade() noexcept {
+    Pipeline* p = std::exchange(waiting_.pipeline, nullptr);
+    const int block = spec_.max_block;
+    for (int64_t at = p->position(); at < ring_.written();) {
+        const int count = static_cast<int>(std::min<int64_t>(block, ring_.written() - at));
+        if (!ring_.read(at, mono_catch_up_.data(), count)) break;  // too far behind: as it is
+        p->process(mono_catch_up_.data(), incoming_pointers_.data(), count, nullptr);
+        at += count;
+    }
+    incoming_ = p;
+    fade_done_ = 0;
 }
 
 const float* Engine::downmix(const float* const* in, int offset, int count) noexcept {
@@ -279,50 +317,31 @@ void Engine::process(const float* const* in, float* const* out, int count) noexc
 void Engine::process_chunk(const float* const* in, float* const* out, int offset,
                            int count) noexcept {
     const float* mono = downmix(in, offset, count);
-    for (ControlFrame frame; injected_.try_dequeue(frame);) {
-        frame.sample = position_;
-        voice_.apply(frame);
-    }
-    const int divisor = rate_divisor_;
-    float* const flutter = flutter_.empty() ? nullptr : flutter_.data();
-    float* const pressure = pressure_.empty() ? nullptr : pressure_.data();
-    int done = 0, rendered = 0;
-    while (done < count) {
-        const int chunk = std::min(count - done, analyzer_.samples_to_next_frame());
-        const bool frame_due = analyzer_.write(mono + done, chunk);
-        // Internal sample k stands at input sample k * divisor.
-        const auto due =
-            static_cast<int>(ceil_div(position_ + chunk, divisor) - ceil_div(position_, divisor));
-        voice_.render(carrier_.data() + rendered, flutter ? flutter + rendered : nullptr,
-                      pressure ? pressure + rendered : nullptr, due);
-        rendered += due;
-        position_ += chunk;
-        if (frame_due) {
-            if (live_.gliding() && live_.step()) apply_live();
-            const Features& features = analyzer_.analyse();
-            const ControlFrame control = mapper_.map(features);
-            if (source_ != ProgramSource::external) voice_.apply(control);
-            if (observer_) observer_->on_frame(features, control);
-            if (frames_) frames_->try_enqueue({features, control});  // dropped when full
+    ring_.write(mono, count);
+    float* outs[kMaxActuators];
+    const size_t n = trims_.size();
+    for (size_t k = 0; k < n; ++k) outs[k] = out[k] + offset;
+    // While a new pipeline fades in, the frames are its own (primed: they go on seamlessly).
+    active_->process(mono, outs, count, incoming_ ? nullptr : &sink_);
+    if (incoming_) {
+        incoming_->process(mono, incoming_pointers_.data(), count, &sink_);
+        for (size_t k = 0; k < n; ++k) {
+            const float* next = incoming_pointers_[k];
+            for (int i = 0; i < count; ++i) {
+                const float g = std::min(1.0f, static_cast<float>(fade_done_ + i) / fade_samples_);
+                outs[k][i] += g * (next[i] - outs[k][i]);
+            }
         }
-        done += chunk;
+        fade_done_ += count;
+        if (fade_done_ >= fade_samples_) {
+            retire(active_.release());
+            active_.reset(std::exchange(incoming_, nullptr));
+            latency_ = active_->latency();
+            hop_samples_ = active_->hop_samples();
+            if (waiting_.pipeline) start_crossfade();
+        }
     }
-    if (post_dirty_) {  // glides over an analysis frame: LiveSettings' steps join up
-        const int glide = std::max(rendered, hop_samples() / divisor);
-        for (auto& chain : chains_) chain.set_live(live_.now(), glide);
-        for (auto& chain : chains_) chain.set_pressure_reference(chains_.front().post().ceiling());
-        post_dirty_ = false;
-    }
-    for (size_t j = 0; j < chains_.size(); ++j) {
-        const bool last = j + 1 == chains_.size();
-        chains_[j].process(carrier_.data(), flutter, pressure, rendered, last,
-                           out[first_of_chain_[j]] + offset, count);
-    }
-    for (size_t k = 0; k < trims_.size(); ++k) {  // copies first, then each its own trim
-        const int first = first_of_chain_[static_cast<size_t>(chain_of_[k])];
-        if (first != static_cast<int>(k)) std::copy_n(out[first] + offset, count, out[k] + offset);
-    }
-    for (size_t k = 0; k < trims_.size(); ++k) trims_[k].process(out[k] + offset, count);
+    for (size_t k = 0; k < n; ++k) trims_[k].process(outs[k], count);
 }
 
 }  // namespace tactus

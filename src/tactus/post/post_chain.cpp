@@ -28,7 +28,7 @@ FlatteningDesign flattening_inputs(const Settings& s) {
 
 void PostChain::prepare(double sample_rate_hz, const Settings& s, const ActuatorProfile* actuator) {
     const double low_hz = s[P::post_band_low_hz], high_hz = s[P::post_band_high_hz];
-    sample_rate_hz_ = sample_rate_hz, low_hz_ = low_hz, high_hz_ = high_hz;
+    sample_rate_hz_ = sample_rate_hz;
     flutter_on_ = flutter_enabled(s);
     pressure_on_ = pressure_enabled(s);
     first_band_.prepare(sample_rate_hz, low_hz, high_hz, kFirstBandOrder);
@@ -43,8 +43,9 @@ void PostChain::prepare(double sample_rate_hz, const Settings& s, const Actuator
     reset();
 }
 
-FlatteningFilter::Design PostChain::flattening_design(const Settings& s) const {
-    return FlatteningFilter::design(sample_rate_hz_, low_hz_, high_hz_, flattening_inputs(s));
+FlatteningFilter::Design flattening_design(double sample_rate_hz, const Settings& s) {
+    return FlatteningFilter::design(sample_rate_hz, s[P::post_band_low_hz],
+                                    s[P::post_band_high_hz], flattening_inputs(s));
 }
 
 void PostChain::set_live(const Settings& s, int glide_samples) noexcept {

@@ -31,6 +31,10 @@
 
 namespace tactus {
 
+// The flattening filter `settings` ask for at a post chain's rate (allocates: a control thread
+// designs it, PostChain::glide_flattening() takes it live).
+FlatteningFilter::Design flattening_design(double sample_rate_hz, const Settings& settings);
+
 class PostChain {
   public:
     static constexpr int kFirstBandOrder = 8;
@@ -41,9 +45,6 @@ class PostChain {
     void prepare(double sample_rate_hz, const Settings& settings,
                  const ActuatorProfile* actuator = nullptr);
     void reset() noexcept;
-    // The flattening filter `settings` ask for at this chain's rate and band (allocates: a
-    // control thread designs it, glide_flattening() takes it live).
-    FlatteningFilter::Design flattening_design(const Settings& settings) const;
     // Live (audio thread), each over `glide_samples`: drive, limiter threshold, ceiling (and the
     // pressure headroom under it) and the flutter's peaking filter; release at once.
     void set_live(const Settings& settings, int glide_samples) noexcept;
@@ -73,7 +74,7 @@ class PostChain {
     PeakLimiter limiter_;
     Biquad flutter_peak_;
     bool flutter_on_ = false, flutter_peak_on_ = false, pressure_on_ = false;
-    double sample_rate_hz_ = 48000, low_hz_ = 30, high_hz_ = 1000;
+    double sample_rate_hz_ = 48000;
     double max_drive_ = 1.0;  // the actuator's, 1 without one
     double ceiling_ = 1.0, clip_ceiling_ = 1.0;  // clip_ceiling_: the higher during a glide
     int64_t clipped_ = 0;

@@ -1,0 +1,33 @@
+// The last few seconds of the engine's (downmixed) input, written by the audio thread and read by
+// a control thread that primes a pipeline for a structural change (engine.hpp): the new
+// pipeline hears the same recent past, so its onset history, loudness and envelopes are those
+// of the one it replaces. Lock-free: samples are relaxed atomics, the count written is released
+// after them; a reader checks afterwards that what it copied was not overwritten meanwhile.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+
+namespace tactus {
+
+class InputRing {
+  public:
+    void prepare(int64_t capacity);  // allocates
+    void reset() noexcept;
+    // Audio thread.
+    void write(const float* samples, int count) noexcept;
+    // Any thread: samples written since reset.
+    int64_t written() const noexcept { return written_.load(std::memory_order_acquire); }
+    int64_t capacity() const noexcept { return capacity_; }
+    // Any thread: copies samples [from, from + count); false when they are no longer (or not
+    // yet) held.
+    bool read(int64_t from, float* out, int count) const noexcept;
+
+  private:
+    std::unique_ptr<std::atomic<float>[]> samples_;
+    int64_t capacity_ = 0;
+    std::atomic<int64_t> written_{0};
+};
+
+}  // namespace tactus

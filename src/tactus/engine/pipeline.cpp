@@ -1,0 +1,169 @@
+#include "tactus/engine/pipeline.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tactus/core/units.hpp"
+#include "tactus/params/components.hpp"
+
+namespace tactus {
+namespace {
+
+int64_t ceil_div(int64_t a, int64_t b) {
+    return (a + b - 1) / b;
+}
+
+// The features the mapping reads (its sources) and the gate's loudness.
+FeatureSet mapped_features(const Settings& s) {
+    FeatureSet read = FeatureSet::none();
+    read.loudness = true;
+    for (P source : {P::amplitude_source, P::frequency_source, P::square_mix_source,
+                     P::flutter_level_source, P::flutter_rate_source, P::pressure_level_source})
+        read = read | group_of(static_cast<FeatureSource>(s[source]));
+    return read;
+}
+
+}  // namespace
+
+void Pipeline::prepare(const PipelineSpec& spec, const Settings& settings,
+                       const std::vector<ActuatorOutput>& outputs) {
+    const double rate = spec.sample_rate_hz;
+    sample_rate_hz_ = rate;
+    rate_divisor_ =
+        std::clamp(static_cast<int>(rate / kMinInternalRateHz), 1, Upsampler::kMaxFactor);
+    const ChainSpec chain{.internal_rate_hz = rate / rate_divisor_,
+                          .rate_divisor = rate_divisor_,
+                          .max_internal_block =
+                              static_cast<int>(ceil_div(spec.max_block, rate_divisor_)) + 1,
+                          .max_block = spec.max_block};
+    // Actuators with the same profile share a chain.
+    chains_.clear();
+    chain_of_.clear();
+    first_of_chain_.clear();
+    for (size_t k = 0; k < outputs.size(); ++k) {
+        size_t j = 0;
+        while (j < k && outputs[j].profile != outputs[k].profile) ++j;
+        if (j == k) {
+            chains_.emplace_back().prepare(chain, settings,
+                                           outputs[k].profile ? &*outputs[k].profile : nullptr);
+            first_of_chain_.push_back(static_cast<int>(k));
+            chain_of_.push_back(static_cast<int>(chains_.size()) - 1);
+        } else {
+            chain_of_.push_back(chain_of_[j]);
+        }
+    }
+    for (auto& c : chains_) c.set_pressure_reference(chains_.front().post().ceiling());
+    const auto internal = static_cast<size_t>(chain.max_internal_block);
+    carrier_.assign(internal, 0.0f);
+    flutter_.assign(flutter_enabled(settings) ? internal : 0, 0.0f);
+    pressure_.assign(pressure_enabled(settings) ? internal : 0, 0.0f);
+    analyzer_.prepare(rate, settings);
+    const double frames_per_second = rate / analyzer_.hop_samples();
+    mapper_.prepare(settings, frames_per_second, chains_.front().post().ceiling());
+    voice_.prepare(chain.internal_rate_hz, settings[P::post_band_high_hz]);
+    live_.prepare(settings, frames_per_second);
+    update_features();
+    reset();
+    origin_ = position_ = spec.origin_sample;
+}
+
+void Pipeline::reset() noexcept {
+    analyzer_.reset();
+    mapper_.reset();
+    voice_.reset();
+    for (auto& chain : chains_) chain.reset();
+    origin_ = position_ = 0;
+}
+
+void Pipeline::set_extra_features(FeatureSet features) noexcept {
+    extra_features_ = features;
+    update_features();
+}
+
+// The analysis computes what the mapping or the engine's readers read.
+void Pipeline::update_features() noexcept {
+    analyzer_.set_features(mapped_features(live_.now()) | extra_features_);
+}
+
+void Pipeline::glide_flattening(const FlatteningFilter::Design& design) noexcept {
+    const int glide_samples = static_cast<int>(
+        ms_to_samples(spec(P::post_flatten_strength).smoothing_ms, internal_rate_hz()));
+    for (auto& chain : chains_) chain.post().glide_flattening(design, glide_samples);
+}
+
+void Pipeline::apply(ControlFrame frame) noexcept {
+    frame.sample = position_;
+    voice_.apply(frame);
+}
+
+// The stages take the live settings as they now are; the post chains at the end of the block.
+void Pipeline::apply_live() noexcept {
+    const Settings& s = live_.now();
+    analyzer_.set_live(s);
+    mapper_.set_live(s, chains_.front().post().ceiling_for(s));
+    update_features();
+    post_dirty_ = true;
+}
+
+int Pipeline::latency() const {
+    const ActuatorChain& chain = chains_.front();
+    return chain.post().latency_samples() * rate_divisor_ +
+           static_cast<int>(std::lround(chain.upsampler().delay_samples()));
+}
+
+const PostChain& Pipeline::post(int actuator) const {
+    return chains_[static_cast<size_t>(chain_of_[static_cast<size_t>(actuator)])].post();
+}
+
+int64_t Pipeline::clipped_samples() const {
+    int64_t clipped = 0;
+    for (const auto& chain : chains_) clipped += chain.clipped_samples();
+    return clipped;
+}
+
+void Pipeline::process(const float* mono, float* const* out, int count,
+                       FrameObserver* observer) noexcept {
+    if (live_.take_changed()) apply_live();
+    const int divisor = rate_divisor_;
+    float* const flutter = flutter_.empty() ? nullptr : flutter_.data();
+    float* const pressure = pressure_.empty() ? nullptr : pressure_.data();
+    int done = 0, rendered = 0;
+    while (done < count) {
+        const int chunk = std::min(count - done, analyzer_.samples_to_next_frame());
+        const bool frame_due = analyzer_.write(mono + done, chunk);
+        // Internal sample k stands at input sample k * divisor (from the origin).
+        const int64_t at = position_ - origin_;
+        const auto due = static_cast<int>(ceil_div(at + chunk, divisor) - ceil_div(at, divisor));
+        voice_.render(carrier_.data() + rendered, flutter ? flutter + rendered : nullptr,
+                      pressure ? pressure + rendered : nullptr, due);
+        rendered += due;
+        position_ += chunk;
+        if (frame_due) {
+            if (live_.gliding() && live_.step()) apply_live();
+            Features features = analyzer_.analyse();
+            features.frame_end_sample += origin_;
+            features.onset_sample += origin_;
+            ControlFrame control = mapper_.map(features);
+            if (source_ != ProgramSource::external) voice_.apply(control);
+            if (observer) observer->on_frame(features, control);
+        }
+        done += chunk;
+    }
+    if (post_dirty_) {  // glides over an analysis frame: LiveSettings' steps join up
+        const int glide = std::max(rendered, analyzer_.hop_samples() / divisor);
+        for (auto& chain : chains_) chain.set_live(live_.now(), glide);
+        for (auto& chain : chains_) chain.set_pressure_reference(chains_.front().post().ceiling());
+        post_dirty_ = false;
+    }
+    for (size_t j = 0; j < chains_.size(); ++j) {
+        const bool last = j + 1 == chains_.size();
+        chains_[j].process(carrier_.data(), flutter, pressure, rendered, last,
+                           out[first_of_chain_[j]], count);
+    }
+    for (size_t k = 0; k < chain_of_.size(); ++k) {  // actuators sharing a chain: copies
+        const int first = first_of_chain_[static_cast<size_t>(chain_of_[k])];
+        if (first != static_cast<int>(k)) std::copy_n(out[first], count, out[k]);
+    }
+}
+
+}  // namespace tactus

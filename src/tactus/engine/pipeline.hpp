@@ -1,0 +1,91 @@
+// The pipeline of paper Figure 4 for one structural configuration (hop, windows, rates, band,
+// routing): mono audio -> analysis -> mapping -> synthesis -> one post chain per distinct
+// actuator profile -> actuator outputs. The Engine owns one, and while a structural change is
+// swapped in, two (engine.hpp). Live settings reach it through ask(); everything in it after
+// prepare() runs on the audio thread (or, before it is handed over, on the control thread that
+// primes it) and never allocates.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "tactus/analysis/analyzer.hpp"
+#include "tactus/engine/actuator_chain.hpp"
+#include "tactus/engine/live_settings.hpp"
+#include "tactus/engine/output_trim.hpp"
+#include "tactus/mapping/mapper.hpp"
+#include "tactus/synthesis/voice.hpp"
+
+namespace tactus {
+
+// Where the synthesis takes its vibration program from.
+enum class ProgramSource { analysis, external, both };
+
+// Receives every analysis frame and the control frame mapped from it, on the audio thread,
+// inside process(): an implementation must itself be real-time safe when used live.
+class FrameObserver {
+  public:
+    virtual ~FrameObserver() = default;
+    virtual void on_frame(const Features& features, const ControlFrame& control) noexcept = 0;
+    // The features on_frame() reads besides the onsets (all by default); the engine computes
+    // only these and what the mapping reads.
+    virtual FeatureSet reads() const noexcept { return {}; }
+};
+
+// The rates and sizes a pipeline is prepared for.
+struct PipelineSpec {
+    double sample_rate_hz = 48000;
+    int max_block = 512;             // mono samples one process() call takes at most
+    int64_t origin_sample = 0;       // the input sample its first sample is (frame positions)
+};
+
+class Pipeline {
+  public:
+    static constexpr double kMinInternalRateHz = 11025;
+
+    // Allocates. `outputs`: one per actuator (profiles; trims are the engine's).
+    void prepare(const PipelineSpec& spec, const Settings& settings,
+                 const std::vector<ActuatorOutput>& outputs);
+    void reset() noexcept;  // also to origin 0
+
+    void ask(P id, double value) noexcept { live_.ask(id, value); }
+    void glide_flattening(const FlatteningFilter::Design& design) noexcept;
+    void set_source(ProgramSource source) noexcept { source_ = source; }
+    void apply(ControlFrame frame) noexcept;  // an injected frame, from now
+    // The features the analysis computes beyond the mapping's (the engine's readers').
+    void set_extra_features(FeatureSet features) noexcept;
+
+    // mono: count <= max_block samples; out: one buffer per actuator. Frames go to `observer`
+    // when not null.
+    void process(const float* mono, float* const* out, int count,
+                 FrameObserver* observer) noexcept;
+
+    int rate_divisor() const { return rate_divisor_; }
+    double internal_rate_hz() const { return sample_rate_hz_ / rate_divisor_; }
+    int hop_samples() const { return analyzer_.hop_samples(); }
+    int latency() const;
+    int64_t position() const { return position_; }  // the next input sample it takes
+    const PostChain& post(int actuator) const;
+    int64_t clipped_samples() const;
+
+  private:
+    void apply_live() noexcept;
+    void update_features() noexcept;
+
+    double sample_rate_hz_ = 48000;
+    int rate_divisor_ = 1;
+    int64_t origin_ = 0, position_ = 0;
+    LiveSettings live_;
+    Analyzer analyzer_;
+    Mapper mapper_;
+    Voice voice_;
+    std::vector<ActuatorChain> chains_;  // one per distinct profile
+    std::vector<int> chain_of_;          // per actuator: its chain
+    std::vector<int> first_of_chain_;    // per chain: the first actuator it feeds
+    std::vector<float> carrier_, flutter_, pressure_;  // synthesis, internal rate, one block
+    ProgramSource source_ = ProgramSource::analysis;
+    FeatureSet extra_features_ = FeatureSet::none();
+    bool post_dirty_ = false;
+};
+
+}  // namespace tactus
