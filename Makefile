@@ -2,7 +2,7 @@
 BUILD := build/release
 JOBS ?= $(shell nproc)
 AMEN := /usr/share/sonic-pi/samples/loop_amen_full.flac
-TACTUS := $(BUILD)/apps/tactus/tactus
+TACTUS := $(BUILD)/bin/tactus
 
 .PHONY: setup build demo test test-asan fuzz eval bench bench-compare format clean
 
@@ -42,7 +42,7 @@ eval: build
 	/usr/bin/python3 eval/evaluate.py $(BUILD) --out eval/results.md
 
 bench: build
-	$(BUILD)/bench/tactus_bench
+	$(BUILD)/bin/tactus_bench
 
 bench-compare: build
 	/usr/bin/python3 bench/compare.py $(BUILD) --out bench/results.md

@@ -98,7 +98,7 @@ def main():
     if args.runs < 1 or args.long_runs < 1:
         sys.exit("bench/compare.py: --runs and --long-runs must be at least 1")
 
-    tactus = str((args.build_dir / "apps/tactus/tactus").resolve())
+    tactus = str((args.build_dir / "bin/tactus").resolve())
     for tool in (tactus, "aubioonset", "sox", "/usr/bin/time"):
         if not shutil.which(tool):
             sys.exit(f"bench/compare.py: {tool}: not found")

@@ -111,12 +111,12 @@ def main():
     parser.add_argument("--seed", type=int, default=1, help="corpus seed (1 is the tuning set)")
     args = parser.parse_args()
 
-    tactus = str(args.build_dir / "apps/tactus/tactus")
+    tactus = str(args.build_dir / "bin/tactus")
     work = args.work or pathlib.Path(tempfile.mkdtemp(prefix="tactus-eval-"))
     corpus = work / "corpus"
     renders = work / "renders"
     renders.mkdir(parents=True, exist_ok=True)
-    run([str(args.build_dir / "eval/make_drum_corpus"), str(corpus), str(args.seed)])
+    run([str(args.build_dir / "bin/make_drum_corpus"), str(corpus), str(args.seed)])
 
     # "tactus decided" scores the time each onset was decided (`tactus onsets`' second column)
     # instead of its estimated start: its latency, as bonk~'s times are.

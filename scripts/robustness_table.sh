@@ -6,7 +6,7 @@
 #   scripts/robustness_table.sh [build/release] > table.md
 set -uo pipefail
 build=$(realpath "${1:-build/release}")
-tactus="$build/apps/tactus/tactus"
+tactus="$build/bin/tactus"
 python=/usr/bin/python3
 work=$(mktemp -d)
 trap 'umount "$work/small" 2>/dev/null; rm -rf "$work"' EXIT

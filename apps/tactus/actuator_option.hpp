@@ -5,7 +5,7 @@
 #include <iostream>
 #include <string>
 
-#include "tactus/actuator/profile.hpp"
+#include "tactus/io/actuator_file.hpp"
 #include "tactus/actuator/warnings.hpp"
 
 namespace tactus::cli {

@@ -15,6 +15,7 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "pipeline_options.hpp"
+#include "tactus/io/actuator_file.hpp"
 #include "tactus/io/text_output.hpp"
 #include "tactus/perception/meter.hpp"
 

@@ -1,5 +1,6 @@
 // tactus meter FILE [--actuator NAME] [--contact-area CM2] [-o FILE.csv]: which channels of
 // touch a vibration file engages through an actuator, and how strongly (dB SL over time).
+#include "tactus/io/actuator_file.hpp"
 #include "tactus/perception/meter.hpp"
 
 #include <fmt/format.h>

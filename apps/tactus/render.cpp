@@ -14,6 +14,7 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "pipeline_options.hpp"
+#include "tactus/io/actuator_file.hpp"
 #include "tactus/io/audio_reader.hpp"
 #include "tactus/io/audio_writer.hpp"
 #include "tactus/io/temporary_path.hpp"

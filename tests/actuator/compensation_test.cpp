@@ -1,6 +1,7 @@
 // Actuator compensation: the target is the inverse displacement response inside the usable
 // band, bounded to +-12 dB; the measured response (sines through process()) follows it within
 // 1 dB for the voice coil and 2 dB for the narrow LRA (figures printed).
+#include "tactus/io/actuator_file.hpp"
 #include "tactus/actuator/compensation.hpp"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // Actuator profiles: the shipped TOML files load and describe their actuator class (voice coil:
 // flat displacement below resonance, -12 dB/octave above; LRA: a narrow peak at f0; no DC
 // without DC capability), and bad files give one-line errors naming file, line and key.
-#include "tactus/actuator/profile.hpp"
+#include "tactus/io/actuator_file.hpp"
 
 #include <gtest/gtest.h>
 #include <stdlib.h>

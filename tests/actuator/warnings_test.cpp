@@ -1,4 +1,5 @@
 // Warnings: what a preset asks of an actuator that it cannot do, one line each.
+#include "tactus/io/actuator_file.hpp"
 #include "tactus/actuator/warnings.hpp"
 
 #include <gtest/gtest.h>

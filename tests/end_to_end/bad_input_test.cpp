@@ -85,13 +85,31 @@ class BadInput : public tactus::test::Cli {
     }
     std::vector<float> rendered() const { return tactus::read_mono(out_).samples; }
 
+    // Runs the CLI as `nobody` when the tests run as root (root ignores file permissions). The
+    // repository may sit where `nobody` cannot read (a mode-700 /root), so `nobody` runs a copy of
+    // the program and its data installed in the test's own directory, with that directory as home.
+    CliResult run_unprivileged(const std::string& arguments) const {
+        if (geteuid() != 0) return run(arguments);
+        const fs::path bin = dir_ / "bin", data = dir_ / "share" / "tactus";
+        fs::create_directories(bin);
+        fs::create_directories(data);
+        fs::copy_file(TACTUS_CLI, bin / "tactus", fs::copy_options::overwrite_existing);
+        const fs::path built_data =
+            fs::path(TACTUS_CLI).parent_path().parent_path() / "share" / "tactus";
+        for (const char* folder : {"presets", "actuators"})
+            fs::copy(built_data / folder, data / folder,
+                     fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+        for (const fs::path& made : {dir_, bin, dir_ / "share", data})
+            fs::permissions(made, fs::perms::all);
+        for (const auto& entry : fs::recursive_directory_iterator(data))
+            if (entry.is_directory()) fs::permissions(entry.path(), fs::perms::all);
+        return run(arguments,
+                   "HOME=" + dir_.string() + " setpriv --reuid=65534 --regid=65534 --clear-groups ",
+                   bin / "tactus");
+    }
+
     fs::path out_;
 };
-
-// Runs the CLI as `nobody` when the tests run as root (root ignores file permissions).
-std::string as_unprivileged_user() {
-    return geteuid() == 0 ? "setpriv --reuid=65534 --regid=65534 --clear-groups " : "";
-}
 
 // --- audio inputs -------------------------------------------------------------------------
 
@@ -107,8 +125,8 @@ TEST_F(BadInput, UnreadableInputFile) {
     const fs::path input = drums("locked.wav", 1);
     fs::permissions(input, fs::perms::none);
     fs::permissions(dir_, fs::perms::all);
-    const CliResult r = run("render " + input.string() + " -o " + (dir_ / "x.wav").string(),
-                            as_unprivileged_user());
+    const CliResult r =
+        run_unprivileged("render " + input.string() + " -o " + (dir_ / "x.wav").string());
     EXPECT_NE(r.exit_code, 0);
     EXPECT_NE(r.err.find("locked.wav"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("Permission denied"), std::string::npos) << r.err;
@@ -371,8 +389,8 @@ TEST_F(BadInput, UnwritableDirectory) {
                                 fs::perms::others_exec);
     for (const char* command : {"render", "analyze"}) {
         const fs::path out = locked / (std::string(command) == "render" ? "out.wav" : "out.csv");
-        const CliResult r = run(std::string(command) + " " + input.string() + " -o " + out.string(),
-                                as_unprivileged_user());
+        const CliResult r =
+            run_unprivileged(std::string(command) + " " + input.string() + " -o " + out.string());
         EXPECT_NE(r.exit_code, 0) << command;
         EXPECT_NE(r.err.find(out.string() + ": cannot write"), std::string::npos) << r.err;
         EXPECT_NE(r.err.find("Permission denied"), std::string::npos) << r.err;

@@ -21,7 +21,7 @@
 #include "support/engine_blocks.hpp"
 #include "support/live_values.hpp"
 #include "support/signals.hpp"
-#include "tactus/actuator/profile.hpp"
+#include "tactus/io/actuator_file.hpp"
 #include "tactus/core/units.hpp"
 #include "tactus/engine/engine.hpp"
 #include "tactus/io/preset.hpp"

@@ -24,7 +24,7 @@
 #include "support/engine_blocks.hpp"
 #include "support/signals.hpp"
 #include "support/watchdog.hpp"
-#include "tactus/actuator/profile.hpp"
+#include "tactus/io/actuator_file.hpp"
 #include "tactus/io/preset.hpp"
 #include "tactus/core/units.hpp"
 #include "tactus/io/audio_reader.hpp"

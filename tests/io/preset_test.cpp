@@ -20,6 +20,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "tactus/io/search_path.hpp"
+
 namespace tactus {
 namespace {
 
@@ -274,15 +276,18 @@ TEST(Presets, FileErrorsNameTheFile) {
 class PresetPathEnvironment : public ::testing::Test {
   protected:
     void SetUp() override {
-        if (const char* old = std::getenv("TACTUS_PRESET_PATH")) saved_ = old;
+        for (const char* name : kNames)
+            if (const char* old = std::getenv(name)) saved_[name] = old;
     }
     void TearDown() override {
-        if (saved_)
-            ::setenv("TACTUS_PRESET_PATH", saved_->c_str(), 1);
-        else
-            ::unsetenv("TACTUS_PRESET_PATH");
+        for (const char* name : kNames)
+            if (saved_.count(name))
+                ::setenv(name, saved_[name].c_str(), 1);
+            else
+                ::unsetenv(name);
     }
-    std::optional<std::string> saved_;
+    static constexpr const char* kNames[] = {"TACTUS_PRESET_PATH", "XDG_DATA_HOME"};
+    std::map<std::string, std::string> saved_;
 };
 
 TEST_F(PresetPathEnvironment, SearchPathListingAndResolution) {
@@ -294,11 +299,20 @@ TEST_F(PresetPathEnvironment, SearchPathListingAndResolution) {
     write_file(b.path() / "notes.txt", "not a preset\n");
     const std::string value = a.path().string() + "::" + b.path().string() + ":";
     ::setenv("TACTUS_PRESET_PATH", value.c_str(), 1);
+    TemporaryDirectory data_home;
+    ::setenv("XDG_DATA_HOME", data_home.path().c_str(), 1);
 
+    // The variable's directories, the user's data directory, then the data beside the program.
     const auto dirs = preset_search_path();
-    ASSERT_EQ(dirs.size(), 3u);
+    ASSERT_EQ(dirs.size(), 4u);
     EXPECT_EQ(dirs[0], a.path());
     EXPECT_EQ(dirs[1], b.path());
+    EXPECT_EQ(dirs[2], data_home.path() / "tactus" / "presets");
+    EXPECT_EQ(dirs[3], installed_data_dir() / "presets");
+    fs::create_directories(dirs[2]);
+    write_file(dirs[2] / "mine.toml", "description = \"hidden by the variable\"\n");
+    write_file(dirs[2] / "home.toml", "description = \"user data\"\n");
+    EXPECT_EQ(resolve_preset("home"), dirs[2] / "home.toml");
 
     const auto presets = list_presets();
     std::map<std::string, PresetInfo> by_name;

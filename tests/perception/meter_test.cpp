@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "support/signals.hpp"
-#include "tactus/actuator/profile.hpp"
+#include "tactus/io/actuator_file.hpp"
 
 namespace tactus::perception {
 namespace {

@@ -6,6 +6,7 @@
 // and the final clip does not act; the flutter passes 2-40 Hz (last high-pass at
 // post.flutter_low_hz) through the 30 Hz peaking filter; the pressure arrives unfiltered; while
 // they are off their buffers change nothing, bit for bit.
+#include "tactus/io/actuator_file.hpp"
 #include "tactus/post/post_chain.hpp"
 
 #include <gtest/gtest.h>

@@ -25,6 +25,7 @@
 
 #include "support/live_values.hpp"
 #include "support/signals.hpp"
+#include "tactus/io/actuator_file.hpp"
 #include "tactus/io/preset.hpp"
 #include "tactus/engine/engine.hpp"
 #include "tactus/perception/meter.hpp"

@@ -24,11 +24,13 @@ struct CliResult {
 
 class Cli : public TempDirTest {
   protected:
-    // `prefix` goes before the executable (e.g. to run it as another user).
-    CliResult run(const std::string& arguments, const std::string& prefix = "") const {
+    // `prefix` goes before the executable (e.g. to run it as another user); `program` is the
+    // built CLI unless another copy is named.
+    CliResult run(const std::string& arguments, const std::string& prefix = "",
+                  const std::filesystem::path& program = TACTUS_CLI) const {
         const std::filesystem::path err = dir_ / "stderr.txt";
         const std::string command =
-            prefix + std::string(TACTUS_CLI) + " " + arguments + " 2>" + err.string();
+            prefix + program.string() + " " + arguments + " 2>" + err.string();
         FILE* pipe = popen(command.c_str(), "r");
         std::string out;
         char buffer[4096];

@@ -1,88 +1,12 @@
 #include "tactus/actuator/profile.hpp"
 
-#include <fmt/format.h>
-#include <toml++/toml.h>
-
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <iterator>
-#include <set>
-#include <stdexcept>
 
-#include "tactus/core/printable.hpp"
-#include "tactus/io/search_path.hpp"
 #include "tactus/core/units.hpp"
 
-#ifndef TACTUS_ACTUATOR_DIR
-#define TACTUS_ACTUATOR_DIR "actuators"
-#endif
-
 namespace tactus {
-namespace fs = std::filesystem;
 namespace {
-
-constexpr std::string_view kTypeNames[] = {"voice-coil", "lra", "erm"};
-
-// Reads a TOML table's keys with one-line errors "ORIGIN:LINE:COL: key: problem".
-class Reader {
-  public:
-    Reader(const toml::table& table, std::string_view origin, std::string prefix)
-        : table_(table), origin_(origin), prefix_(std::move(prefix)) {}
-
-    [[noreturn]] void fail(const toml::node* node, std::string_view key,
-                           std::string_view problem) const {
-        const auto& where = node ? node->source() : table_.source();
-        throw std::runtime_error(fmt::format("{}:{}:{}: {}: {}", origin_, where.begin.line,
-                                             where.begin.column,
-                                             printable(prefix_ + std::string(key)), problem));
-    }
-    const toml::node* get(std::string_view key) {
-        seen_.insert(std::string(key));
-        return table_.get(key);
-    }
-    double number(std::string_view key, double min, double max, double fallback,
-                  bool required = false) {
-        const toml::node* node = get(key);
-        if (!node) {
-            if (required) fail(nullptr, key, "missing (a number is required)");
-            return fallback;
-        }
-        if (!node->is_number()) fail(node, key, "must be a number");
-        const double v = *node->value<double>();
-        if (!std::isfinite(v) || v < min || v > max)
-            fail(node, key, fmt::format("{} is out of range: allowed {} to {}", v, min, max));
-        return v;
-    }
-    std::string text(std::string_view key, std::string fallback) {
-        const toml::node* node = get(key);
-        if (!node) return fallback;
-        if (!node->is_string()) fail(node, key, "must be a string in quotes");
-        return *node->value<std::string>();
-    }
-    template <size_t N>
-    size_t choice(std::string_view key, const std::string_view (&names)[N], size_t fallback) {
-        const toml::node* node = get(key);
-        if (!node) return fallback;
-        const std::string value = node->is_string() ? *node->value<std::string>() : "";
-        for (size_t i = 0; i < N; ++i)
-            if (names[i] == value) return i;
-        std::string allowed;
-        for (auto n : names) allowed += (allowed.empty() ? "" : ", ") + std::string(n);
-        fail(node, key, fmt::format("must be one of: {}", allowed));
-    }
-    // Every key must have been read: a misspelt key is an error, not silently ignored.
-    void reject_unknown_keys() const {
-        for (const auto& [key, node] : table_)
-            if (!seen_.contains(std::string(key.str()))) fail(&node, key.str(), "unknown key");
-    }
-
-  private:
-    const toml::table& table_;
-    std::string_view origin_;
-    std::string prefix_;
-    std::set<std::string> seen_;
-};
 
 double interpolate_db(const std::vector<std::pair<double, double>>& points, double f) {
     if (points.empty()) return 0.0;
@@ -98,7 +22,7 @@ double interpolate_db(const std::vector<std::pair<double, double>>& points, doub
 }  // namespace
 
 std::string_view type_name(ActuatorType type) {
-    return kTypeNames[static_cast<int>(type)];
+    return kActuatorTypeNames[static_cast<int>(type)];
 }
 
 double ActuatorProfile::response_db(double frequency_hz) const {
@@ -122,93 +46,6 @@ double ActuatorProfile::response_db(double frequency_hz) const {
 
 double ActuatorProfile::displacement_um_at(double frequency_hz) const {
     return displacement_um * db_to_gain(response_db(frequency_hz));
-}
-
-std::vector<fs::path> actuator_search_path() {
-    return search_path("TACTUS_ACTUATOR_PATH", TACTUS_ACTUATOR_DIR);
-}
-
-fs::path resolve_actuator(std::string_view name_or_path) {
-    return resolve_toml(name_or_path, actuator_search_path(), "actuator");
-}
-
-ActuatorProfile parse_actuator(std::string_view toml_text, std::string_view origin) {
-    toml::table table;
-    try {
-        table = toml::parse(toml_text, origin);
-    } catch (const toml::parse_error& e) {
-        throw std::runtime_error(fmt::format("{}:{}:{}: TOML syntax error: {}", origin,
-                                             e.source().begin.line, e.source().begin.column,
-                                             printable(e.description())));
-    }
-    ActuatorProfile a;
-    Reader top(table, origin, "");
-    a.name = top.text("name", fs::path(origin).stem().string());
-    a.description = top.text("description", "");
-    a.type = static_cast<ActuatorType>(top.choice("type", kTypeNames, 0));
-    a.displacement_um = top.number("displacement_um", 1e-3, 1e4, 0, true);
-    a.reference_hz = top.number("reference_hz", 0.1, 20000, 0, true);
-    a.max_drive = top.number("max_drive", 1e-3, 1, 1);
-    if (const toml::node* dc = top.get("dc")) {
-        if (!dc->is_boolean()) top.fail(dc, "dc", "must be true or false");
-        a.dc = *dc->value<bool>();
-    }
-    a.band_low_hz = top.number("band_low_hz", 0, 20000, 0, true);
-    a.band_high_hz = top.number("band_high_hz", 0.1, 20000, 0, true);
-    if (a.band_high_hz <= a.band_low_hz)
-        top.fail(top.get("band_high_hz"), "band_high_hz", "must be above band_low_hz");
-    if (!a.dc && a.band_low_hz <= 0)
-        top.fail(top.get("band_low_hz"), "band_low_hz", "must be above 0 without dc = true");
-    a.rolloff_db_per_octave = top.number("rolloff_db_per_octave", 0, 48, 12);
-    a.rise_ms = top.number("rise_ms", 0, 1000, 0);
-
-    if (const toml::node* node = top.get("response")) {
-        if (!node->is_table()) top.fail(node, "response", "must be a table [response]");
-        Reader response(*node->as_table(), origin, "response.");
-        constexpr std::string_view kKinds[] = {"none", "low-pass", "band-pass"};
-        a.resonance = static_cast<ResonanceKind>(response.choice("kind", kKinds, 0));
-        if (a.resonance != ResonanceKind::none) {
-            a.resonance_hz = response.number("resonance_hz", 0.1, 20000, 0, true);
-            a.q = response.number("q", 0.1, 100, 1);
-        }
-        if (const toml::node* pts = response.get("points")) {
-            const toml::array* array = pts->as_array();
-            if (!array) response.fail(pts, "points", "must be an array of [Hz, dB] pairs");
-            for (const toml::node& p : *array) {
-                const toml::array* pair = p.as_array();
-                if (!pair || pair->size() != 2 || !(*pair)[0].is_number() ||
-                    !(*pair)[1].is_number())
-                    response.fail(&p, "points", "each point must be [Hz, dB]");
-                const double f = *(*pair)[0].value<double>(), db = *(*pair)[1].value<double>();
-                if (!(f > 0 && f <= 20000) || !(std::abs(db) <= 100))
-                    response.fail(&p, "points", "Hz must be in (0, 20000], dB in [-100, 100]");
-                if (!a.points.empty() && f <= a.points.back().first)
-                    response.fail(&p, "points", "frequencies must increase");
-                a.points.emplace_back(f, db);
-            }
-        }
-        response.reject_unknown_keys();
-    }
-    if (a.resonance == ResonanceKind::band_pass && a.dc)
-        top.fail(top.get("dc"), "dc", "a band-pass (resonant) actuator cannot hold an offset");
-    if (const toml::node* node = top.get("erm")) {
-        if (!node->is_table()) top.fail(node, "erm", "must be a table [erm]");
-        Reader erm(*node->as_table(), origin, "erm.");
-        a.erm_min_drive_hz = erm.number("frequency_at_min_drive_hz", 1, 1000, 0, true);
-        a.erm_max_drive_hz = erm.number("frequency_at_max_drive_hz", 1, 1000, 0, true);
-        erm.reject_unknown_keys();
-    }
-    if (a.type == ActuatorType::erm && a.erm_max_drive_hz <= 0)
-        top.fail(nullptr, "erm", "an ERM profile needs [erm] frequency_at_min/max_drive_hz");
-    top.reject_unknown_keys();
-    return a;
-}
-
-ActuatorProfile load_actuator(const fs::path& path) {
-    std::ifstream in(path);
-    if (!in) throw std::runtime_error(fmt::format("actuator file '{}' not found", path.string()));
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    return parse_actuator(text, path.string());
 }
 
 }  // namespace tactus

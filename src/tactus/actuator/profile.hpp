@@ -12,10 +12,10 @@
 //              (interpolated on log-frequency, flat beyond its ends; added to the resonance)
 //   [erm] frequency_at_min_drive_hz, frequency_at_max_drive_hz  (ERM: frequency follows drive)
 // Values in the shipped profiles are typical of the actuator class, not measurements: measure
-// actuators loaded by skin, free-air responses differ a lot (perception.md).
+// actuators loaded by skin, free-air responses differ a lot (perception.md). Reading them from
+// files: io/actuator_file.hpp.
 #pragma once
 
-#include <filesystem>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -52,15 +52,8 @@ struct ActuatorProfile {
     }
 };
 
+inline constexpr std::string_view kActuatorTypeNames[] = {"voice-coil", "lra", "erm"};
 std::string_view type_name(ActuatorType type);
-
-// Directories searched for profiles by name: $TACTUS_ACTUATOR_PATH, then actuators/.
-std::vector<std::filesystem::path> actuator_search_path();
-// A name ("voice-coil") or a path to a .toml file.
-std::filesystem::path resolve_actuator(std::string_view name_or_path);
-// Reads and validates a profile; throws std::runtime_error "FILE:LINE:COL: key: problem".
-ActuatorProfile load_actuator(const std::filesystem::path& path);
-ActuatorProfile parse_actuator(std::string_view toml_text, std::string_view origin);
 
 constexpr std::string_view kDefaultActuator = "voice-coil";
 

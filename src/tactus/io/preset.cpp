@@ -8,10 +8,6 @@
 #include "tactus/core/printable.hpp"
 #include "tactus/io/search_path.hpp"
 
-#ifndef TACTUS_PRESET_DIR
-#define TACTUS_PRESET_DIR "presets"
-#endif
-
 namespace tactus {
 namespace fs = std::filesystem;
 namespace {
@@ -71,7 +67,7 @@ std::string description_of(const fs::path& path) {
 }  // namespace
 
 std::vector<fs::path> preset_search_path() {
-    return search_path("TACTUS_PRESET_PATH", TACTUS_PRESET_DIR);
+    return search_path("TACTUS_PRESET_PATH", "presets");
 }
 
 std::vector<PresetInfo> list_presets() {

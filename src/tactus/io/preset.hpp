@@ -20,8 +20,7 @@ struct PresetInfo {
     std::string description;
 };
 
-// Directories searched for presets by name: $TACTUS_PRESET_PATH (colon separated), then the
-// installed/source presets folder.
+// Directories searched for presets by name (io/search_path.hpp).
 std::vector<std::filesystem::path> preset_search_path();
 std::vector<PresetInfo> list_presets();
 

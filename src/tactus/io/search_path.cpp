@@ -10,8 +10,15 @@
 
 namespace tactus {
 
+std::filesystem::path installed_data_dir() {
+    std::error_code error;
+    const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", error);
+    if (error) return {};
+    return program.parent_path().parent_path() / "share" / "tactus";
+}
+
 std::vector<std::filesystem::path> search_path(const char* environment_variable,
-                                               const std::filesystem::path& fallback) {
+                                               std::string_view folder) {
     std::vector<std::filesystem::path> dirs;
     if (const char* env = std::getenv(environment_variable)) {
         std::string_view rest = env;
@@ -22,7 +29,12 @@ std::vector<std::filesystem::path> search_path(const char* environment_variable,
             rest.remove_prefix(colon + 1);
         }
     }
-    dirs.push_back(fallback);
+    if (const char* data_home = std::getenv("XDG_DATA_HOME"); data_home && *data_home)
+        dirs.push_back(std::filesystem::path(data_home) / "tactus" / folder);
+    else if (const char* home = std::getenv("HOME"); home && *home)
+        dirs.push_back(std::filesystem::path(home) / ".local" / "share" / "tactus" / folder);
+    if (const auto installed = installed_data_dir(); !installed.empty())
+        dirs.push_back(installed / folder);
     return dirs;
 }
 
@@ -43,14 +55,18 @@ std::filesystem::path resolve_toml(std::string_view name_or_path,
                                    std::string_view kind) {
     namespace fs = std::filesystem;
     const fs::path given(name_or_path);
+    std::error_code error;
     if (given.extension() == ".toml" || given.has_parent_path()) {
-        if (!fs::is_regular_file(given))
+        if (!fs::is_regular_file(given, error))
             throw std::runtime_error(
-                fmt::format("{} file '{}' not found", kind, printable(name_or_path)));
+                fmt::format("{} file '{}' {}", kind, printable(name_or_path),
+                            error && error != std::errc::no_such_file_or_directory ? error.message()
+                                                                                   : "not found"));
         return given;
     }
+    // A directory the user cannot read (another user's home) is passed over like a missing one.
     for (const auto& dir : dirs)
-        if (fs::is_regular_file(dir / (given.string() + ".toml")))
+        if (fs::is_regular_file(dir / (given.string() + ".toml"), error))
             return dir / (given.string() + ".toml");
     std::string known;
     for (const auto& [name, path] : toml_files(dirs)) known += (known.empty() ? "" : ", ") + name;

@@ -1,0 +1,27 @@
+# `cmake --install`: headers, the two libraries, the tactus program, presets and actuator
+# profiles, a CMake package (find_package(tactus): tactus::dsp, tactus::files) and pkg-config
+# files (tactus-dsp.pc, tactus.pc).
+include(CMakePackageConfigHelpers)
+
+install(TARGETS tactus_dsp tactus_files EXPORT tactusTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(TARGETS tactus_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/tactus DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+        FILES_MATCHING PATTERN "*.hpp")
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/presets ${PROJECT_SOURCE_DIR}/actuators
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/tactus)
+
+set(package_dir ${CMAKE_INSTALL_LIBDIR}/cmake/tactus)
+install(EXPORT tactusTargets NAMESPACE tactus:: DESTINATION ${package_dir})
+configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/tactusConfig.cmake.in
+                              ${PROJECT_BINARY_DIR}/tactusConfig.cmake
+                              INSTALL_DESTINATION ${package_dir})
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/tactusConfigVersion.cmake
+                                 COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/tactusConfig.cmake
+              ${PROJECT_BINARY_DIR}/tactusConfigVersion.cmake DESTINATION ${package_dir})
+
+foreach(pc tactus-dsp tactus)
+  configure_file(${CMAKE_CURRENT_LIST_DIR}/${pc}.pc.in ${PROJECT_BINARY_DIR}/${pc}.pc @ONLY)
+  install(FILES ${PROJECT_BINARY_DIR}/${pc}.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+endforeach()
