@@ -1,0 +1,104 @@
+// The engine as a live front end drives it, at 48 kHz in 64-frame blocks (a typical audio
+// device's period), on the Amen break:
+//   EngineBlock        each block's cost on the audio thread: p50, p99 and max in microseconds,
+//                      against the block's period (1333 us at 64 frames, 48 kHz).
+//   LiveChange/<key>   Engine::set() of a live parameter on the control thread (ns), with the
+//                      audio thread taking the change at its next block.
+//   StructuralSwap     Engine::set() of a structural parameter (the hop): a new pipeline built
+//                      and primed with the input ring on the control thread (ms).
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <vector>
+
+#include "bench_input.hpp"
+#include "tactus/engine/engine.hpp"
+
+namespace tactus::bench {
+namespace {
+
+constexpr double kLiveRateHz = 48000;
+constexpr int kLiveBlock = 64;
+using Clock = std::chrono::steady_clock;
+
+double microseconds(Clock::duration d) {
+    return std::chrono::duration<double, std::micro>(d).count();
+}
+
+// Runs blocks of amen() through `engine` from `at` (wrapping), returns the next position.
+size_t run_blocks(Engine& engine, size_t at, size_t blocks) {
+    const std::vector<float>& in = amen();
+    static std::vector<float> out(kLiveBlock);
+    for (size_t b = 0; b < blocks; ++b) {
+        if (at + kLiveBlock > in.size()) at = 0;
+        engine.process(in.data() + at, out.data(), kLiveBlock);
+        at += kLiveBlock;
+    }
+    return at;
+}
+
+void EngineBlock(benchmark::State& state) {
+    const std::vector<float>& in = amen();
+    Engine engine;
+    engine.prepare(kLiveRateHz, kLiveBlock);
+    std::vector<float> out(kLiveBlock);
+    std::vector<double> us;
+    us.reserve(in.size() / kLiveBlock * 16);
+    for (auto _ : state) {
+        for (size_t i = 0; i + kLiveBlock <= in.size(); i += kLiveBlock) {
+            const auto start = Clock::now();
+            engine.process(in.data() + i, out.data(), kLiveBlock);
+            us.push_back(microseconds(Clock::now() - start));
+        }
+        benchmark::DoNotOptimize(out.data());
+    }
+    std::sort(us.begin(), us.end());
+    state.counters["p50_us"] = us[us.size() / 2];
+    state.counters["p99_us"] = us[us.size() * 99 / 100];
+    state.counters["max_us"] = us.back();
+    state.counters["period_us"] = kLiveBlock / kLiveRateHz * 1e6;
+}
+BENCHMARK(EngineBlock)->Unit(benchmark::kMillisecond);
+
+// Turns `id` between two values, one turn per block; times set() alone.
+void live_change(benchmark::State& state, P id, double a, double b) {
+    Engine engine;
+    engine.prepare(kLiveRateHz, kLiveBlock);
+    size_t at = run_blocks(engine, 0, 100);
+    bool flip = false;
+    for (auto _ : state) {
+        const auto start = Clock::now();
+        engine.set(id, flip ? a : b);
+        state.SetIterationTime(std::chrono::duration<double>(Clock::now() - start).count());
+        at = run_blocks(engine, at, 1);
+        flip = !flip;
+    }
+}
+BENCHMARK_CAPTURE(live_change, envelope.decay_ms, P::envelope_decay_ms, 100, 200)
+    ->UseManualTime();
+BENCHMARK_CAPTURE(live_change, post.drive_db, P::post_drive_db, 0, 6)->UseManualTime();
+BENCHMARK_CAPTURE(live_change, post.flatten_level_db, P::post_flatten_level_db, 20, 30)
+    ->UseManualTime();
+
+// Turns the hop between 2 and 3 ms while audio runs; times set() alone, then runs the blocks
+// that finish the crossfade (so the next set() frees the pipeline it replaced).
+void StructuralSwap(benchmark::State& state) {
+    Engine engine;
+    engine.prepare(kLiveRateHz, kLiveBlock);
+    const auto ring_blocks =
+        static_cast<size_t>(Engine::kPrimeSeconds * kLiveRateHz / kLiveBlock) + 1;
+    size_t at = run_blocks(engine, 0, ring_blocks);
+    bool flip = false;
+    for (auto _ : state) {
+        const auto start = Clock::now();
+        engine.set(P::analysis_hop_ms, flip ? 2.0 : 3.0);
+        state.SetIterationTime(std::chrono::duration<double>(Clock::now() - start).count());
+        at = run_blocks(engine, at, 20);
+        flip = !flip;
+    }
+}
+BENCHMARK(StructuralSwap)->UseManualTime()->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace tactus::bench
