@@ -78,8 +78,7 @@ void live_change(benchmark::State& state, P id, double a, double b) {
         flip = !flip;
     }
 }
-BENCHMARK_CAPTURE(live_change, envelope.decay_ms, P::envelope_decay_ms, 100, 200)
-    ->UseManualTime();
+BENCHMARK_CAPTURE(live_change, envelope.decay_ms, P::envelope_decay_ms, 100, 200)->UseManualTime();
 BENCHMARK_CAPTURE(live_change, post.drive_db, P::post_drive_db, 0, 6)->UseManualTime();
 BENCHMARK_CAPTURE(live_change, post.flatten_level_db, P::post_flatten_level_db, 20, 30)
     ->UseManualTime();

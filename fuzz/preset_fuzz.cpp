@@ -1,8 +1,11 @@
 // libFuzzer target: any bytes as a preset's TOML text. A preset either applies or throws
 // std::runtime_error with a one-line message; anything else (crash, other exception, a
-// sanitizer report, a value outside its table range) is a finding.
+// sanitizer report, a value outside its table range, settings that preset_text() does not
+// write back bit for bit) is a finding.
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 #include <string_view>
 
@@ -18,5 +21,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         tactus::fuzz::check_message(e.what());
     }
     tactus::fuzz::check_in_range(settings);
+    tactus::Settings again;
+    tactus::apply_preset_text(again, tactus::preset_text(settings, "state"), "state.toml");
+    for (const tactus::ParamSpec& s : tactus::param_table()) {
+        const double a = settings[s.param], b = again[s.param];
+        if (std::memcmp(&a, &b, sizeof a) != 0) std::abort();
+    }
     return 0;
 }

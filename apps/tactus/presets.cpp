@@ -1,11 +1,15 @@
-// tactus presets [--params]: the presets found, or the parameter table they draw on.
+// tactus presets [--params | --save FILE]: the presets found, the parameter table they draw
+// on, or a preset (--preset and --set applied) saved with every parameter.
 #include <fmt/format.h>
 
 #include <iostream>
 
 #include "commands.hpp"
-#include "tactus/params/params.hpp"
+#include "common.hpp"
+#include "pipeline_options.hpp"
 #include "tactus/io/preset.hpp"
+#include "tactus/io/text_output.hpp"
+#include "tactus/params/params.hpp"
 
 namespace tactus::cli {
 namespace {
@@ -28,14 +32,49 @@ void print_params() {
     }
 }
 
+struct Options {
+    bool params = false;
+    std::filesystem::path save;
+    std::string description;
+    bool force = false;
+    PipelineOptions pipeline;
+};
+
+// Every parameter of --preset with --set applied, written atomically to options.save.
+void save_preset(const Options& o) {
+    const std::filesystem::path source = resolve_preset(o.pipeline.preset);
+    if (!is_stdout(o.save)) check_output(source, o.save, o.force);
+    const Settings settings = o.pipeline.resolve();
+    std::string description = o.description;
+    if (description.empty()) {
+        description = "from " + o.pipeline.preset;
+        for (const auto& a : o.pipeline.assignments) description += " " + a;
+    }
+    TextOutput out(o.save);
+    out.stream() << preset_text(settings, description);
+    out.commit();
+}
+
 }  // namespace
 
 void add_presets(CLI::App& app) {
-    auto params = std::make_shared<bool>(false);
-    CLI::App* command = app.add_subcommand("presets", "list presets (TOML files)");
-    command->add_flag("--params", *params, "list every parameter a preset or --set can change");
-    command->callback([params] {
-        if (*params) return print_params();
+    auto options = std::make_shared<Options>();
+    CLI::App* command =
+        app.add_subcommand("presets", "list, describe or save presets (TOML files)");
+    command->add_flag("--params", options->params,
+                      "list every parameter a preset or --set can change");
+    command
+        ->add_option("--save", options->save,
+                     "write --preset with --set applied, every parameter, to FILE.toml (- for "
+                     "stdout)")
+        ->excludes("--params");
+    command->add_option("--description", options->description,
+                        "the saved preset's description (default: how it was made)");
+    options->pipeline.add_to(*command);
+    add_force_option(*command, options->force);
+    command->callback([options] {
+        if (options->params) return print_params();
+        if (!options->save.empty()) return save_preset(*options);
         for (const auto& p : list_presets())
             std::cout << fmt::format("{:<16} {}  ({})\n", p.name, p.description, p.path.string());
     });

@@ -48,6 +48,26 @@ TEST_F(Cli, PresetsListsTfdAndParameters) {
     EXPECT_NE(params.out.find("envelope.decay_ms"), std::string::npos);
 }
 
+// A preset saved with --set applied renders the same samples as the preset and the --set.
+TEST_F(Cli, SavedPresetRendersBitForBit) {
+    const fs::path saved = dir_ / "mine.toml";
+    const std::string change = " --preset four-channel --set envelope.decay_ms=90.125";
+    Result r = run("presets --save " + saved.string() + change);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    r = run("presets --save " + saved.string() + " --preset tfd");
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.err.find("already exists"), std::string::npos) << r.err;
+
+    const fs::path a = dir_ / "a.wav", b = dir_ / "b.wav";
+    ASSERT_EQ(run("render " + kAmen + " -o " + a.string() + change).exit_code, 0);
+    ASSERT_EQ(
+        run("render " + kAmen + " -o " + b.string() + " --preset " + saved.string()).exit_code, 0);
+    const auto x = tactus::read_mono(a).samples, y = tactus::read_mono(b).samples;
+    ASSERT_EQ(x.size(), y.size());
+    EXPECT_TRUE(std::equal(x.begin(), x.end(), y.begin()));
+    EXPECT_GT(*std::max_element(x.begin(), x.end()), 0.1f);
+}
+
 TEST_F(Cli, RenderWritesFloatWavWithChannelsAtInputRate) {
     const fs::path out = dir_ / "amen.vibration.wav";
     const Result r = run("render " + kAmen + " -o " + out.string() + " --channels 3");

@@ -36,10 +36,10 @@ std::map<uint32_t, IdLine> committed_ids() {
                     extra.empty())
             << "param_ids.txt:" << number << ": expected '<id> <key> [retired]': " << line;
         entry.retired = mark == "retired";
-        EXPECT_TRUE(keys.insert(entry.key).second) << "param_ids.txt:" << number << ": "
-                                                   << entry.key << " listed twice";
-        EXPECT_TRUE(ids.emplace(id, entry).second) << "param_ids.txt:" << number << ": id "
-                                                   << id << " listed twice";
+        EXPECT_TRUE(keys.insert(entry.key).second)
+            << "param_ids.txt:" << number << ": " << entry.key << " listed twice";
+        EXPECT_TRUE(ids.emplace(id, entry).second)
+            << "param_ids.txt:" << number << ": id " << id << " listed twice";
     }
     return ids;
 }
@@ -56,8 +56,8 @@ TEST(ParamIds, EveryParameterKeepsItsCommittedId) {
             continue;
         }
         EXPECT_EQ(line->second.key, key)
-            << "id " << s.id << " belongs to " << line->second.key << " in param_ids.txt; "
-            << key << " may not take it (a renamed parameter changes its line's key)";
+            << "id " << s.id << " belongs to " << line->second.key << " in param_ids.txt; " << key
+            << " may not take it (a renamed parameter changes its line's key)";
         EXPECT_FALSE(line->second.retired)
             << "id " << s.id << " is retired: " << key << " may not reuse it";
     }

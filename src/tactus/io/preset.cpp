@@ -3,7 +3,11 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include <algorithm>
+#include <cstdint>
+#include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "tactus/core/printable.hpp"
 #include "tactus/io/search_path.hpp"
@@ -16,21 +20,39 @@ std::string where(std::string_view origin, const toml::source_region& region) {
     return fmt::format("{}:{}:{}", origin, region.begin.line, region.begin.column);
 }
 
-void apply_node(Settings& settings, const std::string& key, const toml::node& node,
+// The file's `format` (1 when absent); refuses a format newer than this library reads.
+int format_of(const toml::table& table, std::string_view origin) {
+    const toml::node* node = table.get("format");
+    if (!node) return 1;
+    const auto format = node->value<int64_t>();
+    if (!node->is_integer() || *format < 1)
+        throw std::runtime_error(fmt::format("{}: 'format' must be a whole number from 1",
+                                             where(origin, node->source())));
+    if (*format > kPresetFormat)
+        throw std::runtime_error(
+            fmt::format("{}: format {} is newer than this tactus reads ({}): update tactus",
+                        where(origin, node->source()), *format, kPresetFormat));
+    return static_cast<int>(*format);
+}
+
+void apply_node(Settings& settings, const std::string& path, const toml::node& node, int format,
                 std::string_view origin) {
     if (const auto* table = node.as_table()) {
         for (const auto& [name, child] : *table)
-            apply_node(settings,
-                       key.empty() ? std::string(name.str()) : key + "." + std::string(name.str()),
-                       child, origin);
+            apply_node(
+                settings,
+                path.empty() ? std::string(name.str()) : path + "." + std::string(name.str()),
+                child, format, origin);
         return;
     }
-    if (key == "description" || key == "name") {
+    if (path == "format") return;  // format_of() read it
+    if (path == "description" || path == "name") {
         if (!node.is_string())
             throw std::runtime_error(
-                fmt::format("{}: '{}' must be a string", where(origin, node.source()), key));
+                fmt::format("{}: '{}' must be a string", where(origin, node.source()), path));
         return;
     }
+    const std::string key(current_key(path, format));
     const auto id = find_param(key);
     if (!id)
         throw std::runtime_error(fmt::format("{}: unknown key '{}' (did you mean '{}'?)",
@@ -53,6 +75,25 @@ void apply_node(Settings& settings, const std::string& key, const toml::node& no
     } catch (const std::invalid_argument& e) {
         throw std::runtime_error(fmt::format("{}: {}", where(origin, node.source()), e.what()));
     }
+}
+
+// One value as TOML: a toggle as a boolean, a choice by name, a real in its shortest form that
+// reads back as the same double.
+std::string toml_value(const Settings& settings, const ParamSpec& s) {
+    const double v = settings[s.param];
+    switch (s.type) {
+        case ParamType::toggle:
+            return v != 0 ? "true" : "false";
+        case ParamType::choice:
+            return fmt::format("\"{}\"", s.choices[static_cast<size_t>(v)]);
+        case ParamType::integer:
+            return fmt::format("{}", static_cast<int64_t>(v));
+        case ParamType::real:
+            break;
+    }
+    std::string text = fmt::format("{}", v);
+    if (text.find_first_of(".e") == std::string::npos) text += ".0";  // a TOML float: -0.0 stays
+    return text;
 }
 
 std::string description_of(const fs::path& path) {
@@ -90,7 +131,7 @@ void apply_preset_text(Settings& settings, std::string_view toml_text, std::stri
                                              printable(e.description())));
     }
     Settings candidate = settings;  // all or nothing
-    apply_node(candidate, "", table, origin);
+    apply_node(candidate, "", table, format_of(table, origin), origin);
     settings = candidate;
 }
 
@@ -106,8 +147,37 @@ void apply_preset_file(Settings& settings, const fs::path& path) {
                                              where(path.string(), e.source()), description));
     }
     Settings candidate = settings;
-    apply_node(candidate, "", table, path.string());
+    apply_node(candidate, "", table, format_of(table, path.string()), path.string());
     settings = candidate;
+}
+
+std::string_view current_key(std::string_view key, int format, std::span<const KeyRename> renames) {
+    for (const KeyRename& r : renames)
+        if (format < r.since && key == r.old_key) key = r.new_key;
+    return key;
+}
+
+std::string preset_text(const Settings& settings, std::string_view description) {
+    std::ostringstream quoted;
+    quoted << toml::value<std::string>(std::string(description));
+    std::string text = fmt::format(
+        "# tactus preset: every parameter (`tactus presets --params` describes each)\n"
+        "format = {}\ndescription = {}\n",
+        kPresetFormat, quoted.str());
+    // One table per first part of the keys, in the order the parameter table first names it.
+    std::vector<std::string_view> groups;
+    for (const ParamSpec& s : param_table()) {
+        const std::string_view group = s.key.substr(0, s.key.find('.'));
+        if (std::find(groups.begin(), groups.end(), group) == groups.end()) groups.push_back(group);
+    }
+    for (const std::string_view group : groups) {
+        text += fmt::format("\n[{}]\n", group);
+        for (const ParamSpec& s : param_table())
+            if (s.key.substr(0, s.key.find('.')) == group)
+                text += fmt::format("{} = {}\n", s.key.substr(group.size() + 1),
+                                    toml_value(settings, s));
+    }
+    return text;
 }
 
 void apply_assignment(Settings& settings, std::string_view assignment) {
