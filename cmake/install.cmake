@@ -21,6 +21,8 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/tactusConfigVersion.cmake
 install(FILES ${PROJECT_BINARY_DIR}/tactusConfig.cmake
               ${PROJECT_BINARY_DIR}/tactusConfigVersion.cmake DESTINATION ${package_dir})
 
+# The .pc files find the prefix from their own folder: the tree can be installed anywhere.
+file(RELATIVE_PATH pc_to_prefix /${CMAKE_INSTALL_LIBDIR}/pkgconfig /)
 foreach(pc tactus-dsp tactus)
   configure_file(${CMAKE_CURRENT_LIST_DIR}/${pc}.pc.in ${PROJECT_BINARY_DIR}/${pc}.pc @ONLY)
   install(FILES ${PROJECT_BINARY_DIR}/${pc}.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
