@@ -19,11 +19,13 @@ class ScopedFlushDenormals {
     static constexpr unsigned kFtzDaz = 0x8040;  // MXCSR bits 15 (FTZ) and 6 (DAZ)
     unsigned saved_;
 #elif defined(__aarch64__)
+    // The "memory" clobber keeps the scope's loads and stores (a process() call's work)
+    // between the two writes.
     ScopedFlushDenormals() noexcept {
         __asm__ __volatile__("mrs %0, fpcr" : "=r"(saved_));
-        __asm__ __volatile__("msr fpcr, %0" : : "r"(saved_ | kFz));
+        __asm__ __volatile__("msr fpcr, %0" : : "r"(saved_ | kFz) : "memory");
     }
-    ~ScopedFlushDenormals() { __asm__ __volatile__("msr fpcr, %0" : : "r"(saved_)); }
+    ~ScopedFlushDenormals() { __asm__ __volatile__("msr fpcr, %0" : : "r"(saved_) : "memory"); }
 
   private:
     static constexpr unsigned long kFz = 1ul << 24;  // FPCR bit 24 (FZ), Arm ARM C5.2.8
