@@ -13,9 +13,9 @@
 #include "tactus/analysis/noisiness.hpp"
 #include "tactus/analysis/onset_detector.hpp"
 #include "tactus/analysis/pitch_yin.hpp"
-#include "tactus/dsp/sample_history.hpp"
 #include "tactus/analysis/stft_frame.hpp"
 #include "tactus/core/units.hpp"
+#include "tactus/dsp/sample_history.hpp"
 
 namespace tactus::bench {
 namespace {
@@ -105,11 +105,11 @@ void Loudness(benchmark::State& state) {
     const std::vector<float>& in = amen();
     const int hop = hop_samples();
     tactus::Loudness loudness;
-    loudness.prepare(kRateHz, settings[P::loudness_window_ms]);
+    loudness.prepare({.sample_rate_hz = kRateHz}, settings[P::loudness_window_ms]);
     for (auto _ : state) {
         loudness.reset();
         for (size_t i = 0; i + hop <= in.size(); i += hop) {
-            loudness.write(in.data() + i, hop);
+            loudness.process(in.data() + i, hop);
             benchmark::DoNotOptimize(loudness.loudness_db());
         }
     }
@@ -120,8 +120,10 @@ BENCHMARK(Loudness);
 void PitchYinAnalyse(benchmark::State& state) {
     const Settings s;
     PitchYin pitch;
-    pitch.prepare(kRateHz, s[P::pitch_min_hz], std::min(s[P::pitch_max_hz], 0.45 * kRateHz),
-                  s[P::pitch_threshold]);  // as the Analyzer clamps it
+    pitch.prepare({.sample_rate_hz = kRateHz},
+                  {.min_hz = s[P::pitch_min_hz],
+                   .max_hz = std::min(s[P::pitch_max_hz], 0.45 * kRateHz),
+                   .threshold = s[P::pitch_threshold]});  // as the Analyzer clamps it
     per_frame(state, pitch.span_samples(),
               [&](const SampleHistory& h) { benchmark::DoNotOptimize(pitch.analyse(h)); });
 }
@@ -130,7 +132,7 @@ BENCHMARK(PitchYinAnalyse);
 void OnsetDetectorAnalyse(benchmark::State& state) {
     const Settings s;
     OnsetDetector onsets;
-    onsets.prepare(kRateHz, hop_samples(),
+    onsets.prepare({.sample_rate_hz = kRateHz}, hop_samples(),
                    {s[P::onset_window_ms], s[P::onset_threshold], s[P::onset_ratio],
                     s[P::onset_history_ms], s[P::onset_min_interval_ms]});
     per_frame(state, onsets.span_samples(),
@@ -142,12 +144,12 @@ BENCHMARK(OnsetDetectorAnalyse);
 void WholeAnalyzer(benchmark::State& state) {
     const std::vector<float>& in = amen();
     Analyzer analyzer;
-    analyzer.prepare(kRateHz, Settings{});
+    analyzer.prepare({.sample_rate_hz = kRateHz}, Settings{});
     const int hop = analyzer.hop_samples();
     for (auto _ : state) {
         analyzer.reset();
         for (size_t i = 0; i + hop <= in.size(); i += hop)
-            if (analyzer.write(in.data() + i, hop)) benchmark::DoNotOptimize(analyzer.analyse());
+            if (analyzer.process(in.data() + i, hop)) benchmark::DoNotOptimize(analyzer.analyse());
     }
     set_items(state, in.size(), "samples");
 }

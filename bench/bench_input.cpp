@@ -58,12 +58,12 @@ double internal_rate_hz() {
 const std::vector<Features>& amen_features() {
     static const std::vector<Features> features = [] {
         Analyzer analyzer;
-        analyzer.prepare(kRateHz, Settings{});
+        analyzer.prepare({.sample_rate_hz = kRateHz}, Settings{});
         std::vector<Features> out;
         const std::vector<float>& in = amen();
         const int hop = analyzer.hop_samples();
         for (size_t i = 0; i + hop <= in.size(); i += hop)
-            if (analyzer.write(in.data() + i, hop)) out.push_back(analyzer.analyse());
+            if (analyzer.process(in.data() + i, hop)) out.push_back(analyzer.analyse());
         return out;
     }();
     return features;
@@ -98,12 +98,12 @@ const std::vector<int>& internal_samples_per_hop() {
 const std::vector<float>& amen_vibration() {
     static const std::vector<float> samples = [] {
         Voice voice;
-        voice.prepare(internal_rate_hz(), Settings{}[P::post_band_high_hz]);
+        voice.prepare({.sample_rate_hz = internal_rate_hz()}, Settings{}[P::post_band_high_hz]);
         std::vector<float> out;
         for (size_t f = 0; f < amen_control().size(); ++f) {
             const size_t start = out.size();
             out.resize(start + internal_samples_per_hop()[f]);
-            voice.render(out.data() + start, internal_samples_per_hop()[f]);
+            voice.process(out.data() + start, internal_samples_per_hop()[f]);
             voice.apply(amen_control()[f]);
         }
         return out;

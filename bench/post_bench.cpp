@@ -39,8 +39,10 @@ void per_sample(benchmark::State& state, Process process) {
 void BandLimitProcess(benchmark::State& state) {
     const Settings s;
     BandLimit band;
-    band.prepare(internal_rate_hz(), s[P::post_band_low_hz], s[P::post_band_high_hz],
-                 static_cast<int>(state.range(0)));
+    band.prepare({.sample_rate_hz = internal_rate_hz()},
+                 {.low_hz = s[P::post_band_low_hz],
+                  .high_hz = s[P::post_band_high_hz],
+                  .order = static_cast<int>(state.range(0))});
     per_sample(state, [&](float* x, int n) { band.process(x, n); });
 }
 BENCHMARK(BandLimitProcess)
@@ -51,8 +53,11 @@ BENCHMARK(BandLimitProcess)
 void FlatteningProcess(benchmark::State& state) {
     const Settings s;
     FlatteningFilter flatten;
-    flatten.prepare(internal_rate_hz(), s[P::post_band_low_hz], s[P::post_band_high_hz],
-                    s[P::post_flatten_strength], s[P::post_flatten_range_db]);
+    flatten.prepare({.sample_rate_hz = internal_rate_hz()},
+                    {.low_hz = s[P::post_band_low_hz],
+                     .high_hz = s[P::post_band_high_hz],
+                     .strength = s[P::post_flatten_strength],
+                     .range_db = s[P::post_flatten_range_db]});
     per_sample(state, [&](float* x, int n) { flatten.process(x, n); });
 }
 BENCHMARK(FlatteningProcess);
@@ -60,7 +65,7 @@ BENCHMARK(FlatteningProcess);
 void PeakLimiterProcess(benchmark::State& state) {
     const Settings s;
     PeakLimiter limiter;
-    limiter.prepare(internal_rate_hz(), s[P::post_lookahead_ms],
+    limiter.prepare({.sample_rate_hz = internal_rate_hz()}, s[P::post_lookahead_ms],
                     {.drive_db = s[P::post_drive_db],
                      .threshold_db = s[P::post_limiter_threshold_db],
                      .ceiling = db_to_gain(s[P::post_ceiling_db]),
@@ -71,7 +76,7 @@ BENCHMARK(PeakLimiterProcess);
 
 void PostChainProcess(benchmark::State& state) {
     PostChain post;
-    post.prepare(internal_rate_hz(), Settings{});
+    post.prepare({.sample_rate_hz = internal_rate_hz()}, Settings{});
     per_sample(state, [&](float* x, int n) { post.process(x, n); });
 }
 BENCHMARK(PostChainProcess);
@@ -81,7 +86,7 @@ BENCHMARK(PostChainProcess);
 void UpsamplerProcess(benchmark::State& state) {
     const int factor = rate_divisor();
     Upsampler upsampler;
-    upsampler.prepare(factor, kBlock);
+    upsampler.prepare({.max_block = kBlock * factor}, factor);
     std::vector<float> out(static_cast<size_t>(kBlock * factor));
     per_sample(state, [&](float* x, int n) {
         upsampler.process(x, n, out.data(), n * factor);

@@ -31,12 +31,12 @@ void VoiceRender(benchmark::State& state) {
     const std::vector<ControlFrame>& control = amen_control();
     const std::vector<int>& counts = internal_samples_per_hop();
     Voice voice;
-    voice.prepare(internal_rate_hz(), Settings{}[P::post_band_high_hz]);
+    voice.prepare({.sample_rate_hz = internal_rate_hz()}, Settings{}[P::post_band_high_hz]);
     std::vector<float> out(static_cast<size_t>(*std::max_element(counts.begin(), counts.end())));
     for (auto _ : state) {
         voice.reset();
         for (size_t f = 0; f < control.size(); ++f) {
-            voice.render(out.data(), counts[f]);
+            voice.process(out.data(), counts[f]);
             voice.apply(control[f]);
             benchmark::DoNotOptimize(out.data());
         }

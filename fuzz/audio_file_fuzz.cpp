@@ -58,7 +58,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         if (!engine) {
             engine = std::make_unique<tactus::Engine>();
             engine->prepare(
-                {.sample_rate_hz = 44100, .max_block = kBlock, .input_channels = reader.channels()});
+                {.sample_rate_hz = 44100, .max_block = kBlock, .channels = reader.channels()});
         }
         engine->reset();
         tactus::ChannelBlock in(reader.channels(), kBlock);

@@ -1,6 +1,5 @@
 // tactus meter FILE [--actuator NAME] [--contact-area CM2] [-o FILE.csv]: which channels of
 // touch a vibration file engages through an actuator, and how strongly (dB SL over time).
-#include "tactus/io/actuator_file.hpp"
 #include "tactus/perception/meter.hpp"
 
 #include <fmt/format.h>
@@ -11,6 +10,7 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "tactus/dsp/downmix.hpp"
+#include "tactus/io/actuator_file.hpp"
 #include "tactus/io/text_output.hpp"
 
 namespace tactus::cli {
@@ -69,11 +69,11 @@ void meter(const MeterOptions& o) {
     int input_channels = 1;
     const RunSummary run = stream_file(
         o.input,
-        [&](double sample_rate_hz, int channels) {
+        [&](const ProcessSpec& spec) {
             meter.prepare(
-                sample_rate_hz, [&](double f) { return actuator.displacement_um_at(f); },
+                spec.sample_rate_hz, [&](double f) { return actuator.displacement_um_at(f); },
                 o.contact_area_cm2);
-            input_channels = channels;
+            input_channels = spec.channels;
             mono.resize(kStreamBlockFrames);
         },
         [&](const float* const* in, int frames) {  // the actuators' mean

@@ -1,7 +1,6 @@
 // Actuator compensation: the target is the inverse displacement response inside the usable
 // band, bounded to +-12 dB; the measured response (sines through process()) follows it within
 // 1 dB for the voice coil and 2 dB for the narrow LRA (figures printed).
-#include "tactus/io/actuator_file.hpp"
 #include "tactus/actuator/compensation.hpp"
 
 #include <gtest/gtest.h>
@@ -11,6 +10,7 @@
 #include <iostream>
 
 #include "support/signals.hpp"
+#include "tactus/io/actuator_file.hpp"
 
 namespace tactus {
 namespace {
@@ -19,7 +19,7 @@ TEST(ActuatorCompensation, TargetIsTheBoundedInverseResponse) {
     for (const char* name : {"voice-coil", "lra-175", "erm"}) {
         const ActuatorProfile a = load_actuator(resolve_actuator(name));
         ActuatorCompensation c;
-        c.prepare(48000, a);
+        c.prepare({.sample_rate_hz = 48000}, a);
         for (double f = a.band_low_hz; f <= a.band_high_hz; f *= 1.05) {
             EXPECT_NEAR(c.target_db(f), std::clamp(-a.response_db(f), -12.0, 12.0), 1e-9);
             EXPECT_LE(std::abs(c.target_db(f)), ActuatorCompensation::kBoundDb);
@@ -32,11 +32,11 @@ TEST(ActuatorCompensation, VoiceCoilMeasuredResponseFollowsTarget) {
     const ActuatorProfile a = load_actuator(resolve_actuator("voice-coil"));
     for (double fs : {44100.0, 48000.0, 96000.0}) {
         ActuatorCompensation design;
-        design.prepare(fs, a);
+        design.prepare({.sample_rate_hz = fs}, a);
         double worst = 0;
         for (double f = 25.0; f <= 900.0; f *= 1.15) {
             ActuatorCompensation c;
-            c.prepare(fs, a);
+            c.prepare({.sample_rate_hz = fs}, a);
             const double measured =
                 test::measured_gain_db([&](float* x, int n) { c.process(x, n); }, f, fs);
             worst = std::max(worst, std::abs(measured - design.target_db(f)));
@@ -51,11 +51,11 @@ TEST(ActuatorCompensation, LraResonanceIsNotchedWithinTheBound) {
     const ActuatorProfile a = load_actuator(resolve_actuator("lra-175"));
     const double fs = 48000;
     ActuatorCompensation design;
-    design.prepare(fs, a);
+    design.prepare({.sample_rate_hz = fs}, a);
     double worst = 0;
     for (double f = a.band_low_hz; f <= a.band_high_hz; f *= 1.03) {
         ActuatorCompensation c;
-        c.prepare(fs, a);
+        c.prepare({.sample_rate_hz = fs}, a);
         const double measured =
             test::measured_gain_db([&](float* x, int n) { c.process(x, n); }, f, fs);
         worst = std::max(worst, std::abs(measured - design.target_db(f)));
@@ -73,7 +73,7 @@ TEST(ActuatorCompensation, FlattensTheVoiceCoilDisplacement) {
     // wherever the bound is not reached.
     const ActuatorProfile a = load_actuator(resolve_actuator("voice-coil"));
     ActuatorCompensation c;
-    c.prepare(48000, a);
+    c.prepare({.sample_rate_hz = 48000}, a);
     for (double f = 25; f <= 400; f *= 1.1)
         EXPECT_NEAR(c.magnitude_db(f) + a.response_db(f), 0.0, 1.0) << f;
 }

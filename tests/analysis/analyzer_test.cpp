@@ -27,7 +27,7 @@ std::vector<Features> run(Analyzer& analyzer, const std::vector<float>& x, int b
         int written = 0;
         while (written < size) {
             const int chunk = std::min(size - written, analyzer.samples_to_next_frame());
-            if (analyzer.write(x.data() + done + written, chunk))
+            if (analyzer.process(x.data() + done + written, chunk))
                 frames.push_back(analyzer.analyse());
             written += chunk;
         }
@@ -40,7 +40,7 @@ TEST(Analyzer, FramesAreOnTheHopGridAndIndependentOfBlockSize) {
     const double fs = 48000;
     const test::DrumSignal drums = test::drum_pattern(fs, 3.0, 5);
     Analyzer reference;
-    reference.prepare(fs, Settings{});
+    reference.prepare({.sample_rate_hz = fs}, Settings{});
     const int hop = reference.hop_samples();
     EXPECT_EQ(hop, ms_to_samples(Settings{}[P::analysis_hop_ms], fs));
     const auto expected = run(reference, drums.audio, 4096);
@@ -49,7 +49,7 @@ TEST(Analyzer, FramesAreOnTheHopGridAndIndependentOfBlockSize) {
         ASSERT_EQ(expected[i].frame_end_sample, static_cast<int64_t>((i + 1) * hop));
     for (int block : {1, 7, 64, 480}) {
         Analyzer analyzer;
-        analyzer.prepare(fs, Settings{});
+        analyzer.prepare({.sample_rate_hz = fs}, Settings{});
         const auto frames = run(analyzer, drums.audio, block);
         ASSERT_EQ(frames.size(), expected.size()) << "block " << block;
         for (size_t i = 0; i < frames.size(); ++i) {
@@ -67,7 +67,7 @@ TEST(Analyzer, FramesAreOnTheHopGridAndIndependentOfBlockSize) {
 TEST(Analyzer, SineFeatures) {
     for (double fs : {44100.0, 48000.0}) {
         Analyzer analyzer;
-        analyzer.prepare(fs, Settings{});
+        analyzer.prepare({.sample_rate_hz = fs}, Settings{});
         const auto frames = run(analyzer, test::sine(997.0, fs, static_cast<size_t>(fs)), 512);
         const Features& f = frames.back();
         EXPECT_NEAR(f.loudness_db, -3.01, 0.2) << fs;
@@ -84,7 +84,7 @@ TEST(Analyzer, SineFeatures) {
 
 TEST(Analyzer, SilenceFeatures) {
     Analyzer analyzer;
-    analyzer.prepare(48000, Settings{});
+    analyzer.prepare({.sample_rate_hz = 48000}, Settings{});
     const auto frames = run(analyzer, std::vector<float>(48000, 0.0f), 1000);
     ASSERT_FALSE(frames.empty());
     for (const Features& f : frames) {
@@ -107,7 +107,7 @@ TEST(Analyzer, ExtremeFiniteInputGivesFiniteFeatures) {
     for (size_t i = 30000; i < 30064; ++i)
         x[i] = (i % 2 ? -1.0f : 1.0f) * std::numeric_limits<float>::max();
     Analyzer analyzer;
-    analyzer.prepare(fs, Settings{});
+    analyzer.prepare({.sample_rate_hz = fs}, Settings{});
     int bad = 0;
     for (const Features& f : run(analyzer, x, 480)) {
         const bool finite = std::isfinite(f.loudness_db) && std::isfinite(f.brightness_hz) &&
@@ -139,7 +139,7 @@ TEST(Analyzer, ClicksAreDetectedOnceNearTheirTrueTime) {
             }
         }
         Analyzer analyzer;
-        analyzer.prepare(fs, Settings{});
+        analyzer.prepare({.sample_rate_hz = fs}, Settings{});
         std::vector<const Features*> onsets;
         const auto frames = run(analyzer, x, 333);
         for (const auto& f : frames)

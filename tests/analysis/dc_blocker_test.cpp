@@ -15,7 +15,7 @@ namespace {
 TEST(DcBlocker, RemovesAnOffset) {
     constexpr double kRate = 44100;
     DcBlocker blocker;
-    blocker.prepare(kRate);
+    blocker.prepare({.sample_rate_hz = kRate});
     std::vector<float> x(static_cast<size_t>(kRate), 0.5f);
     blocker.process(x.data(), static_cast<int>(x.size()));
     EXPECT_NEAR(x[0], 0.5f, 1e-6);  // the step passes, then decays: tau = 1 / (2 pi 10 Hz)
@@ -28,7 +28,7 @@ TEST(DcBlocker, RemovesAnOffset) {
 TEST(DcBlocker, PassesTheFeatureBand) {
     for (const double rate : {8000.0, 44100.0, 192000.0}) {
         DcBlocker blocker;
-        blocker.prepare(rate);
+        blocker.prepare({.sample_rate_hz = rate});
         auto x = test::sine(100, rate, static_cast<size_t>(rate), 0.5);
         const auto y_reference = x;
         blocker.process(x.data(), static_cast<int>(x.size()));
@@ -41,7 +41,7 @@ TEST(DcBlocker, PassesTheFeatureBand) {
 
 TEST(DcBlocker, SilenceStaysExactAndResetForgets) {
     DcBlocker blocker;
-    blocker.prepare(48000);
+    blocker.prepare({.sample_rate_hz = 48000});
     std::vector<float> x(1000, 1.0f);
     blocker.process(x.data(), 1000);
     blocker.reset();

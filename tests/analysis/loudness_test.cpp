@@ -16,8 +16,8 @@ namespace {
 
 double loudness_of(const std::vector<float>& x, double fs, double window_ms) {
     Loudness loudness;
-    loudness.prepare(fs, window_ms);
-    loudness.write(x.data(), static_cast<int>(x.size()));
+    loudness.prepare({.sample_rate_hz = fs}, window_ms);
+    loudness.process(x.data(), static_cast<int>(x.size()));
     return loudness.loudness_db();
 }
 
@@ -46,7 +46,7 @@ TEST(Loudness, SilenceReadsTheFloor) {
     const std::vector<float> x(48000, 0.0f);
     EXPECT_EQ(loudness_of(x, 48000, 10), Loudness::kFloorDb);
     Loudness fresh;
-    fresh.prepare(48000, 10);
+    fresh.prepare({.sample_rate_hz = 48000}, 10);
     EXPECT_EQ(fresh.loudness_db(), Loudness::kFloorDb);
     // A sound followed by a full window of silence reads the floor again.
     auto y = test::sine(997.0, 48000, 48000, 0.5);

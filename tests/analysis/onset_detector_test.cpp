@@ -26,7 +26,7 @@ std::vector<Detection> detect(const std::vector<float>& x, double fs,
                               const OnsetSettings& settings = {}) {
     const int hop = static_cast<int>(ms_to_samples(2.9, fs));
     OnsetDetector detector;
-    detector.prepare(fs, hop, settings);
+    detector.prepare({.sample_rate_hz = fs}, hop, settings);
     SampleHistory history;
     history.prepare(detector.span_samples());
     std::vector<Detection> found;
@@ -121,7 +121,7 @@ TEST(OnsetDetector, ResetForgetsThePast) {
     const double fs = 48000;
     const int hop = 139;
     OnsetDetector detector;
-    detector.prepare(fs, hop, {});
+    detector.prepare({.sample_rate_hz = fs}, hop, {});
     SampleHistory history;
     history.prepare(detector.span_samples());
     std::vector<float> click(static_cast<size_t>(hop), 0.0f);

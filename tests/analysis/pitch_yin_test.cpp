@@ -14,7 +14,7 @@ namespace {
 
 Pitch pitch_of(const std::vector<float>& x, double fs) {
     PitchYin yin;
-    yin.prepare(fs, 50.0, 1500.0, 0.15);
+    yin.prepare({.sample_rate_hz = fs}, {.min_hz = 50.0, .max_hz = 1500.0, .threshold = 0.15});
     SampleHistory history;
     history.prepare(yin.span_samples());
     history.write(x.data(), static_cast<int>(x.size()));

@@ -10,8 +10,8 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <bit>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -21,9 +21,9 @@
 #include "support/engine_blocks.hpp"
 #include "support/live_values.hpp"
 #include "support/signals.hpp"
-#include "tactus/io/actuator_file.hpp"
 #include "tactus/core/units.hpp"
 #include "tactus/engine/engine.hpp"
+#include "tactus/io/actuator_file.hpp"
 #include "tactus/io/preset.hpp"
 
 namespace tactus {
@@ -97,15 +97,15 @@ TEST(EngineFrontEnd, ChannelsAreDownmixedInTheEngine) {
     std::vector<float> mean(left.size());
     for (size_t i = 0; i < mean.size(); ++i) mean[i] = (left[i] + right[i]) * 0.5f;
     Engine stereo;
-    stereo.prepare({.sample_rate_hz = fs, .max_block = 64, .input_channels = 2});
+    stereo.prepare({.sample_rate_hz = fs, .max_block = 64, .channels = 2});
     EXPECT_TRUE(bit_identical(run(stereo, {left, right}, {64})[0], mono_render(mean, fs)));
     Engine chosen;
-    chosen.prepare(
-        {.sample_rate_hz = fs, .max_block = 64, .input_channels = 2, .input_channel = 1});
+    chosen.set_input_channel(1);
+    chosen.prepare({.sample_rate_hz = fs, .max_block = 64, .channels = 2});
     EXPECT_TRUE(bit_identical(run(chosen, {left, right}, {64})[0], mono_render(right, fs)));
     Engine bad;
-    EXPECT_THROW(bad.prepare({.sample_rate_hz = fs, .input_channels = 2, .input_channel = 2}),
-                 std::invalid_argument);
+    bad.set_input_channel(2);
+    EXPECT_THROW(bad.prepare({.sample_rate_hz = fs, .channels = 2}), std::invalid_argument);
 }
 
 TEST(EngineFrontEnd, ActuatorsShareOneAnalysisWithTheirOwnProfileTrimAndDelay) {
@@ -165,7 +165,7 @@ TEST(EngineFrontEnd, LiveChangesGlideWithoutAStep) {
             const auto window = static_cast<size_t>(0.02 * fs);  // the turn and its glide
             for (size_t t : turns) {
                 const double allowed = 1.5 * std::max(largest_step(held, t, t + window),
-                                                       largest_step(held_turned, t, t + window));
+                                                      largest_step(held_turned, t, t + window));
                 EXPECT_LE(largest_step(y, t, t + window), allowed + 1e-4)
                     << spec(id).key << " " << start[id] << " <-> " << value << " at " << t;
             }
@@ -261,9 +261,8 @@ TEST(EngineFrontEnd, StructuralChangesLoseNoOnsetAndLeaveNoGap) {
     ASSERT_GE(held_log.onsets.size(), 20u);
     const auto tolerance = static_cast<int64_t>(0.01 * fs);
     for (int64_t onset : held_log.onsets) {
-        const bool found =
-            std::any_of(changed_log.onsets.begin(), changed_log.onsets.end(),
-                        [&](int64_t o) { return std::abs(o - onset) <= tolerance; });
+        const bool found = std::any_of(changed_log.onsets.begin(), changed_log.onsets.end(),
+                                       [&](int64_t o) { return std::abs(o - onset) <= tolerance; });
         EXPECT_TRUE(found) << "the hit at " << onset / fs << " s is lost";
     }
     EXPECT_LE(changed_log.onsets.size(), held_log.onsets.size() + 2) << "no false hits";
@@ -275,7 +274,7 @@ TEST(EngineFrontEnd, StructuralChangesLoseNoOnsetAndLeaveNoGap) {
         const size_t t = at[k];
         for (size_t w = t - 10 * window; w < t + 20 * window; w += window) {
             const double expected = std::min(test::peak(std::span(before).subspan(w, window)),
-                                              test::peak(std::span(after).subspan(w, window)));
+                                             test::peak(std::span(after).subspan(w, window)));
             if (expected > 0.02) {
                 EXPECT_GT(test::peak(std::span(y).subspan(w, window)), 0.3 * expected)
                     << "a gap at " << w / fs << " s";
@@ -283,7 +282,8 @@ TEST(EngineFrontEnd, StructuralChangesLoseNoOnsetAndLeaveNoGap) {
         }
         EXPECT_LE(largest_step(y, t, t + 20 * window),
                   1.5 * std::max(largest_step(before, t, t + 20 * window),
-                                 largest_step(after, t, t + 20 * window)) + 1e-3)
+                                 largest_step(after, t, t + 20 * window)) +
+                      1e-3)
             << "a step at " << t / fs << " s";
     }
 }

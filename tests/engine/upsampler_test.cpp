@@ -18,7 +18,7 @@ namespace {
 // Upsamples x in blocks of `block` internal samples (the output blocks matching them).
 std::vector<float> upsample(const std::vector<float>& x, int factor, int block) {
     Upsampler up;
-    up.prepare(factor, block);
+    up.prepare({.max_block = block * factor}, factor);
     std::vector<float> y(x.size() * factor);
     for (size_t done = 0; done < x.size(); done += block) {
         const int n = static_cast<int>(std::min<size_t>(block, x.size() - done));
@@ -71,7 +71,7 @@ TEST(Upsampler, PassesTheBandAndRemovesImages) {
 TEST(Upsampler, OutputDoesNotDependOnTheSplit) {
     const std::vector<float> x = test::white_noise(4000, 5, 0.5);
     Upsampler up;
-    up.prepare(4, 4000);
+    up.prepare({.max_block = 4000 * 4}, 4);
     std::vector<float> whole(x.size() * 4), split(x.size() * 4);
     up.process(x.data(), static_cast<int>(x.size()), whole.data(), static_cast<int>(whole.size()));
     // Output blocks that end between internal samples: 3 outputs need 1 internal sample, etc.

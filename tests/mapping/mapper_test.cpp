@@ -178,7 +178,7 @@ TEST(Mapper, PressureIsAFractionOfTheCeiling) {
                 0.4 * 0.75 * std::pow(10.0, -6.0 / 20), 1e-12);
     EXPECT_EQ(mapper.map(frame(101, -100, 800, 0.5, false)).pressure, 0.0);
     // An actuator's max drive lowers the ceiling (PostChain::ceiling()): the pressure follows.
-    mapper.prepare(s, 345.0, 0.25);
+    mapper.prepare(s, {.frames_per_second = 345.0, .output_ceiling = 0.25});
     EXPECT_NEAR(mapper.map(frame(100, -15, 800, 0.5, false)).pressure, 0.4 * 0.75 * 0.25, 1e-12);
 }
 

@@ -33,7 +33,7 @@ class BandLimitCase : public ::testing::TestWithParam<Case> {};
 TEST_P(BandLimitCase, DesignedResponse) {
     const auto [fs, order] = GetParam();
     BandLimit band;
-    band.prepare(fs, 20.0, 1000.0, order);
+    band.prepare({.sample_rate_hz = fs}, {.low_hz = 20.0, .high_hz = 1000.0, .order = order});
     // The far corner contributes (20/1000)^(2n) ~ 1e-7 dB: each corner reads the Butterworth -3.01.
     EXPECT_NEAR(band.magnitude_db(20.0), kCornerDb, 0.001);
     EXPECT_NEAR(band.magnitude_db(1000.0), kCornerDb, 0.001);
@@ -49,7 +49,7 @@ TEST_P(BandLimitCase, MeasuredResponseMatchesDesign) {
     const auto [fs, order] = GetParam();
     for (double f : {20.0, 31.0, 141.4, 1000.0, 1500.0, 2000.0}) {
         BandLimit band;
-        band.prepare(fs, 20.0, 1000.0, order);
+        band.prepare({.sample_rate_hz = fs}, {.low_hz = 20.0, .high_hz = 1000.0, .order = order});
         const double measured =
             test::measured_gain_db([&](float* x, int n) { band.process(x, n); }, f, fs);
         EXPECT_NEAR(measured, band.magnitude_db(f), 0.02) << f << " Hz at " << fs << " Hz";
@@ -62,7 +62,10 @@ INSTANTIATE_TEST_SUITE_P(RatesAndOrders, BandLimitCase,
 
 TEST(BandLimit, NoLowpassAtOrAboveFortyFivePercentOfTheRate) {
     BandLimit band;
-    band.prepare(8000.0, 20.0, 3700.0, 2);  // 3700 >= 0.45 * 8000: the band ends at Nyquist
+    band.prepare({.sample_rate_hz = 8000.0},
+                 {.low_hz = 20.0,
+                  .high_hz = 3700.0,
+                  .order = 2});  // 3700 >= 0.45 * 8000: the band ends at Nyquist
     EXPECT_NEAR(band.magnitude_db(3700.0), 0.0, 0.001);
     EXPECT_NEAR(band.magnitude_db(3999.0), 0.0, 0.001);
     EXPECT_NEAR(band.magnitude_db(20.0), kCornerDb, 0.001);
@@ -71,13 +74,18 @@ TEST(BandLimit, NoLowpassAtOrAboveFortyFivePercentOfTheRate) {
 TEST(BandLimit, RejectsInvalidOrders) {
     BandLimit band;
     for (int order : {0, 1, 3, 10, -2})
-        EXPECT_THROW(band.prepare(48000.0, 20.0, 1000.0, order), std::invalid_argument) << order;
-    EXPECT_NO_THROW(band.prepare(48000.0, 20.0, 1000.0, BandLimit::kMaxOrder));
+        EXPECT_THROW(band.prepare({.sample_rate_hz = 48000.0},
+                                  {.low_hz = 20.0, .high_hz = 1000.0, .order = order}),
+                     std::invalid_argument)
+            << order;
+    EXPECT_NO_THROW(
+        band.prepare({.sample_rate_hz = 48000.0},
+                     {.low_hz = 20.0, .high_hz = 1000.0, .order = BandLimit::kMaxOrder}));
 }
 
 TEST(BandLimit, ResetGivesTheSameOutputAgain) {
     BandLimit band;
-    band.prepare(48000.0, 20.0, 1000.0, 4);
+    band.prepare({.sample_rate_hz = 48000.0}, {.low_hz = 20.0, .high_hz = 1000.0, .order = 4});
     std::vector<float> a = test::white_noise(4096, 7), b = a;
     band.process(a.data(), static_cast<int>(a.size()));
     band.reset();

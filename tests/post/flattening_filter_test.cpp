@@ -24,12 +24,14 @@ class FlatteningAtRate : public ::testing::TestWithParam<double> {};
 TEST_P(FlatteningAtRate, MeasuredResponseFollowsTargetWithinOneDb) {
     const double fs = GetParam();
     FlatteningFilter design;
-    design.prepare(fs, 20.0, 1000.0, 1.0, 30.0);
+    design.prepare({.sample_rate_hz = fs},
+                   {.low_hz = 20.0, .high_hz = 1000.0, .strength = 1.0, .range_db = 30.0});
     double worst = 0.0, worst_hz = 0.0, worst_design = 0.0;
     for (int i = 0; i <= 24; ++i) {
         const double f = 40.0 * std::pow(500.0 / 40.0, i / 24.0);
         FlatteningFilter filter;
-        filter.prepare(fs, 20.0, 1000.0, 1.0, 30.0);
+        filter.prepare({.sample_rate_hz = fs},
+                       {.low_hz = 20.0, .high_hz = 1000.0, .strength = 1.0, .range_db = 30.0});
         const double measured =
             test::measured_gain_db([&](float* x, int n) { filter.process(x, n); }, f, fs);
         const double deviation = measured - design.target_db(f);
@@ -50,13 +52,17 @@ TEST_P(FlatteningAtRate, NeverBoostsInTheBand) {
     for (double strength : {0.25, 1.0}) {
         for (double range : {10.0, 30.0, 40.0}) {
             FlatteningFilter design;
-            design.prepare(fs, 20.0, 1000.0, strength, range);
+            design.prepare(
+                {.sample_rate_hz = fs},
+                {.low_hz = 20.0, .high_hz = 1000.0, .strength = strength, .range_db = range});
             for (double f = 20.0; f <= 1000.0; f *= 1.05)
                 EXPECT_LE(design.magnitude_db(f), 0.5)
                     << f << " Hz, strength " << strength << ", range " << range;
             for (double f : {20.0, 40.0, 63.0, 1000.0}) {
                 FlatteningFilter filter;
-                filter.prepare(fs, 20.0, 1000.0, strength, range);
+                filter.prepare(
+                    {.sample_rate_hz = fs},
+                    {.low_hz = 20.0, .high_hz = 1000.0, .strength = strength, .range_db = range});
                 EXPECT_LE(
                     test::measured_gain_db([&](float* x, int n) { filter.process(x, n); }, f, fs),
                     0.5)
@@ -71,7 +77,8 @@ INSTANTIATE_TEST_SUITE_P(Rates, FlatteningAtRate,
 
 TEST(FlatteningFilter, TargetIsTheInvertedThresholdCurve) {
     FlatteningFilter filter;
-    filter.prepare(48000.0, 20.0, 1000.0, 1.0, 40.0);
+    filter.prepare({.sample_rate_hz = 48000.0},
+                   {.low_hz = 20.0, .high_hz = 1000.0, .strength = 1.0, .range_db = 40.0});
     // The least sensitive frequency of the band (40 Hz and, flat, below) passes at unity.
     const double reference = perception::p_threshold_db(40.0);
     EXPECT_NEAR(filter.target_db(40.0), 0.0, 1e-9);
@@ -80,10 +87,12 @@ TEST(FlatteningFilter, TargetIsTheInvertedThresholdCurve) {
         EXPECT_NEAR(filter.target_db(f), perception::p_threshold_db(f) - reference, 1e-9) << f;
     EXPECT_NEAR(filter.target_db(250.0), -20.0 - reference, 1e-9);  // deepest at 250 Hz
 
-    filter.prepare(48000.0, 20.0, 1000.0, 0.5, 40.0);
+    filter.prepare({.sample_rate_hz = 48000.0},
+                   {.low_hz = 20.0, .high_hz = 1000.0, .strength = 0.5, .range_db = 40.0});
     EXPECT_NEAR(filter.target_db(250.0), 0.5 * (-20.0 - reference), 1e-9);
 
-    filter.prepare(48000.0, 20.0, 1000.0, 1.0, 12.0);
+    filter.prepare({.sample_rate_hz = 48000.0},
+                   {.low_hz = 20.0, .high_hz = 1000.0, .strength = 1.0, .range_db = 12.0});
     for (double f = 20.0; f <= 1000.0; f *= 1.1) EXPECT_GE(filter.target_db(f), -12.0 - 1e-9);
     EXPECT_NEAR(filter.target_db(250.0), -12.0, 1e-9);
 }
@@ -108,15 +117,19 @@ TEST(FlatteningFilter, DesignedFromTheModelForAreaAndLevel) {
     double worst = 0.0;
     for (double area : {0.02, 0.5, 2.9}) {
         for (double level : {0.0, 20.0, 40.0}) {
-            const FlatteningDesign d{.range_db = 40.0, .contact_area_cm2 = area, .level_db = level};
+            const FlatteningDesign d{.low_hz = 20.0,
+                                     .high_hz = 1000.0,
+                                     .range_db = 40.0,
+                                     .contact_area_cm2 = area,
+                                     .level_db = level};
             FlatteningFilter design;
-            design.prepare(fs, 20.0, 1000.0, d);
+            design.prepare({.sample_rate_hz = fs}, d);
             for (int i = 0; i <= 24; ++i) {
                 const double f = 40.0 * std::pow(500.0 / 40.0, i / 24.0);
                 EXPECT_NEAR(design.target_db(f), model_target_db(f, area, level, 40.0), 1e-3)
                     << f << " Hz, " << area << " cm2, " << level << " dB SL";
                 FlatteningFilter filter;
-                filter.prepare(fs, 20.0, 1000.0, d);
+                filter.prepare({.sample_rate_hz = fs}, d);
                 const double measured =
                     test::measured_gain_db([&](float* x, int n) { filter.process(x, n); }, f, fs);
                 const double deviation = std::abs(measured - model_target_db(f, area, level, 40.0));
@@ -135,13 +148,15 @@ TEST(FlatteningFilter, ContoursFlattenAsLevelRises) {
     double previous = 1e9;
     for (double level : {0.0, 20.0, 40.0, 60.0}) {
         FlatteningFilter filter;
-        filter.prepare(48000.0, 20.0, 1000.0, {.range_db = 40.0, .level_db = level});
+        filter.prepare({.sample_rate_hz = 48000.0},
+                       {.low_hz = 20.0, .high_hz = 1000.0, .range_db = 40.0, .level_db = level});
         const double relief = filter.target_db(40.0) - filter.target_db(250.0);
         EXPECT_LT(relief, previous) << level;
         previous = relief;
     }
     FlatteningFilter threshold;
-    threshold.prepare(48000.0, 20.0, 1000.0, {.range_db = 40.0});
+    threshold.prepare({.sample_rate_hz = 48000.0},
+                      {.low_hz = 20.0, .high_hz = 1000.0, .range_db = 40.0});
     EXPECT_NEAR(threshold.target_db(40.0) - threshold.target_db(250.0),
                 perception::p_threshold_db(40.0) - perception::p_threshold_db(250.0), 1e-9);
 }
@@ -150,8 +165,10 @@ TEST(FlatteningFilter, SmallerContactFlattensLessBelow80Hz) {
     // Spatial summation is absent at 40 Hz and full from 80 Hz, so a small contact raises the
     // threshold at 250 Hz but not at 40 Hz: less relief to compensate.
     FlatteningFilter large, small;
-    large.prepare(48000.0, 20.0, 1000.0, {.range_db = 40.0});
-    small.prepare(48000.0, 20.0, 1000.0, {.range_db = 40.0, .contact_area_cm2 = 0.1});
+    large.prepare({.sample_rate_hz = 48000.0},
+                  {.low_hz = 20.0, .high_hz = 1000.0, .range_db = 40.0});
+    small.prepare({.sample_rate_hz = 48000.0},
+                  {.low_hz = 20.0, .high_hz = 1000.0, .range_db = 40.0, .contact_area_cm2 = 0.1});
     const double large_relief = large.target_db(40.0) - large.target_db(250.0);
     const double small_relief = small.target_db(40.0) - small.target_db(250.0);
     EXPECT_NEAR(large_relief - small_relief, 3.0 * std::log2(2.9 / 0.1), 1e-6);
@@ -159,7 +176,8 @@ TEST(FlatteningFilter, SmallerContactFlattensLessBelow80Hz) {
 
 TEST(FlatteningFilter, ZeroStrengthIsFlat) {
     FlatteningFilter filter;
-    filter.prepare(48000.0, 20.0, 1000.0, 0.0, 30.0);
+    filter.prepare({.sample_rate_hz = 48000.0},
+                   {.low_hz = 20.0, .high_hz = 1000.0, .strength = 0.0, .range_db = 30.0});
     for (double f = 20.0; f <= 1000.0; f *= 1.1) {
         EXPECT_EQ(filter.target_db(f), 0.0);
         EXPECT_NEAR(filter.magnitude_db(f), 0.0, 0.05) << f;
@@ -168,7 +186,8 @@ TEST(FlatteningFilter, ZeroStrengthIsFlat) {
 
 TEST(FlatteningFilter, ResetGivesTheSameOutputAgain) {
     FlatteningFilter filter;
-    filter.prepare(44100.0, 20.0, 1000.0, 1.0, 30.0);
+    filter.prepare({.sample_rate_hz = 44100.0},
+                   {.low_hz = 20.0, .high_hz = 1000.0, .strength = 1.0, .range_db = 30.0});
     std::vector<float> a = test::white_noise(8192, 3), b = a;
     filter.process(a.data(), static_cast<int>(a.size()));
     filter.reset();

@@ -1,7 +1,7 @@
 // PeakLimiter: the output never exceeds the ceiling whatever the input (noise at +40 dB,
 // full-scale squares, impulses, DC steps), for several settings; non-finite input behaves as 0
 // and never gives non-finite output; a signal below the threshold passes bit-exactly, delayed
-// by latency_samples(); louder input stays louder; curve() is the documented soft knee and is
+// by latency(); louder input stays louder; curve() is the documented soft knee and is
 // strictly increasing (never reaching the ceiling) up to full scale at the largest drive.
 #include "tactus/post/peak_limiter.hpp"
 
@@ -31,7 +31,7 @@ std::string describe(const LimiterSettings& s) {
 
 PeakLimiter make(const LimiterSettings& s) {
     PeakLimiter limiter;
-    limiter.prepare(s.fs, s.lookahead_ms,
+    limiter.prepare({.sample_rate_hz = s.fs}, s.lookahead_ms,
                     {.drive_db = s.drive_db,
                      .threshold_db = s.threshold_db,
                      .ceiling = s.ceiling,
@@ -123,7 +123,7 @@ TEST_P(LimiterSettingsCase, LatencyIsTheLookahead) {
     const LimiterSettings s = GetParam();
     PeakLimiter limiter = make(s);
     const int expected = std::max(1, static_cast<int>(std::llround(s.lookahead_ms * 1e-3 * s.fs)));
-    EXPECT_EQ(limiter.latency_samples(), expected);
+    EXPECT_EQ(limiter.latency(), expected);
 }
 
 INSTANTIATE_TEST_SUITE_P(Settings, LimiterSettingsCase,
@@ -137,12 +137,12 @@ INSTANTIATE_TEST_SUITE_P(Settings, LimiterSettingsCase,
 TEST(PeakLimiter, BelowThresholdPassesUnchangedApartFromLatency) {
     for (double fs : {8000.0, 48000.0, 192000.0}) {
         PeakLimiter limiter;
-        limiter.prepare(fs, 1.5,
+        limiter.prepare({.sample_rate_hz = fs}, 1.5,
                         {.drive_db = 0,
                          .threshold_db = -6,
                          .ceiling = 1.0,
                          .release_ms = 80});  // threshold at 0.501
-        const int latency = limiter.latency_samples();
+        const int latency = limiter.latency();
         const auto n = static_cast<size_t>(fs / 2);
         std::vector<float> x = test::sine(97.0, fs, n, 0.5);
         for (size_t i = n / 2; i < n; ++i) x[i] = static_cast<float>(0.45 * std::sin(0.01 * i));
@@ -156,12 +156,12 @@ TEST(PeakLimiter, BelowThresholdPassesUnchangedApartFromLatency) {
 
 TEST(PeakLimiter, DriveScalesATransparentSignal) {
     PeakLimiter limiter;
-    limiter.prepare(48000, 2,
+    limiter.prepare({.sample_rate_hz = 48000}, 2,
                     {.drive_db = -6, .threshold_db = -3, .ceiling = 1.0, .release_ms = 80});
     const double drive = db_to_gain(-6);
     std::vector<float> x = test::sine(220.0, 48000, 4800, 0.9), y = x;
     limiter.process(y.data(), static_cast<int>(y.size()));
-    const int latency = limiter.latency_samples();
+    const int latency = limiter.latency();
     for (size_t i = static_cast<size_t>(latency); i < y.size(); ++i)
         ASSERT_EQ(y[i], static_cast<float>(static_cast<double>(x[i - latency]) * drive)) << i;
 }
@@ -172,7 +172,7 @@ TEST(PeakLimiter, LimitsToTheStaticCurveAndKeepsLouderLouder) {
     double previous_peak = 0.0;
     for (double a : amplitudes) {
         PeakLimiter limiter;
-        limiter.prepare(fs, 1.5,
+        limiter.prepare({.sample_rate_hz = fs}, 1.5,
                         {.drive_db = 0, .threshold_db = -6, .ceiling = 1.0, .release_ms = 80});
         std::vector<float> x = test::sine(100.0, fs, static_cast<size_t>(fs), a);
         limiter.process(x.data(), static_cast<int>(x.size()));
@@ -186,7 +186,7 @@ TEST(PeakLimiter, LimitsToTheStaticCurveAndKeepsLouderLouder) {
 
 TEST(PeakLimiter, CurveIsTheDocumentedSoftKnee) {
     PeakLimiter limiter;
-    limiter.prepare(48000, 1.5,
+    limiter.prepare({.sample_rate_hz = 48000}, 1.5,
                     {.drive_db = 0, .threshold_db = -6, .ceiling = 1.0, .release_ms = 80});
     const double t = db_to_gain(-6), c = 1.0;
     for (double p : {0.0, 0.1, 0.25, t}) EXPECT_DOUBLE_EQ(limiter.curve(p), p) << p;
@@ -205,7 +205,7 @@ TEST(PeakLimiter, CurveIsStrictlyIncreasingAndBelowTheCeilingUpToFullScaleAtMaxD
     for (double threshold_db : {-6.0, -20.0}) {
         PeakLimiter limiter;
         limiter.prepare(
-            48000, 1.5,
+            {.sample_rate_hz = 48000}, 1.5,
             {.drive_db = 40, .threshold_db = threshold_db, .ceiling = 1.0, .release_ms = 80});
         double previous = limiter.curve(0.0);
         int failures = 0;
@@ -224,7 +224,7 @@ TEST(PeakLimiter, CurveIsStrictlyIncreasingAndBelowTheCeilingUpToFullScaleAtMaxD
 
 TEST(PeakLimiter, ResetGivesTheSameOutputAgain) {
     PeakLimiter limiter;
-    limiter.prepare(48000, 1.5,
+    limiter.prepare({.sample_rate_hz = 48000}, 1.5,
                     {.drive_db = 10, .threshold_db = -6, .ceiling = 1.0, .release_ms = 80});
     std::vector<float> a = test::white_noise(20000, 5, 2.0), b = a;
     limiter.process(a.data(), static_cast<int>(a.size()));

@@ -6,7 +6,6 @@
 // and the final clip does not act; the flutter passes 2-40 Hz (last high-pass at
 // post.flutter_low_hz) through the 30 Hz peaking filter; the pressure arrives unfiltered; while
 // they are off their buffers change nothing, bit for bit.
-#include "tactus/io/actuator_file.hpp"
 #include "tactus/post/post_chain.hpp"
 
 #include <gtest/gtest.h>
@@ -21,6 +20,7 @@
 
 #include "support/signals.hpp"
 #include "tactus/core/units.hpp"
+#include "tactus/io/actuator_file.hpp"
 #include "tactus/perception/channels.hpp"
 
 namespace tactus {
@@ -54,7 +54,7 @@ TEST(PostChain, NeverAboveTheCeiling) {
             const double fs = 48000;
             for (auto& [name, input] : loud_inputs(fs)) {
                 PostChain chain;
-                chain.prepare(fs, settings);
+                chain.prepare({.sample_rate_hz = fs}, settings);
                 EXPECT_DOUBLE_EQ(chain.ceiling(), db_to_gain(ceiling_db));
                 std::vector<float> y = input;
                 chain.process(y.data(), static_cast<int>(y.size()));
@@ -93,7 +93,7 @@ TEST(PostChain, FinalClipDoesNotActOnFullScaleSignals) {
             settings.set(P::post_drive_db, drive_db);
             for (auto& [name, input] : full_scale_inputs(fs)) {
                 PostChain chain;
-                chain.prepare(fs, settings);
+                chain.prepare({.sample_rate_hz = fs}, settings);
                 std::vector<float> y = input;
                 chain.process(y.data(), static_cast<int>(y.size()));
                 EXPECT_EQ(chain.clipped_samples(), 0)
@@ -105,7 +105,7 @@ TEST(PostChain, FinalClipDoesNotActOnFullScaleSignals) {
 
 TEST(PostChain, NonFiniteInputGivesFiniteOutput) {
     PostChain chain;
-    chain.prepare(48000, Settings{});
+    chain.prepare({.sample_rate_hz = 48000}, Settings{});
     std::vector<float> x = test::sine(200.0, 48000, 48000, 0.5);
     for (size_t i = 7; i < x.size(); i += 113)
         x[i] = i % 3 == 0   ? std::numeric_limits<float>::quiet_NaN()
@@ -123,8 +123,8 @@ TEST(PostChain, LatencyIsTheLimiterLookahead) {
         Settings settings;
         settings.set(P::post_lookahead_ms, 2.0);
         PostChain chain;
-        chain.prepare(fs, settings);
-        EXPECT_EQ(chain.latency_samples(), std::llround(2e-3 * fs)) << fs;
+        chain.prepare({.sample_rate_hz = fs}, settings);
+        EXPECT_EQ(chain.latency(), std::llround(2e-3 * fs)) << fs;
     }
 }
 
@@ -139,10 +139,12 @@ TEST(PostChain, QuietSineIsShapedOnlyByTheFiltersAndDrive) {
         settings.set(P::post_drive_db, drive_db);
         settings.set(P::post_limiter_threshold_db, -6);
         PostChain chain;
-        chain.prepare(fs, settings);
+        chain.prepare({.sample_rate_hz = fs}, settings);
         BandLimit first, last;
-        first.prepare(fs, 25, 900, PostChain::kFirstBandOrder);
-        last.prepare(fs, 25, 900, PostChain::kLastBandOrder);
+        first.prepare({.sample_rate_hz = fs},
+                      {.low_hz = 25, .high_hz = 900, .order = PostChain::kFirstBandOrder});
+        last.prepare({.sample_rate_hz = fs},
+                     {.low_hz = 25, .high_hz = 900, .order = PostChain::kLastBandOrder});
         for (double f : {40.0, 100.0, 250.0, 600.0}) {
             chain.reset();
             const double expected = first.magnitude_db(f) + last.magnitude_db(f) +
@@ -172,7 +174,7 @@ void expect_ceiling_holds_with_channels(const std::vector<float>& carrier, doubl
     settings.set(P::post_ceiling_db, ceiling_db);
     settings.set(P::post_drive_db, drive_db);
     PostChain chain;
-    chain.prepare(fs, settings);
+    chain.prepare({.sample_rate_hz = fs}, settings);
     const size_t n = carrier.size();
     std::vector<float> y = carrier, flutter(n), pressure(n);
     const double most_pressure = pressure_weight * chain.ceiling();
@@ -227,9 +229,11 @@ TEST(PostChain, FlutterPassesTheNpiBandThroughThe30HzPeak) {
         settings.set(P::post_drive_db, 0);
         settings.set(P::post_flutter_low_hz, 1);
         PostChain chain;
-        chain.prepare(fs, settings);
+        chain.prepare({.sample_rate_hz = fs}, settings);
         BandLimit last;
-        last.prepare(fs, 1, settings[P::post_band_high_hz], PostChain::kLastBandOrder);
+        last.prepare({.sample_rate_hz = fs}, {.low_hz = 1,
+                                              .high_hz = settings[P::post_band_high_hz],
+                                              .order = PostChain::kLastBandOrder});
         const BiquadCoefficients peak = BiquadCoefficients::peaking(30, 2, -3, fs);
         for (double f : {npi_low_hz, 8.0, 20.0, 30.0, 40.0}) {
             const double expected = last.magnitude_db(f) + peak.magnitude_db(f, fs);
@@ -242,7 +246,7 @@ TEST(PostChain, FlutterPassesTheNpiBandThroughThe30HzPeak) {
 
 TEST(PostChain, PressureArrivesUnfiltered) {
     PostChain chain;
-    chain.prepare(48000, with_channels(0.5));
+    chain.prepare({.sample_rate_hz = 48000}, with_channels(0.5));
     std::vector<float> carrier(48000, 0.0f), flutter(48000, 0.0f), pressure(48000, 0.3f);
     chain.process(carrier.data(), flutter.data(), pressure.data(), 48000);
     for (float v : carrier) ASSERT_EQ(v, 0.3f);
@@ -255,8 +259,8 @@ TEST(PostChain, ComponentsThatAreOffChangeNothing) {
     settings.set(P::pressure_weight, 0.5);  // a weight without a DC actuator
     settings.set(P::post_flutter_peak_db, 6);
     PostChain plain, given_buffers;
-    plain.prepare(fs, Settings{});
-    given_buffers.prepare(fs, settings);
+    plain.prepare({.sample_rate_hz = fs}, Settings{});
+    given_buffers.prepare({.sample_rate_hz = fs}, settings);
     std::vector<float> a = drums.audio, b = drums.audio;
     std::vector<float> flutter = test::white_noise(a.size(), 9), pressure(a.size(), 0.4f);
     plain.process(a.data(), static_cast<int>(a.size()));
@@ -271,19 +275,23 @@ TEST(PostChain, WithoutAnActuatorItIsExactlyThePapersFourStages) {
     const double fs = 44100;
     const Settings s;
     BandLimit first, last;
-    first.prepare(fs, s[P::post_band_low_hz], s[P::post_band_high_hz], PostChain::kFirstBandOrder);
-    last.prepare(fs, s[P::post_band_low_hz], s[P::post_band_high_hz], PostChain::kLastBandOrder);
+    first.prepare({.sample_rate_hz = fs}, {.low_hz = s[P::post_band_low_hz],
+                                           .high_hz = s[P::post_band_high_hz],
+                                           .order = PostChain::kFirstBandOrder});
+    last.prepare({.sample_rate_hz = fs}, {.low_hz = s[P::post_band_low_hz],
+                                          .high_hz = s[P::post_band_high_hz],
+                                          .order = PostChain::kLastBandOrder});
     FlatteningFilter flatten;
-    flatten.prepare(
-        fs, s[P::post_band_low_hz], s[P::post_band_high_hz],
-        {.strength = s[P::post_flatten_strength], .range_db = s[P::post_flatten_range_db]});
+    flatten.prepare({.sample_rate_hz = fs}, {.low_hz = s[P::post_band_low_hz],
+                                             .high_hz = s[P::post_band_high_hz],
+                                             .strength = s[P::post_flatten_strength],
+                                             .range_db = s[P::post_flatten_range_db]});
     PeakLimiter limiter;
-    limiter.prepare(
-        fs, s[P::post_lookahead_ms],
-        {.drive_db = s[P::post_drive_db],
-         .threshold_db = s[P::post_limiter_threshold_db],
-         .ceiling = db_to_gain(s[P::post_ceiling_db] - PostChain::kRingingMarginDb),
-         .release_ms = s[P::post_release_ms]});
+    limiter.prepare({.sample_rate_hz = fs}, s[P::post_lookahead_ms],
+                    {.drive_db = s[P::post_drive_db],
+                     .threshold_db = s[P::post_limiter_threshold_db],
+                     .ceiling = db_to_gain(s[P::post_ceiling_db] - PostChain::kRingingMarginDb),
+                     .release_ms = s[P::post_release_ms]});
     test::DrumSignal drums = test::drum_pattern(fs, 3.0, 5);
     std::vector<float> by_hand = drums.audio, chained = drums.audio;
     const int n = static_cast<int>(by_hand.size());
@@ -293,7 +301,7 @@ TEST(PostChain, WithoutAnActuatorItIsExactlyThePapersFourStages) {
     last.process(by_hand.data(), n);
     for (auto& v : by_hand) v = std::clamp(v, -1.0f, 1.0f);
     PostChain chain;
-    chain.prepare(fs, s, nullptr);
+    chain.prepare({.sample_rate_hz = fs}, s, nullptr);
     chain.process(chained.data(), n);
     EXPECT_EQ(chained, by_hand);
 }
@@ -305,7 +313,7 @@ TEST(PostChain, ActuatorCompensationAndMaxDrive) {
     settings.set(P::post_drive_db, 20);
     for (auto& [name, input] : loud_inputs(fs)) {
         PostChain chain;
-        chain.prepare(fs, settings, &lra);
+        chain.prepare({.sample_rate_hz = fs}, settings, &lra);
         EXPECT_DOUBLE_EQ(chain.ceiling(), lra.max_drive);
         std::vector<float> y = input;
         chain.process(y.data(), static_cast<int>(y.size()));
@@ -316,10 +324,10 @@ TEST(PostChain, ActuatorCompensationAndMaxDrive) {
     Settings quiet;
     quiet.set(P::post_drive_db, 0);
     PostChain plain, compensated;
-    plain.prepare(fs, quiet);
-    compensated.prepare(fs, quiet, &voice_coil);
+    plain.prepare({.sample_rate_hz = fs}, quiet);
+    compensated.prepare({.sample_rate_hz = fs}, quiet, &voice_coil);
     ActuatorCompensation compensation;
-    compensation.prepare(fs, voice_coil);
+    compensation.prepare({.sample_rate_hz = fs}, voice_coil);
     for (double f : {40.0, 200.0, 600.0}) {
         const auto gain = [&](PostChain& chain) {
             return test::measured_gain_db([&](float* x, int n) { chain.process(x, n); }, f, fs, 1.0,

@@ -32,7 +32,7 @@ class EnvelopeCase : public ::testing::TestWithParam<Case> {};
 TEST_P(EnvelopeCase, SamplesTheContinuousAttackAndDecay) {
     const auto [fs, attack_ms, decay_ms] = GetParam();
     Envelope env;
-    env.prepare(fs);
+    env.prepare({.sample_rate_hz = fs});
     env.set_shape(attack_ms, decay_ms, 0.0);
     env.trigger();
     const double peak_samples = std::max(1.0, attack_ms * 1e-3 * fs);
@@ -48,7 +48,7 @@ TEST_P(EnvelopeCase, SamplesTheContinuousAttackAndDecay) {
 TEST_P(EnvelopeCase, DecayFallsSixtyDbInDecayMs) {
     const auto [fs, attack_ms, decay_ms] = GetParam();
     Envelope env;
-    env.prepare(fs);
+    env.prepare({.sample_rate_hz = fs});
     env.set_shape(attack_ms, decay_ms, 0.0);
     env.trigger();
     run_past_peak(env);
@@ -76,7 +76,7 @@ INSTANTIATE_TEST_SUITE_P(Shapes, EnvelopeCase,
 TEST(Envelope, RetriggerDuringDecayRisesFromTheCurrentLevel) {
     const double fs = 48000;
     Envelope env;
-    env.prepare(fs);
+    env.prepare({.sample_rate_hz = fs});
     env.set_shape(2.0, 100.0, 0.0);
     env.trigger();
     run_past_peak(env);
@@ -96,7 +96,7 @@ TEST(Envelope, RetriggerDuringDecayRisesFromTheCurrentLevel) {
 
 TEST(Envelope, RetriggerDuringAttackContinuesTheRise) {
     Envelope env;
-    env.prepare(48000);
+    env.prepare({.sample_rate_hz = 48000});
     env.set_shape(5.0, 100.0, 0.0);
     env.trigger();
     for (int i = 0; i < 100; ++i) env.next();
@@ -110,7 +110,7 @@ TEST(Envelope, SustainLevelIsApproachedAndHeld) {
     const double fs = 48000;
     for (double sustain : {0.1, 0.5, 0.9}) {
         Envelope env;
-        env.prepare(fs);
+        env.prepare({.sample_rate_hz = fs});
         env.set_shape(1.0, 50.0, sustain);
         env.trigger();
         run_past_peak(env);
@@ -124,7 +124,7 @@ TEST(Envelope, SustainLevelIsApproachedAndHeld) {
 
 TEST(Envelope, SilentUntilTriggeredAndAfterReset) {
     Envelope env;
-    env.prepare(48000);
+    env.prepare({.sample_rate_hz = 48000});
     env.set_shape(1.0, 150.0, 0.0);
     for (int i = 0; i < 1000; ++i) ASSERT_EQ(env.next(), 0.0);
     env.trigger();

@@ -28,7 +28,7 @@ ControlFrame flutter_frame(double rate_hz, double amplitude, double mix = 0.0) {
 
 std::vector<float> render(Flutter& flutter, size_t count) {
     std::vector<float> out(count, 1.0f);
-    flutter.render(out.data(), static_cast<int>(out.size()));
+    flutter.process(out.data(), static_cast<int>(out.size()));
     return out;
 }
 
@@ -36,7 +36,7 @@ TEST(Flutter, EnergyAtTheRateAndNothingAboveNpi) {
     for (double fs : {4000.0, 8000.0, 48000.0}) {
         for (double rate_hz : {3.0, 9.5, 25.0}) {
             Flutter flutter;
-            flutter.prepare(fs);
+            flutter.prepare({.sample_rate_hz = fs});
             flutter.apply(flutter_frame(rate_hz, 0.5, 1.0));
             std::vector<float> out = render(flutter, static_cast<size_t>(fs));  // settle
             out = render(flutter, 1 << 17);
@@ -56,7 +56,7 @@ TEST(Flutter, EnergyAtTheRateAndNothingAboveNpi) {
 
 TEST(Flutter, SilentFramesGiveExactZeros) {
     Flutter flutter;
-    flutter.prepare(48000);
+    flutter.prepare({.sample_rate_hz = 48000});
     flutter.apply(flutter_frame(20, 0.0));
     for (float v : render(flutter, 48000)) ASSERT_EQ(v, 0.0f);
     flutter.apply(flutter_frame(20, 0.3));
@@ -71,7 +71,7 @@ TEST(Flutter, SilentFramesGiveExactZeros) {
 TEST(Flutter, RiseFromSilenceStartsAtPhaseZeroAndGlides) {
     const double fs = 48000, rate_hz = 10, a = 0.4;
     Flutter flutter;
-    flutter.prepare(fs);
+    flutter.prepare({.sample_rate_hz = fs});
     flutter.apply(flutter_frame(rate_hz, a));
     const std::vector<float> out = render(flutter, static_cast<size_t>(fs / 2));
     const double tau_s = 1.0 / (2.0 * kPi * kNpiHighHz);
@@ -86,7 +86,7 @@ TEST(Flutter, RiseFromSilenceStartsAtPhaseZeroAndGlides) {
 TEST(Flutter, LevelStepsAndRateChangesDoNotClick) {
     const double fs = 48000;
     Flutter flutter;
-    flutter.prepare(fs);
+    flutter.prepare({.sample_rate_hz = fs});
     flutter.apply(flutter_frame(30, 0.1));
     std::vector<float> out = render(flutter, 12000);
     // A step from 0.1 to 0.8 at the crest of the wave, then a rate jump: the largest

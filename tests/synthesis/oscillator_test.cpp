@@ -26,7 +26,7 @@ constexpr double kFloor = 1e-4;  // -80 dB
 
 std::vector<double> render(double fs, double limit_hz, double f0, double mix) {
     Oscillator osc;
-    osc.prepare(fs, limit_hz);
+    osc.prepare({.sample_rate_hz = fs}, limit_hz);
     std::vector<double> x(kLength);
     for (auto& v : x) v = osc.next(f0, mix);
     return x;
@@ -92,9 +92,9 @@ INSTANTIATE_TEST_SUITE_P(RatesAndPitches, OscillatorCase,
 TEST(Oscillator, MixIsLinearBetweenSineAndSquare) {
     const double fs = 48000, f0 = 87.3;
     Oscillator sine, square, half;
-    sine.prepare(fs, 1000);
-    square.prepare(fs, 1000);
-    half.prepare(fs, 1000);
+    sine.prepare({.sample_rate_hz = fs}, 1000);
+    square.prepare({.sample_rate_hz = fs}, 1000);
+    half.prepare({.sample_rate_hz = fs}, 1000);
     for (int i = 0; i < 10000; ++i) {
         const double a = sine.next(f0, 0.0), b = square.next(f0, 1.0), c = half.next(f0, 0.25);
         ASSERT_NEAR(c, 0.75 * a + 0.25 * b, 1e-12) << i;
@@ -103,7 +103,7 @@ TEST(Oscillator, MixIsLinearBetweenSineAndSquare) {
 
 TEST(Oscillator, RestartPhaseStartsAtAZeroCrossing) {
     Oscillator osc;
-    osc.prepare(48000, 1000);
+    osc.prepare({.sample_rate_hz = 48000}, 1000);
     for (int i = 0; i < 1234; ++i) osc.next(100.0, 0.5);
     osc.reset();
     EXPECT_EQ(osc.next(100.0, 1.0), 0.0);
@@ -127,7 +127,7 @@ TEST(Oscillator, SquareFundamentalIsNeverFaded) {
 TEST(Oscillator, NonFiniteFrequencyReturns) {
     TACTUS_EXPECT_FINISHES_OK(5, []() -> std::string {
         Oscillator osc;
-        osc.prepare(48000, 1000);
+        osc.prepare({.sample_rate_hz = 48000}, 1000);
         for (double f :
              {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
             for (double mix : {0.0, 0.5, 1.0}) osc.next(f, mix);
@@ -140,7 +140,7 @@ TEST(Oscillator, NonFiniteFrequencyDoesNotPoisonLaterOutput) {
     for (double bad :
          {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
         Oscillator osc;
-        osc.prepare(48000, 1000);
+        osc.prepare({.sample_rate_hz = 48000}, 1000);
         osc.next(bad, 1.0);
         for (int i = 0; i < 100; ++i) ASSERT_TRUE(std::isfinite(osc.next(100.0, 0.5))) << bad;
     }

@@ -24,13 +24,13 @@ ControlFrame pressure_frame(double level) {
 
 std::vector<float> render(Pressure& p, size_t count) {
     std::vector<float> out(count, 1.0f);
-    p.render(out.data(), static_cast<int>(out.size()));
+    p.process(out.data(), static_cast<int>(out.size()));
     return out;
 }
 
 TEST(Pressure, ZeroLevelIsExactZeros) {
     Pressure p;
-    p.prepare(48000);
+    p.prepare({.sample_rate_hz = 48000});
     p.apply(pressure_frame(0.0));
     for (float v : render(p, 48000)) ASSERT_EQ(v, 0.0f);
 }
@@ -38,7 +38,7 @@ TEST(Pressure, ZeroLevelIsExactZeros) {
 TEST(Pressure, StepGlidesWithNpiiiTimeConstant) {
     for (double fs : {4000.0, 48000.0}) {
         Pressure p;
-        p.prepare(fs);
+        p.prepare({.sample_rate_hz = fs});
         p.apply(pressure_frame(0.25));
         const std::vector<float> up = render(p, static_cast<size_t>(2 * fs));
         const double tau_s = 1.0 / (2 * kPi * kNpiiiHighHz);

@@ -28,10 +28,10 @@ ControlFrame pulse(double frequency_hz, double amplitude, bool trigger) {
 
 TEST(Voice, SilentWithoutTrigger) {
     Voice voice;
-    voice.prepare(48000, 1000);
+    voice.prepare({.sample_rate_hz = 48000}, 1000);
     voice.apply(pulse(100, 0.8, false));
     std::vector<float> out(48000, 1.0f);
-    voice.render(out.data(), static_cast<int>(out.size()));
+    voice.process(out.data(), static_cast<int>(out.size()));
     for (float v : out) ASSERT_EQ(v, 0.0f);
 }
 
@@ -40,13 +40,13 @@ TEST(Voice, SilentWithoutTrigger) {
 TEST(Voice, PulseIsGlideTimesEnvelopeTimesSineFromZeroPhase) {
     const double fs = 48000, f = 100, a = 0.5;
     Voice voice;
-    voice.prepare(fs, 1000);
+    voice.prepare({.sample_rate_hz = fs}, 1000);
     voice.apply(pulse(f, a, true));
     std::vector<float> out(static_cast<size_t>(2 * fs));
-    voice.render(out.data(), static_cast<int>(out.size()));
+    voice.process(out.data(), static_cast<int>(out.size()));
 
     Envelope env;
-    env.prepare(fs);
+    env.prepare({.sample_rate_hz = fs});
     env.set_shape(1, 100, 0);
     env.trigger();
     const double g = std::exp(-1.0 / (1e-3 * fs));
@@ -66,11 +66,11 @@ TEST(Voice, PulseIsGlideTimesEnvelopeTimesSineFromZeroPhase) {
 TEST(Voice, SameSignalAtAQuarterOfTheRate) {
     const auto render = [](double fs, int hop) {
         Voice voice;
-        voice.prepare(fs, 1000);
+        voice.prepare({.sample_rate_hz = fs}, 1000);
         std::vector<float> out;
         for (int frame = 0; frame < 60; ++frame) {
             std::vector<float> block(static_cast<size_t>(hop));
-            voice.render(block.data(), hop);
+            voice.process(block.data(), hop);
             out.insert(out.end(), block.begin(), block.end());
             ControlFrame control =
                 pulse(350.0 - 2 * frame, 0.5 * std::exp(-frame / 20.0), frame == 2);
@@ -92,12 +92,12 @@ TEST(Voice, SameSignalAtAQuarterOfTheRate) {
 TEST(Voice, RetriggerWhileLoudIsContinuous) {
     const double fs = 48000;
     Voice voice;
-    voice.prepare(fs, 1000);
+    voice.prepare({.sample_rate_hz = fs}, 1000);
     voice.apply(pulse(120, 0.8, true));
     std::vector<float> out(2400);
-    voice.render(out.data(), 1200);
+    voice.process(out.data(), 1200);
     voice.apply(pulse(120, 0.8, true));  // envelope still loud: phase continues
-    voice.render(out.data() + 1200, 1200);
+    voice.process(out.data() + 1200, 1200);
     // Largest step of an 0.8-amplitude 120 Hz sine: 0.8 * 2 pi 120 / fs ~ 0.0126.
     for (size_t i = 1; i < out.size(); ++i)
         ASSERT_LT(std::abs(out[i] - out[i - 1]), 0.02) << "jump at sample " << i;
@@ -105,12 +105,12 @@ TEST(Voice, RetriggerWhileLoudIsContinuous) {
 
 TEST(Voice, ResetSilences) {
     Voice voice;
-    voice.prepare(48000, 1000);
+    voice.prepare({.sample_rate_hz = 48000}, 1000);
     voice.apply(pulse(100, 1.0, true));
     std::vector<float> out(480);
-    voice.render(out.data(), 480);
+    voice.process(out.data(), 480);
     voice.reset();
-    voice.render(out.data(), 480);
+    voice.process(out.data(), 480);
     for (float v : out) ASSERT_EQ(v, 0.0f);
 }
 

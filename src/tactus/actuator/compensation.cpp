@@ -26,7 +26,8 @@ double ActuatorCompensation::magnitude_db(double frequency_hz) const {
     return notch_db(frequency_hz) + eq_.magnitude_db(frequency_hz);
 }
 
-void ActuatorCompensation::prepare(double sample_rate_hz, const ActuatorProfile& actuator) {
+void ActuatorCompensation::prepare(const ProcessSpec& spec, const ActuatorProfile& actuator) {
+    const double sample_rate_hz = spec.sample_rate_hz;
     actuator_ = actuator;
     sample_rate_hz_ = sample_rate_hz;
     notch_on_ = actuator.resonance == ResonanceKind::band_pass &&
@@ -41,8 +42,8 @@ void ActuatorCompensation::prepare(double sample_rate_hz, const ActuatorProfile&
     // so the response stays near the bound outside the band instead of drifting.
     const double fit_low_hz = std::max(actuator.band_low_hz / 2, kLowestFitHz);
     const double fit_high_hz = std::min(actuator.band_high_hz * 2, fit_low_hz * kWidestFitRatio);
-    eq_.design(sample_rate_hz, fit_low_hz, fit_high_hz,
-               [this](double f) { return target_db(f) - notch_db(f); });
+    eq_.prepare(spec, FittedEq::fit(sample_rate_hz, {.low_hz = fit_low_hz, .high_hz = fit_high_hz},
+                                    [this](double f) { return target_db(f) - notch_db(f); }));
     reset();
 }
 

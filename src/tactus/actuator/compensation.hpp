@@ -11,6 +11,7 @@
 #include "tactus/actuator/profile.hpp"
 #include "tactus/dsp/biquad.hpp"
 #include "tactus/dsp/fitted_eq.hpp"
+#include "tactus/dsp/process_spec.hpp"
 
 namespace tactus {
 
@@ -18,7 +19,8 @@ class ActuatorCompensation {
   public:
     static constexpr double kBoundDb = 12.0;
 
-    void prepare(double sample_rate_hz, const ActuatorProfile& actuator);  // may allocate
+    void prepare(const ProcessSpec& spec, const ActuatorProfile& actuator);  // may allocate
+    int latency() const { return 0; }                                        // minimum phase
     void reset() noexcept {
         notch_.reset();
         eq_.reset();

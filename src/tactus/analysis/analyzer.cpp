@@ -11,23 +11,25 @@ namespace {
 constexpr double kPitchIntervalMs = 10.0;  // f0 changes slowly: update it every ~10 ms
 }
 
-void Analyzer::prepare(double sample_rate_hz, const Settings& s) {
+void Analyzer::prepare(const ProcessSpec& spec, const Settings& s) {
+    const double sample_rate_hz = spec.sample_rate_hz;
     hop_samples_ =
         std::max<int>(1, static_cast<int>(ms_to_samples(s[P::analysis_hop_ms], sample_rate_hz)));
     stft_.prepare(nearest_power_of_two(ms_to_samples(s[P::analysis_window_ms], sample_rate_hz)),
                   sample_rate_hz);
     brightness_.prepare(stft_.bins(), stft_.bin_hz());
     noisiness_.prepare(stft_.bins(), stft_.bin_hz());
-    loudness_.prepare(sample_rate_hz, s[P::loudness_window_ms]);
-    pitch_.prepare(sample_rate_hz, s[P::pitch_min_hz],
-                   std::min(s[P::pitch_max_hz], 0.45 * sample_rate_hz), s[P::pitch_threshold]);
-    onsets_.prepare(sample_rate_hz, hop_samples_,
+    loudness_.prepare(spec, s[P::loudness_window_ms]);
+    pitch_.prepare(spec, {.min_hz = s[P::pitch_min_hz],
+                          .max_hz = std::min(s[P::pitch_max_hz], 0.45 * sample_rate_hz),
+                          .threshold = s[P::pitch_threshold]});
+    onsets_.prepare(spec, hop_samples_,
                     {s[P::onset_window_ms], s[P::onset_threshold], s[P::onset_ratio],
                      s[P::onset_history_ms], s[P::onset_min_interval_ms]});
     history_.prepare(
         std::max({stft_.window_samples(), pitch_.span_samples(), onsets_.span_samples()}));
     clean_.assign(static_cast<size_t>(hop_samples_), 0.0f);
-    dc_blocker_.prepare(sample_rate_hz);
+    dc_blocker_.prepare(spec);
     pitch_every_frames_ = std::max(
         1, static_cast<int>(std::lround(kPitchIntervalMs * 1e-3 * sample_rate_hz / hop_samples_)));
     reset();
@@ -48,7 +50,7 @@ void Analyzer::reset() noexcept {
     frames_ = 0;
 }
 
-bool Analyzer::write(const float* samples, int count) noexcept {
+bool Analyzer::process(const float* samples, int count) noexcept {
     for (int i = 0; i < count; ++i) {  // comparisons, not std::isnormal: they vectorise
         const float x = samples[i], magnitude = std::fabs(x);
         clean_[i] = magnitude >= std::numeric_limits<float>::min() && magnitude <= kMaxInput ? x
@@ -56,7 +58,7 @@ bool Analyzer::write(const float* samples, int count) noexcept {
                         ? std::copysign(kMaxInput, x)
                         : 0.0f;
     }
-    if (computed_.loudness) loudness_.write(clean_.data(), count);
+    if (computed_.loudness) loudness_.process(clean_.data(), count);
     dc_blocker_.process(clean_.data(), count);
     history_.write(clean_.data(), count);
     filled_ += count;

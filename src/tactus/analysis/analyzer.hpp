@@ -12,15 +12,16 @@
 #include "tactus/analysis/noisiness.hpp"
 #include "tactus/analysis/onset_detector.hpp"
 #include "tactus/analysis/pitch_yin.hpp"
-#include "tactus/dsp/sample_history.hpp"
 #include "tactus/analysis/stft_frame.hpp"
+#include "tactus/dsp/process_spec.hpp"
+#include "tactus/dsp/sample_history.hpp"
 #include "tactus/params/params.hpp"
 
 namespace tactus {
 
 class Analyzer {
   public:
-    void prepare(double sample_rate_hz, const Settings& settings);  // may allocate
+    void prepare(const ProcessSpec& spec, const Settings& settings);  // may allocate
     void reset() noexcept;
     // Live (audio thread): the settings that change no buffer (onset thresholds and interval,
     // pitch threshold); the others need prepare().
@@ -31,15 +32,17 @@ class Analyzer {
     void set_features(FeatureSet computed) noexcept { computed_ = computed; }
     // Samples that can be written before the next frame is due (1 ... hop).
     int samples_to_next_frame() const noexcept { return hop_samples_ - filled_; }
-    // Writes at most samples_to_next_frame() samples; returns true when a frame is due.
+    // Takes at most samples_to_next_frame() samples; returns true when a frame is due.
     // Non-finite and denormal samples are read as 0, levels beyond +-kMaxInput are clipped; a DC
     // offset is removed before the spectral features.
-    bool write(const float* samples, int count) noexcept;
+    bool process(const float* samples, int count) noexcept;
+    // The longest a sample waits before a frame reads it.
+    int latency() const { return hop_samples_ - 1; }
 
     // +60 dB over full scale: only corrupt input gets there, and it would overflow the float
     // sums of squares of the spectra.
     static constexpr float kMaxInput = 1000.0f;
-    // Analyses the frame ending at the newest sample. Call when write() returned true.
+    // Analyses the frame ending at the newest sample. Call when process() returned true.
     const Features& analyse() noexcept;
 
   private:

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "tactus/core/units.hpp"
+#include "tactus/dsp/process_spec.hpp"
 
 namespace tactus {
 
@@ -15,11 +16,12 @@ class DcBlocker {
   public:
     static constexpr double kCornerHz = 10.0;  // below every feature's band (pitch.min_hz >= 30)
 
-    void prepare(double sample_rate_hz) {
-        pole_ = static_cast<float>(std::exp(-2.0 * kPi * kCornerHz / sample_rate_hz));
+    void prepare(const ProcessSpec& spec) {
+        pole_ = static_cast<float>(std::exp(-2.0 * kPi * kCornerHz / spec.sample_rate_hz));
         reset();
     }
     void reset() noexcept { previous_in_ = previous_out_ = 0.0f; }
+    int latency() const { return 0; }
     // In place; count samples.
     void process(float* samples, int count) noexcept {
         float x1 = previous_in_, y1 = previous_out_;

@@ -34,7 +34,8 @@ BiquadCoefficients k_highpass(double fs) {
 
 }  // namespace
 
-void Loudness::prepare(double sample_rate_hz, double window_ms) {
+void Loudness::prepare(const ProcessSpec& spec, double window_ms) {
+    const double sample_rate_hz = spec.sample_rate_hz;
     shelf_.set(k_shelf(sample_rate_hz));
     highpass_.set(k_highpass(sample_rate_hz));
     const auto length = std::max<int64_t>(1, ms_to_samples(window_ms, sample_rate_hz));
@@ -50,7 +51,7 @@ void Loudness::reset() noexcept {
     sum_ = 0.0;
 }
 
-void Loudness::write(const float* samples, int count) noexcept {
+void Loudness::process(const float* samples, int count) noexcept {
     const size_t length = squares_.size();
     Biquad shelf = shelf_, highpass = highpass_;  // state in locals: kept in registers
     double sum = sum_;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tactus/dsp/biquad.hpp"
+#include "tactus/dsp/process_spec.hpp"
 
 namespace tactus {
 
@@ -15,10 +16,10 @@ class Loudness {
   public:
     static constexpr double kFloorDb = -120.0;  // reported for silence
 
-    void prepare(double sample_rate_hz, double window_ms);  // may allocate
+    void prepare(const ProcessSpec& spec, double window_ms);  // may allocate
     void reset() noexcept;
-    void write(const float* samples, int count) noexcept;  // K-weights and stores squares
-    double loudness_db() const noexcept;                   // over the newest window
+    void process(const float* samples, int count) noexcept;  // K-weights and stores squares
+    double loudness_db() const noexcept;                     // over the newest window
 
   private:
     Biquad shelf_, highpass_;

@@ -13,7 +13,8 @@ constexpr double kTopHz = 16000.0;          // above this, flux is mostly noise
 constexpr double kSubBlockMs = 0.5;         // time resolution of the onset-time refinement
 }  // namespace
 
-void OnsetDetector::prepare(double sample_rate_hz, int hop_samples, const OnsetSettings& s) {
+void OnsetDetector::prepare(const ProcessSpec& spec, int hop_samples, const OnsetSettings& s) {
+    const double sample_rate_hz = spec.sample_rate_hz;
     settings_ = s;
     sample_rate_hz_ = sample_rate_hz;
     hop_samples_ = hop_samples;

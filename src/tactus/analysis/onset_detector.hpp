@@ -12,8 +12,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "tactus/dsp/sample_history.hpp"
 #include "tactus/analysis/stft_frame.hpp"
+#include "tactus/dsp/process_spec.hpp"
+#include "tactus/dsp/sample_history.hpp"
 
 namespace tactus {
 
@@ -33,7 +34,7 @@ struct OnsetDecision {
 
 class OnsetDetector {
   public:
-    void prepare(double sample_rate_hz, int hop_samples, const OnsetSettings& settings);
+    void prepare(const ProcessSpec& spec, int hop_samples, const OnsetSettings& settings);
     void reset() noexcept;
     // Live (audio thread): threshold, ratio and minimum interval; the windows stay as prepared.
     void set_thresholds(double threshold, double ratio, double min_interval_ms) noexcept;

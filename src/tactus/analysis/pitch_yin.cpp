@@ -7,9 +7,11 @@
 
 namespace tactus {
 
-void PitchYin::prepare(double sample_rate_hz, double min_hz, double max_hz, double threshold) {
+void PitchYin::prepare(const ProcessSpec& spec, const PitchSettings& settings) {
+    const double sample_rate_hz = spec.sample_rate_hz;
+    const double min_hz = settings.min_hz, max_hz = settings.max_hz;
     sample_rate_hz_ = sample_rate_hz;
-    threshold_ = threshold;
+    threshold_ = settings.threshold;
     max_lag_ = static_cast<int>(std::ceil(sample_rate_hz / min_hz)) + 1;
     min_lag_ = std::max(2, static_cast<int>(std::floor(sample_rate_hz / max_hz)));
     window_ = max_lag_ + 1;

@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "tactus/dsp/process_spec.hpp"
 #include "tactus/dsp/real_fft.hpp"
 #include "tactus/dsp/sample_history.hpp"
 
@@ -16,9 +17,16 @@ struct Pitch {
     double confidence = 0;
 };
 
+// The pitch range searched and the YIN absolute threshold.
+struct PitchSettings {
+    double min_hz = 50;
+    double max_hz = 1500;
+    double threshold = 0.15;
+};
+
 class PitchYin {
   public:
-    void prepare(double sample_rate_hz, double min_hz, double max_hz, double threshold);
+    void prepare(const ProcessSpec& spec, const PitchSettings& settings);  // may allocate
     // Live (audio thread): the YIN absolute threshold.
     void set_threshold(double threshold) noexcept { threshold_ = threshold; }
     Pitch analyse(const SampleHistory& history) noexcept;

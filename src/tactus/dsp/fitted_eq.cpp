@@ -37,17 +37,19 @@ std::vector<double> solve(std::vector<double> a, std::vector<double> b, int n) {
 
 }  // namespace
 
-std::vector<double> FittedEq::grid(double low_hz, double high_hz) {
+std::vector<double> FittedEq::grid(const FitBand& band) {
+    const double low_hz = band.low_hz, high_hz = band.high_hz;
     std::vector<double> frequencies(kGridPoints);
     for (int i = 0; i < kGridPoints; ++i)
         frequencies[i] = low_hz * std::pow(high_hz / low_hz, i / (kGridPoints - 1.0));
     return frequencies;
 }
 
-FittedEq::Design FittedEq::fit(double sample_rate_hz, double low_hz, double high_hz,
+FittedEq::Design FittedEq::fit(double sample_rate_hz, const FitBand& band,
                                const std::function<double(double)>& target_db) {
-    high_hz = highest_fitted_hz(high_hz, sample_rate_hz);
-    const std::vector<double> frequencies = grid(low_hz, high_hz);
+    const double low_hz = band.low_hz;
+    const double high_hz = highest_fitted_hz(band.high_hz, sample_rate_hz);
+    const std::vector<double> frequencies = grid({.low_hz = low_hz, .high_hz = high_hz});
     std::vector<double> target(kGridPoints);
     for (int i = 0; i < kGridPoints; ++i) target[i] = target_db(frequencies[i]);
 
@@ -129,8 +131,8 @@ void FittedEq::step_glide() noexcept {
     for (int s = 0; s < count_; ++s) {
         const BiquadCoefficients& a = from_.sections[s];
         const BiquadCoefficients& b = to_.sections[s];
-        sections_[s].set({mix(a.b0, b.b0), mix(a.b1, b.b1), mix(a.b2, b.b2), mix(a.a1, b.a1),
-                          mix(a.a2, b.a2)});
+        sections_[s].set(
+            {mix(a.b0, b.b0), mix(a.b1, b.b1), mix(a.b2, b.b2), mix(a.a1, b.a1), mix(a.a2, b.a2)});
     }
     gain_ = mix(from_.gain, to_.gain);
 }

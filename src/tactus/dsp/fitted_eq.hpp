@@ -16,8 +16,15 @@
 #include <vector>
 
 #include "tactus/dsp/biquad.hpp"
+#include "tactus/dsp/process_spec.hpp"
 
 namespace tactus {
+
+// The band a fit spans.
+struct FitBand {
+    double low_hz = 20;
+    double high_hz = 1000;
+};
 
 class FittedEq {
   public:
@@ -33,25 +40,22 @@ class FittedEq {
     };
 
     // The log-frequency grid the fit is made on (and a target's extremes are best taken on).
-    static std::vector<double> grid(double low_hz, double high_hz);
+    static std::vector<double> grid(const FitBand& band);
     static double highest_fitted_hz(double high_hz, double sample_rate_hz) {
         return std::min(high_hz, 0.45 * sample_rate_hz);
     }
 
-    // Allocates. The target is sampled on grid(low_hz, highest_fitted_hz(high_hz, fs)).
-    static Design fit(double sample_rate_hz, double low_hz, double high_hz,
+    // Allocates. The target is sampled on the grid of the band, its top at most
+    // highest_fitted_hz().
+    static Design fit(double sample_rate_hz, const FitBand& band,
                       const std::function<double(double frequency_hz)>& target_db);
-    // fit(), then set() and reset().
-    void design(double sample_rate_hz, double low_hz, double high_hz,
-                const std::function<double(double frequency_hz)>& target_db) {
-        prepare(sample_rate_hz, fit(sample_rate_hz, low_hz, high_hz, target_db));
-    }
     // The rate magnitude_db() reads, then set() and reset().
-    void prepare(double sample_rate_hz, const Design& design) noexcept {
-        sample_rate_hz_ = sample_rate_hz;
+    void prepare(const ProcessSpec& spec, const Design& design) noexcept {
+        sample_rate_hz_ = spec.sample_rate_hz;
         set(design);
         reset();
     }
+    int latency() const { return 0; }  // minimum phase
     // Runs `design` from now on (control or audio thread, between process() calls).
     void set(const Design& design) noexcept;
     // Audio thread: moves to `design` over `samples` samples (at once when 0). The design must
@@ -67,10 +71,10 @@ class FittedEq {
     std::array<Biquad, kMaxSections> sections_;
     int count_ = 0;
     double gain_ = 1.0;
-    Design from_, to_;        // a glide's ends
-    int glide_steps_ = 0;     // coefficient steps a glide takes
-    int glide_done_ = 0;      // steps taken
-    int until_step_ = 0;      // samples until the next step
+    Design from_, to_;     // a glide's ends
+    int glide_steps_ = 0;  // coefficient steps a glide takes
+    int glide_done_ = 0;   // steps taken
+    int until_step_ = 0;   // samples until the next step
 };
 
 }  // namespace tactus

@@ -8,21 +8,23 @@
 
 namespace tactus {
 
-void ActuatorChain::prepare(const ChainSpec& chain, const Settings& settings,
+void ActuatorChain::prepare(const ProcessSpec& spec, int rate_divisor, const Settings& settings,
                             const ActuatorProfile* profile) {
-    const double sample_rate_hz = chain.internal_rate_hz * chain.rate_divisor;
-    upsampler_.prepare(chain.rate_divisor, chain.max_internal_block);
+    const double sample_rate_hz = spec.sample_rate_hz;
+    const ProcessSpec internal{.sample_rate_hz = sample_rate_hz / rate_divisor,
+                               .max_block = max_internal_block(spec, rate_divisor)};
+    upsampler_.prepare(spec, rate_divisor);
     // The upsampler's delay comes out of the limiter's look-ahead (down to the shortest allowed).
     Settings post_settings = settings;
     const double upsampler_delay_ms = 1e3 * upsampler_.delay_samples() / sample_rate_hz;
     post_settings.set(P::post_lookahead_ms,
-                      std::max(spec(P::post_lookahead_ms).min,
+                      std::max(tactus::spec(P::post_lookahead_ms).min,
                                settings[P::post_lookahead_ms] - upsampler_delay_ms));
-    post_.prepare(chain.internal_rate_hz, post_settings, profile);
-    const auto internal = static_cast<size_t>(chain.max_internal_block);
-    carrier_.assign(internal, 0.0f);
-    flutter_.assign(internal, 0.0f);
-    pressure_.assign(internal, 0.0f);
+    post_.prepare(internal, post_settings, profile);
+    const auto block = static_cast<size_t>(internal.max_block);
+    carrier_.assign(block, 0.0f);
+    flutter_.assign(block, 0.0f);
+    pressure_.assign(block, 0.0f);
     ceiling_ = clip_ceiling_ = float_at_most(post_.ceiling());
     reset();
 }

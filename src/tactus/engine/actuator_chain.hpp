@@ -14,18 +14,15 @@
 
 namespace tactus {
 
-// The sizes and rates a chain is prepared for, by name.
-struct ChainSpec {
-    double internal_rate_hz = 48000;  // synthesis and post-processing
-    int rate_divisor = 1;             // input samples per internal sample
-    int max_internal_block = 1;       // internal samples one process() call gets at most
-    int max_block = 1;                // output samples one process() call writes at most
-};
-
 class ActuatorChain {
   public:
-    // May allocate. `profile` may be null (no compensation).
-    void prepare(const ChainSpec& chain, const Settings& settings,
+    // Internal samples one process() call gets at most, for output blocks of spec.max_block.
+    static int max_internal_block(const ProcessSpec& spec, int rate_divisor) {
+        return (spec.max_block + rate_divisor - 1) / rate_divisor + 1;
+    }
+    // spec: the output (input-rate) side; synthesis and post-processing run at
+    // spec.sample_rate_hz / rate_divisor. May allocate. `profile` may be null (no compensation).
+    void prepare(const ProcessSpec& spec, int rate_divisor, const Settings& settings,
                  const ActuatorProfile* profile);
     void reset() noexcept;
     // Audio thread: the live settings over `glide_samples` internal samples.
@@ -46,13 +43,15 @@ class ActuatorChain {
 
     int64_t clipped_samples() const { return post_.clipped_samples() + clipped_; }
     const Upsampler& upsampler() const { return upsampler_; }
+    // The look-ahead and the upsampler's delay, in output samples.
+    int latency() const { return post_.latency() * upsampler_.factor() + upsampler_.latency(); }
 
   private:
     PostChain post_;
     Upsampler upsampler_;
     std::vector<float> carrier_, flutter_, pressure_;  // this chain's copies
-    double pressure_scale_ = 1;  // this ceiling over the reference ceiling
-    float ceiling_ = 1, clip_ceiling_ = 1;  // clip_ceiling_: the higher during a glide
+    double pressure_scale_ = 1;                        // this ceiling over the reference ceiling
+    float ceiling_ = 1, clip_ceiling_ = 1;             // clip_ceiling_: the higher during a glide
     int64_t clipped_ = 0;
 };
 

@@ -58,37 +58,37 @@ void Engine::check_sample_rate(double sample_rate_hz) {
 
 std::unique_ptr<Pipeline> Engine::make_pipeline(const Settings& settings, int64_t origin) const {
     auto pipeline = std::make_unique<Pipeline>();
-    pipeline->prepare({.sample_rate_hz = spec_.sample_rate_hz,
-                       .max_block = spec_.max_block,
-                       .origin_sample = origin},
-                      settings, outputs_);
+    pipeline->prepare({.sample_rate_hz = spec_.sample_rate_hz, .max_block = spec_.max_block},
+                      settings, outputs_, origin);
     pipeline->set_extra_features(extra_features());
     pipeline->set_source(source_);
     return pipeline;
 }
 
-void Engine::prepare(const EngineSpec& spec) {
+void Engine::prepare(const ProcessSpec& spec) {
     check_sample_rate(spec.sample_rate_hz);
     check_range("block size", spec.max_block, 1, kMaxBlock);
-    check_range("input channel count", spec.input_channels, 1, kMaxInputChannels);
-    check_range("input channel", spec.input_channel, -1, spec.input_channels - 1);
+    check_range("input channel count", spec.channels, 1, kMaxInputChannels);
+    check_range("input channel", input_channel_, -1, spec.channels - 1);
     spec_ = spec;
     for (Change c; changes_.try_dequeue(c);) delete c.pipeline;  // settings_ holds them
-    for (ControlFrame f; injected_.try_dequeue(f);) {}
+    for (ControlFrame f; injected_.try_dequeue(f);) {
+    }
     delete std::exchange(waiting_.pipeline, nullptr);
     delete std::exchange(incoming_, nullptr);
     free_retired();
     active_ = make_pipeline(settings_, 0);
     rate_divisor_ = active_->rate_divisor();
     trims_.resize(outputs_.size());
-    for (size_t k = 0; k < outputs_.size(); ++k) trims_[k].prepare(spec.sample_rate_hz, outputs_[k]);
+    for (size_t k = 0; k < outputs_.size(); ++k) trims_[k].prepare(spec, outputs_[k]);
     const auto block = static_cast<size_t>(spec.max_block);
-    mono_.assign(spec.input_channels > 1 ? block : 0, 0.0f);
+    mono_.assign(spec.channels > 1 ? block : 0, 0.0f);
     incoming_out_.assign(outputs_.size(), std::vector<float>(block));
     incoming_pointers_.resize(outputs_.size());
     mono_catch_up_.assign(block, 0.0f);
     for (size_t k = 0; k < outputs_.size(); ++k) incoming_pointers_[k] = incoming_out_[k].data();
-    fade_samples_ = std::max<int>(1, static_cast<int>(ms_to_samples(kCrossfadeMs, spec.sample_rate_hz)));
+    fade_samples_ =
+        std::max<int>(1, static_cast<int>(ms_to_samples(kCrossfadeMs, spec.sample_rate_hz)));
     ring_.prepare(ms_to_samples(2e3 * kPrimeSeconds, spec.sample_rate_hz));
     prepared_ = true;
     reset();
@@ -148,12 +148,13 @@ void Engine::set(P id, double value) {
             pressure_enabled(next) != pressure_enabled(settings_)) {
             swap_in(next);
         } else if (shapes_flattening(id)) {
-            Change change{.kind = Change::Kind::flattening, .index = static_cast<int>(id),
-                          .value = next[id]};
+            Change change{
+                .kind = Change::Kind::flattening, .index = static_cast<int>(id), .value = next[id]};
             change.design = flattening_design(spec_.sample_rate_hz / rate_divisor_, next);
             send(change);
         } else {
-            send({.kind = Change::Kind::parameter, .index = static_cast<int>(id),
+            send({.kind = Change::Kind::parameter,
+                  .index = static_cast<int>(id),
                   .value = next[id]});
         }
     }
@@ -174,8 +175,8 @@ void Engine::swap_in(const Settings& settings) {
         if (ring_.read(from, past.data(), static_cast<int>(past.size())) || attempt == 3) break;
     }
     pipeline = make_pipeline(settings, from);
-    std::vector<std::vector<float>> scratch(outputs_.size(),
-                                            std::vector<float>(static_cast<size_t>(spec_.max_block)));
+    std::vector<std::vector<float>> scratch(
+        outputs_.size(), std::vector<float>(static_cast<size_t>(spec_.max_block)));
     std::vector<float*> out(outputs_.size());
     for (size_t k = 0; k < out.size(); ++k) out[k] = scratch[k].data();
     {
@@ -197,8 +198,7 @@ void Engine::set_actuator_gain_db(int actuator, double gain_db) {
     ActuatorOutput output = outputs_[static_cast<size_t>(actuator)];
     output.gain_db = gain_db;
     output.check(actuator);
-    if (prepared_)
-        send({.kind = Change::Kind::actuator_gain, .index = actuator, .value = gain_db});
+    if (prepared_) send({.kind = Change::Kind::actuator_gain, .index = actuator, .value = gain_db});
     outputs_[static_cast<size_t>(actuator)] = output;
 }
 
@@ -230,8 +230,7 @@ void Engine::trigger(double frequency_hz, double amplitude) {
 void Engine::set_program_source(ProgramSource source) {
     const std::lock_guard lock(control_);
     source_ = source;
-    if (prepared_)
-        send({.kind = Change::Kind::program_source, .index = static_cast<int>(source)});
+    if (prepared_) send({.kind = Change::Kind::program_source, .index = static_cast<int>(source)});
 }
 
 bool Engine::pop_frame(AnalysisFrame& frame) {
@@ -297,9 +296,9 @@ void Engine::start_crossfade() noexcept {
 }
 
 const float* Engine::downmix(const float* const* in, int offset, int count) noexcept {
-    const int channels = spec_.input_channels;
+    const int channels = spec_.channels;
     if (channels == 1) return in[0] + offset;
-    if (spec_.input_channel >= 0) return in[spec_.input_channel] + offset;
+    if (input_channel_ >= 0) return in[input_channel_] + offset;
     downmix_mean(in, channels, offset, mono_.data(), count);
     return mono_.data();
 }

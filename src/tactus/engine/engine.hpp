@@ -49,14 +49,6 @@
 
 namespace tactus {
 
-// What prepare() sizes the engine for.
-struct EngineSpec {
-    double sample_rate_hz = 48000;
-    int max_block = 512;     // process() takes any count; it works in chunks of at most this
-    int input_channels = 1;  // 1 ... kMaxInputChannels
-    int input_channel = -1;  // the channel analysed; -1: the mean of all
-};
-
 // One analysis frame and the control frame mapped from it, as pop_frame() delivers them.
 struct AnalysisFrame {
     Features features;
@@ -71,9 +63,9 @@ class Engine {
     static constexpr int kMaxInputChannels = 1024;  // libsndfile's SF_MAX_CHANNELS
     static constexpr int kMaxActuators = 64;
     static constexpr double kMinInternalRateHz = Pipeline::kMinInternalRateHz;
-    static constexpr int kQueueCapacity = 1024;  // frames or injected frames in flight
-    static constexpr int kChangeCapacity = 256;  // changes in flight
-    static constexpr double kCrossfadeMs = 10;   // a structural change's handover
+    static constexpr int kQueueCapacity = 1024;   // frames or injected frames in flight
+    static constexpr int kChangeCapacity = 256;   // changes in flight
+    static constexpr double kCrossfadeMs = 10;    // a structural change's handover
     static constexpr double kPrimeSeconds = 2.5;  // input a new pipeline hears before it plays:
                                                   // onset.history_ms's longest plus windows
 
@@ -88,9 +80,13 @@ class Engine {
     void set_actuator(std::optional<ActuatorProfile> actuator);
     // N actuator outputs; throws std::invalid_argument for a bad trim or delay, or none.
     void set_actuators(std::vector<ActuatorOutput> outputs);
-    // Throws std::invalid_argument for a rate outside 8-192 kHz, a block outside 1-kMaxBlock or
-    // channels outside their ranges. Allocates.
-    void prepare(const EngineSpec& spec);
+    // The input channel analysed; -1 (the default): the mean of all.
+    void set_input_channel(int channel) { input_channel_ = channel; }
+    // spec.channels: input channels (1 ... kMaxInputChannels); process() takes any count and
+    // works in chunks of at most spec.max_block. Throws std::invalid_argument for a rate
+    // outside 8-192 kHz, a block outside 1-kMaxBlock, channels or the input channel outside
+    // their ranges. Allocates.
+    void prepare(const ProcessSpec& spec);
     void prepare(double sample_rate_hz, int max_block) {
         prepare({.sample_rate_hz = sample_rate_hz, .max_block = max_block});
     }
@@ -161,18 +157,18 @@ class Engine {
     std::unique_ptr<Pipeline> make_pipeline(const Settings& settings, int64_t origin) const;
     void swap_in(const Settings& settings);  // control thread
     void send(const Change& change);
-    void free_retired();                     // control thread
+    void free_retired();  // control thread
     FeatureSet extra_features() const;
     void take_changes() noexcept;
     void start_crossfade() noexcept;
-    void process_chunk(const float* const* in, float* const* out, int offset,
-                       int count) noexcept;
+    void process_chunk(const float* const* in, float* const* out, int offset, int count) noexcept;
     const float* downmix(const float* const* in, int offset, int count) noexcept;
     void retire(Pipeline* pipeline) noexcept;
 
     Settings settings_;  // control side
     std::vector<ActuatorOutput> outputs_;
-    EngineSpec spec_;
+    ProcessSpec spec_;
+    int input_channel_ = -1;
     int rate_divisor_ = 1;
     bool prepared_ = false;
     ProgramSource source_ = ProgramSource::analysis;  // control side
@@ -184,8 +180,8 @@ class Engine {
     Pipeline* incoming_ = nullptr;  // crossfading in
     Change waiting_;                // a pipeline to start once the crossfade is done
     int fade_done_ = 0, fade_samples_ = 1;
-    std::vector<OutputTrim> trims_;  // per actuator
-    std::vector<float> mono_;        // downmixed input, one chunk
+    std::vector<OutputTrim> trims_;     // per actuator
+    std::vector<float> mono_;           // downmixed input, one chunk
     std::vector<float> mono_catch_up_;  // input a waiting pipeline has not heard, one chunk
     std::vector<std::vector<float>> incoming_out_;  // the incoming pipeline's output, one chunk
     std::vector<float*> incoming_pointers_;

@@ -18,8 +18,10 @@ void ActuatorOutput::check(int index) const {
                                                 index, delay_ms, kMaxDelayMs));
 }
 
-void OutputTrim::prepare(double sample_rate_hz, const ActuatorOutput& output) {
-    glide_samples_ = std::max<int>(1, static_cast<int>(ms_to_samples(kGainGlideMs, sample_rate_hz)));
+void OutputTrim::prepare(const ProcessSpec& spec, const ActuatorOutput& output) {
+    const double sample_rate_hz = spec.sample_rate_hz;
+    glide_samples_ =
+        std::max<int>(1, static_cast<int>(ms_to_samples(kGainGlideMs, sample_rate_hz)));
     gain_target_ = db_to_gain(output.gain_db);
     delay_.assign(static_cast<size_t>(ms_to_samples(output.delay_ms, sample_rate_hz)), 0.0f);
     reset();

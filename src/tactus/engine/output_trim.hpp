@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tactus/actuator/profile.hpp"
+#include "tactus/dsp/process_spec.hpp"
 
 namespace tactus {
 
@@ -27,16 +28,16 @@ class OutputTrim {
   public:
     static constexpr double kGainGlideMs = 20;
 
-    void prepare(double sample_rate_hz, const ActuatorOutput& output);  // may allocate
+    void prepare(const ProcessSpec& spec, const ActuatorOutput& output);  // may allocate
     void reset() noexcept;
     void set_gain_db(double gain_db) noexcept;  // audio thread
     void process(float* samples, int count) noexcept;
-    int delay_samples() const { return static_cast<int>(delay_.size()); }
+    int latency() const { return static_cast<int>(delay_.size()); }  // the delay
 
   private:
     double gain_ = 1, gain_target_ = 1, gain_step_ = 0;
     int gain_left_ = 0, glide_samples_ = 1;
-    std::vector<float> delay_;  // ring of delay_samples()
+    std::vector<float> delay_;  // ring of latency() samples
     size_t slot_ = 0;
 };
 

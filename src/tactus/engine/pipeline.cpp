@@ -25,17 +25,14 @@ FeatureSet mapped_features(const Settings& s) {
 
 }  // namespace
 
-void Pipeline::prepare(const PipelineSpec& spec, const Settings& settings,
-                       const std::vector<ActuatorOutput>& outputs) {
+void Pipeline::prepare(const ProcessSpec& spec, const Settings& settings,
+                       const std::vector<ActuatorOutput>& outputs, int64_t origin_sample) {
     const double rate = spec.sample_rate_hz;
     sample_rate_hz_ = rate;
     rate_divisor_ =
         std::clamp(static_cast<int>(rate / kMinInternalRateHz), 1, Upsampler::kMaxFactor);
-    const ChainSpec chain{.internal_rate_hz = rate / rate_divisor_,
-                          .rate_divisor = rate_divisor_,
-                          .max_internal_block =
-                              static_cast<int>(ceil_div(spec.max_block, rate_divisor_)) + 1,
-                          .max_block = spec.max_block};
+    const int max_internal_block = ActuatorChain::max_internal_block(spec, rate_divisor_);
+    const auto internal = static_cast<size_t>(max_internal_block);
     // Actuators with the same profile share a chain.
     chains_.clear();
     chain_of_.clear();
@@ -44,7 +41,7 @@ void Pipeline::prepare(const PipelineSpec& spec, const Settings& settings,
         size_t j = 0;
         while (j < k && outputs[j].profile != outputs[k].profile) ++j;
         if (j == k) {
-            chains_.emplace_back().prepare(chain, settings,
+            chains_.emplace_back().prepare(spec, rate_divisor_, settings,
                                            outputs[k].profile ? &*outputs[k].profile : nullptr);
             first_of_chain_.push_back(static_cast<int>(k));
             chain_of_.push_back(static_cast<int>(chains_.size()) - 1);
@@ -53,18 +50,19 @@ void Pipeline::prepare(const PipelineSpec& spec, const Settings& settings,
         }
     }
     for (auto& c : chains_) c.set_pressure_reference(chains_.front().post().ceiling());
-    const auto internal = static_cast<size_t>(chain.max_internal_block);
     carrier_.assign(internal, 0.0f);
     flutter_.assign(flutter_enabled(settings) ? internal : 0, 0.0f);
     pressure_.assign(pressure_enabled(settings) ? internal : 0, 0.0f);
-    analyzer_.prepare(rate, settings);
+    analyzer_.prepare(spec, settings);
     const double frames_per_second = rate / analyzer_.hop_samples();
-    mapper_.prepare(settings, frames_per_second, chains_.front().post().ceiling());
-    voice_.prepare(chain.internal_rate_hz, settings[P::post_band_high_hz]);
+    mapper_.prepare(settings, {.frames_per_second = frames_per_second,
+                               .output_ceiling = chains_.front().post().ceiling()});
+    voice_.prepare({.sample_rate_hz = rate / rate_divisor_, .max_block = max_internal_block},
+                   settings[P::post_band_high_hz]);
     live_.prepare(settings, frames_per_second);
     update_features();
     reset();
-    origin_ = position_ = spec.origin_sample;
+    origin_ = position_ = origin_sample;
 }
 
 void Pipeline::reset() noexcept {
@@ -106,9 +104,7 @@ void Pipeline::apply_live() noexcept {
 }
 
 int Pipeline::latency() const {
-    const ActuatorChain& chain = chains_.front();
-    return chain.post().latency_samples() * rate_divisor_ +
-           static_cast<int>(std::lround(chain.upsampler().delay_samples()));
+    return chains_.front().latency();
 }
 
 const PostChain& Pipeline::post(int actuator) const {
@@ -130,12 +126,12 @@ void Pipeline::process(const float* mono, float* const* out, int count,
     int done = 0, rendered = 0;
     while (done < count) {
         const int chunk = std::min(count - done, analyzer_.samples_to_next_frame());
-        const bool frame_due = analyzer_.write(mono + done, chunk);
+        const bool frame_due = analyzer_.process(mono + done, chunk);
         // Internal sample k stands at input sample k * divisor (from the origin).
         const int64_t at = position_ - origin_;
         const auto due = static_cast<int>(ceil_div(at + chunk, divisor) - ceil_div(at, divisor));
-        voice_.render(carrier_.data() + rendered, flutter ? flutter + rendered : nullptr,
-                      pressure ? pressure + rendered : nullptr, due);
+        voice_.process(carrier_.data() + rendered, flutter ? flutter + rendered : nullptr,
+                       pressure ? pressure + rendered : nullptr, due);
         rendered += due;
         position_ += chunk;
         if (frame_due) {

@@ -32,20 +32,15 @@ class FrameObserver {
     virtual FeatureSet reads() const noexcept { return {}; }
 };
 
-// The rates and sizes a pipeline is prepared for.
-struct PipelineSpec {
-    double sample_rate_hz = 48000;
-    int max_block = 512;             // mono samples one process() call takes at most
-    int64_t origin_sample = 0;       // the input sample its first sample is (frame positions)
-};
-
 class Pipeline {
   public:
     static constexpr double kMinInternalRateHz = 11025;
 
-    // Allocates. `outputs`: one per actuator (profiles; trims are the engine's).
-    void prepare(const PipelineSpec& spec, const Settings& settings,
-                 const std::vector<ActuatorOutput>& outputs);
+    // Allocates. spec.max_block: mono samples one process() call takes at most. `outputs`:
+    // one per actuator (profiles; trims are the engine's). `origin_sample`: the input sample
+    // its first sample is (frame positions).
+    void prepare(const ProcessSpec& spec, const Settings& settings,
+                 const std::vector<ActuatorOutput>& outputs, int64_t origin_sample = 0);
     void reset() noexcept;  // also to origin 0
 
     void ask(P id, double value) noexcept { live_.ask(id, value); }
@@ -57,8 +52,7 @@ class Pipeline {
 
     // mono: count <= max_block samples; out: one buffer per actuator. Frames go to `observer`
     // when not null.
-    void process(const float* mono, float* const* out, int count,
-                 FrameObserver* observer) noexcept;
+    void process(const float* mono, float* const* out, int count, FrameObserver* observer) noexcept;
 
     int rate_divisor() const { return rate_divisor_; }
     double internal_rate_hz() const { return sample_rate_hz_ / rate_divisor_; }
@@ -79,9 +73,9 @@ class Pipeline {
     Analyzer analyzer_;
     Mapper mapper_;
     Voice voice_;
-    std::vector<ActuatorChain> chains_;  // one per distinct profile
-    std::vector<int> chain_of_;          // per actuator: its chain
-    std::vector<int> first_of_chain_;    // per chain: the first actuator it feeds
+    std::vector<ActuatorChain> chains_;                // one per distinct profile
+    std::vector<int> chain_of_;                        // per actuator: its chain
+    std::vector<int> first_of_chain_;                  // per chain: the first actuator it feeds
     std::vector<float> carrier_, flutter_, pressure_;  // synthesis, internal rate, one block
     ProgramSource source_ = ProgramSource::analysis;
     FeatureSet extra_features_ = FeatureSet::none();

@@ -5,8 +5,8 @@
 #include <complex>
 #include <stdexcept>
 
-#include "tactus/dsp/real_fft.hpp"
 #include "tactus/core/units.hpp"
+#include "tactus/dsp/real_fft.hpp"
 
 namespace tactus {
 namespace {
@@ -69,7 +69,7 @@ std::vector<double> minimum_phase(const std::vector<double>& h) {
 
 }  // namespace
 
-void Upsampler::prepare(int factor, int max_internal_block) {
+void Upsampler::prepare(const ProcessSpec& spec, int factor) {
     if (factor < 1 || factor > kMaxFactor)
         throw std::invalid_argument("upsampling factor must be 1-16");
     factor_ = factor;
@@ -89,6 +89,7 @@ void Upsampler::prepare(int factor, int max_internal_block) {
         for (int i = 0; i < kTapsPerPhase; ++i)
             for (int r = 0; r < factor; ++r) taps_[i][r] = static_cast<float>(h[i * factor + r]);
     }
+    const int max_internal_block = (spec.max_block + factor - 1) / factor + 1;
     line_.assign(static_cast<size_t>(kTapsPerPhase + max_internal_block), 0.0f);
     reset();
 }

@@ -12,6 +12,8 @@
 #include <array>
 #include <vector>
 
+#include "tactus/dsp/process_spec.hpp"
+
 namespace tactus {
 
 class Upsampler {
@@ -19,7 +21,9 @@ class Upsampler {
     static constexpr int kMaxFactor = 16;
     static constexpr int kTapsPerPhase = 8;
 
-    void prepare(int factor, int max_internal_block);  // may allocate (design)
+    // spec: the output side (rate, largest output block); `factor` output samples per
+    // internal sample. May allocate (design).
+    void prepare(const ProcessSpec& spec, int factor);
     void reset() noexcept;
     // Consumes `internal_count` internal samples and writes `count` output samples: exactly
     // those whose time m satisfies floor(m / F) < samples consumed so far.
@@ -28,6 +32,7 @@ class Upsampler {
     int factor() const { return factor_; }
     // Group delay at low frequencies, in output samples.
     double delay_samples() const { return delay_samples_; }
+    int latency() const { return static_cast<int>(delay_samples_ + 0.5); }
 
   private:
     int factor_ = 1, phase_ = 0;

@@ -16,12 +16,14 @@ constexpr int kBlock = kStreamBlockFrames;
 }  // namespace
 
 RunSummary stream_file(const std::filesystem::path& input,
-                       const std::function<void(double sample_rate_hz, int channels)>& prepare,
+                       const std::function<void(const ProcessSpec& spec)>& prepare,
                        const std::function<void(const float* const* channels, int frames)>& process,
                        const RunCallbacks& callbacks) {
     AudioReader reader(input);
     try {
-        prepare(reader.sample_rate_hz(), reader.channels());
+        prepare({.sample_rate_hz = reader.sample_rate_hz(),
+                 .max_block = kStreamBlockFrames,
+                 .channels = reader.channels()});
     } catch (const std::invalid_argument& e) {
         throw std::runtime_error(fmt::format("{}: {}", input.string(), e.what()));
     }
@@ -51,10 +53,8 @@ RunSummary run_file(const std::filesystem::path& input, Engine& engine,
     std::optional<ChannelBlock> out;
     return stream_file(
         input,
-        [&](double sample_rate_hz, int channels) {
-            engine.prepare({.sample_rate_hz = sample_rate_hz,
-                            .max_block = kBlock,
-                            .input_channels = channels});
+        [&](const ProcessSpec& spec) {
+            engine.prepare(spec);
             out.emplace(engine.actuators(), kBlock);
         },
         [&](const float* const* in, int frames) {
@@ -72,11 +72,11 @@ RunSummary analyse_file(const std::filesystem::path& input, Analyzer& analyzer,
     int input_channels = 1;
     return stream_file(
         input,
-        [&](double sample_rate_hz, int channels) {
-            Engine::check_sample_rate(sample_rate_hz);
-            analyzer.prepare(sample_rate_hz, settings);
+        [&](const ProcessSpec& spec) {
+            Engine::check_sample_rate(spec.sample_rate_hz);
+            analyzer.prepare(spec, settings);
             analyzer.set_features(features);
-            input_channels = channels;
+            input_channels = spec.channels;
         },
         [&](const float* const* channels, int frames) {
             const ScopedFlushDenormals no_denormals;  // as in Engine::process
@@ -87,7 +87,7 @@ RunSummary analyse_file(const std::filesystem::path& input, Analyzer& analyzer,
             }
             for (int done = 0; done < frames;) {
                 const int chunk = std::min(frames - done, analyzer.samples_to_next_frame());
-                if (analyzer.write(in + done, chunk)) on_frame(analyzer.analyse());
+                if (analyzer.process(in + done, chunk)) on_frame(analyzer.analyse());
                 done += chunk;
             }
         },

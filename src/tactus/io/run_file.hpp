@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 
+#include "tactus/dsp/process_spec.hpp"
 #include "tactus/engine/engine.hpp"
 
 namespace tactus {
@@ -30,14 +31,14 @@ struct RunSummary {
     int64_t frames = 0;
 };
 
-// Opens `input`, calls prepare(its sample rate, its channel count) (an std::invalid_argument
-// becomes a std::runtime_error naming the file), then process(channels, frames) for every block
-// to the end; a file without frames is an error. The driver under run_file and analyse_file.
-RunSummary stream_file(
-    const std::filesystem::path& input,
-    const std::function<void(double sample_rate_hz, int channels)>& prepare,
-    const std::function<void(const float* const* channels, int frames)>& process,
-    const RunCallbacks& callbacks = {});
+// Opens `input`, calls prepare(its sample rate and channel count, blocks of
+// kStreamBlockFrames) (an std::invalid_argument becomes a std::runtime_error naming the file),
+// then process(channels, frames) for every block to the end; a file without frames is an
+// error. The driver under run_file and analyse_file.
+RunSummary stream_file(const std::filesystem::path& input,
+                       const std::function<void(const ProcessSpec& spec)>& prepare,
+                       const std::function<void(const float* const* channels, int frames)>& process,
+                       const RunCallbacks& callbacks = {});
 
 // Opens `input`, prepares `engine` at the file's sample rate and channel count (the engine
 // downmixes), runs it to the end.

@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "tactus/core/units.hpp"
-#include "tactus/perception/channels.hpp"
 #include "tactus/params/components.hpp"
+#include "tactus/perception/channels.hpp"
 
 namespace tactus {
 namespace {
@@ -16,9 +16,9 @@ constexpr double kFlutterEqualizeGain = perception::info(Channel::P).innervation
 constexpr double kStepHysteresis = 0.1;  // of one step
 }  // namespace
 
-void Mapper::prepare(const Settings& s, double frames_per_second, double output_ceiling) {
-    frames_per_second_ = frames_per_second;
-    set_live(s, output_ceiling);
+void Mapper::prepare(const Settings& s, const MappingSpec& spec) {
+    frames_per_second_ = spec.frames_per_second;
+    set_live(s, spec.output_ceiling);
     reset();
 }
 
@@ -35,9 +35,8 @@ void Mapper::set_live(const Settings& s, double output_ceiling) noexcept {
     envelope_.decay_ms = s[P::envelope_decay_ms];
     envelope_.sustain = s[P::envelope_sustain];
     // flutter.equalize glides from off (0) to on (1) when turned live: the gain in between.
-    flutter_gain_ = flutter_enabled(s) ? s[P::flutter_weight] *
-                                             std::lerp(1.0, kFlutterEqualizeGain,
-                                                       s[P::flutter_equalize])
+    flutter_gain_ = flutter_enabled(s) ? s[P::flutter_weight] * std::lerp(1.0, kFlutterEqualizeGain,
+                                                                          s[P::flutter_equalize])
                                        : 0.0;
     // Pressure weight is a fraction of the output ceiling (the post chain keeps that headroom).
     pressure_weight_ = pressure_enabled(s) ? s[P::pressure_weight] * output_ceiling : 0.0;

@@ -20,14 +20,21 @@
 
 namespace tactus {
 
+// What a mapper is prepared for, by name.
+struct MappingSpec {
+    double frames_per_second = 100;  // analysis frames: the mapping runs once per frame
+    // Full scale: the post chain's ceiling (PostChain::ceiling(), lowered by an actuator's max
+    // drive), which the pressure weight is a fraction of.
+    double output_ceiling = 1;
+};
+
 class Mapper {
   public:
-    // output_ceiling: the post chain's (PostChain::ceiling(), lowered by an actuator's max
-    // drive), which the pressure weight is a fraction of.
-    void prepare(const Settings& settings, double frames_per_second, double output_ceiling);
+    void prepare(const Settings& settings, const MappingSpec& spec);
     // Without an actuator: the ceiling is post.ceiling_db.
     void prepare(const Settings& settings, double frames_per_second) {
-        prepare(settings, frames_per_second, db_to_gain(settings[P::post_ceiling_db]));
+        prepare(settings, {.frames_per_second = frames_per_second,
+                           .output_ceiling = db_to_gain(settings[P::post_ceiling_db])});
     }
     void reset() noexcept;
     // Live (audio thread): every mapping setting; smoothed values and pressure steps go on.

@@ -7,9 +7,11 @@
 
 namespace tactus {
 
-void BandLimit::prepare(double sample_rate_hz, double low_hz, double high_hz, int order) {
+void BandLimit::prepare(const ProcessSpec& spec, const BandEdges& band) {
+    const int order = band.order;
     if (order < 2 || order > kMaxOrder || order % 2 != 0)
         throw std::invalid_argument("band-limit order must be 2, 4, 6 or 8");
+    const double sample_rate_hz = spec.sample_rate_hz, low_hz = band.low_hz, high_hz = band.high_hz;
     sample_rate_hz_ = sample_rate_hz;
     const int per_side = order / 2;
     count_ = 0;

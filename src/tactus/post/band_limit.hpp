@@ -5,14 +5,23 @@
 #include <array>
 
 #include "tactus/dsp/biquad.hpp"
+#include "tactus/dsp/process_spec.hpp"
 
 namespace tactus {
+
+// The band passed: Butterworth slopes of `order` (2, 4, 6 or 8) at each edge.
+struct BandEdges {
+    double low_hz = 20;
+    double high_hz = 1000;
+    int order = 8;
+};
 
 class BandLimit {
   public:
     static constexpr int kMaxOrder = 8;
 
-    void prepare(double sample_rate_hz, double low_hz, double high_hz, int order);
+    void prepare(const ProcessSpec& spec, const BandEdges& band);
+    int latency() const { return 0; }
     void reset() noexcept;
     void process(float* samples, int count) noexcept;
     double magnitude_db(double frequency_hz) const;

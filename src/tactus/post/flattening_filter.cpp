@@ -21,8 +21,10 @@ double FlatteningFilter::target_db(double frequency_hz) const {
     return -std::min(design_.strength * spread, design_.range_db);
 }
 
-FlatteningFilter::Design FlatteningFilter::design(double sample_rate_hz, double low_hz,
-                                                  double high_hz, const FlatteningDesign& inputs) {
+FlatteningFilter::Design FlatteningFilter::design(double sample_rate_hz,
+                                                  const FlatteningDesign& inputs) {
+    const double low_hz = inputs.low_hz;
+    double high_hz = inputs.high_hz;
     FlatteningFilter filter;
     filter.design_ = inputs;
     // The contour's largest value in the band: on the fitting grid and, for a maximum between
@@ -30,21 +32,20 @@ FlatteningFilter::Design FlatteningFilter::design(double sample_rate_hz, double 
     high_hz = FittedEq::highest_fitted_hz(high_hz, sample_rate_hz);
     double& reference_db = filter.reference_db_;
     reference_db = -1e9;
-    for (double f : FittedEq::grid(low_hz, high_hz))
+    for (double f : FittedEq::grid({.low_hz = low_hz, .high_hz = high_hz}))
         reference_db = std::max(reference_db, filter.contour_db(f));
     for (double f = low_hz; f < high_hz; f *= kScanRatio)
         reference_db = std::max(reference_db, filter.contour_db(f));
     return {inputs, reference_db,
-            FittedEq::fit(sample_rate_hz, low_hz, high_hz,
+            FittedEq::fit(sample_rate_hz, {.low_hz = low_hz, .high_hz = high_hz},
                           [&filter](double f) { return filter.target_db(f); })};
 }
 
-void FlatteningFilter::prepare(double sample_rate_hz, double low_hz, double high_hz,
-                               const FlatteningDesign& inputs) {
-    const Design d = design(sample_rate_hz, low_hz, high_hz, inputs);
+void FlatteningFilter::prepare(const ProcessSpec& spec, const FlatteningDesign& inputs) {
+    const Design d = design(spec.sample_rate_hz, inputs);
     design_ = d.inputs;
     reference_db_ = d.reference_db;
-    eq_.prepare(sample_rate_hz, d.eq);
+    eq_.prepare(spec, d.eq);
 }
 
 }  // namespace tactus

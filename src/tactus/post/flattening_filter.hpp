@@ -9,12 +9,15 @@
 // level spread is bounded by range_db. Realised by FittedEq (peaking biquads fitted in dB).
 #pragma once
 
-#include "tactus/perception/threshold.hpp"
 #include "tactus/dsp/fitted_eq.hpp"
+#include "tactus/dsp/process_spec.hpp"
+#include "tactus/perception/threshold.hpp"
 
 namespace tactus {
 
 struct FlatteningDesign {
+    double low_hz = 20;  // the band designed for (the post chain's)
+    double high_hz = 1000;
     double strength = 1.0;   // fraction of the contour compensated
     double range_db = 30.0;  // largest attenuation
     double contact_area_cm2 = perception::kReferenceAreaCm2;
@@ -30,17 +33,10 @@ class FlatteningFilter {
         FittedEq::Design eq;
     };
     // Allocates (the fit).
-    static Design design(double sample_rate_hz, double low_hz, double high_hz,
-                         const FlatteningDesign& inputs);
-
-    void prepare(double sample_rate_hz, double low_hz, double high_hz,
-                 const FlatteningDesign& design);  // may allocate (design)
-    // The threshold curve at the reference contact.
-    void prepare(double sample_rate_hz, double low_hz, double high_hz, double strength,
-                 double range_db) {
-        prepare(sample_rate_hz, low_hz, high_hz, {.strength = strength, .range_db = range_db});
-    }
+    static Design design(double sample_rate_hz, const FlatteningDesign& inputs);
+    void prepare(const ProcessSpec& spec, const FlatteningDesign& inputs);  // may allocate
     void reset() noexcept { eq_.reset(); }
+    int latency() const { return 0; }  // minimum phase
     // Audio thread: glides to a design() made for the same rate and band over `samples`.
     void glide_to(const Design& design, int samples) noexcept {
         design_ = design.inputs;

@@ -14,7 +14,9 @@ PeakLimiter::Gains PeakLimiter::gains_of(const LimiterLevels& l) noexcept {
             .ceiling = float_at_most(l.ceiling)};  // output samples are floats
 }
 
-void PeakLimiter::prepare(double sample_rate_hz, double lookahead_ms, const LimiterLevels& levels) {
+void PeakLimiter::prepare(const ProcessSpec& spec, double lookahead_ms,
+                          const LimiterLevels& levels) {
+    const double sample_rate_hz = spec.sample_rate_hz;
     sample_rate_hz_ = sample_rate_hz;
     lookahead_ = std::max<int>(1, static_cast<int>(ms_to_samples(lookahead_ms, sample_rate_hz)));
     set_levels(levels, 0);

@@ -15,26 +15,28 @@
 #include <cstdint>
 #include <vector>
 
+#include "tactus/dsp/process_spec.hpp"
+
 namespace tactus {
 
 // The limiter's levels, by name: no two of them can be swapped at a call.
 struct LimiterLevels {
-    double drive_db = 12;       // gain into the limiter
-    double threshold_db = -6;   // soft knee start, relative to the ceiling
-    double ceiling = 1;         // hard output bound, full scale
-    double release_ms = 80;     // gain recovery time constant
+    double drive_db = 12;      // gain into the limiter
+    double threshold_db = -6;  // soft knee start, relative to the ceiling
+    double ceiling = 1;        // hard output bound, full scale
+    double release_ms = 80;    // gain recovery time constant
 };
 
 class PeakLimiter {
   public:
-    void prepare(double sample_rate_hz, double lookahead_ms,
+    void prepare(const ProcessSpec& spec, double lookahead_ms,
                  const LimiterLevels& levels);  // may allocate
     // Audio thread: drive, threshold and ceiling glide to `levels` over `samples` samples (at
     // once when 0); the release applies at once.
     void set_levels(const LimiterLevels& levels, int samples) noexcept;
     void reset() noexcept;
     void process(float* samples, int count) noexcept;
-    int latency_samples() const { return lookahead_; }
+    int latency() const { return lookahead_; }
     // The output level the static curve gives a sample of magnitude `peak` (after drive).
     double curve(double peak) const noexcept;
 
@@ -46,7 +48,7 @@ class PeakLimiter {
     int lookahead_ = 1;
     double sample_rate_hz_ = 48000, release_ = 0;
     double drive_ = 1, threshold_ = 0.5, ceiling_ = 1;  // now
-    Gains target_, step_;                                // a glide: per-sample steps
+    Gains target_, step_;                               // a glide: per-sample steps
     int glide_left_ = 0;
     std::vector<double> delay_;      // look-ahead delay line (double: no overflow)
     std::vector<double> held_gain_;  // ring for the box average

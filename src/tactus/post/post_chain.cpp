@@ -18,7 +18,9 @@ constexpr double kFlutterPeakQ = 2.0;
 constexpr float kSilentOutput = 1e-9f;
 
 FlatteningDesign flattening_inputs(const Settings& s) {
-    return {.strength = s[P::post_flatten_strength],
+    return {.low_hz = s[P::post_band_low_hz],
+            .high_hz = s[P::post_band_high_hz],
+            .strength = s[P::post_flatten_strength],
             .range_db = s[P::post_flatten_range_db],
             .contact_area_cm2 = s[P::perception_contact_area_cm2],
             .level_db = s[P::post_flatten_level_db]};
@@ -26,26 +28,28 @@ FlatteningDesign flattening_inputs(const Settings& s) {
 
 }  // namespace
 
-void PostChain::prepare(double sample_rate_hz, const Settings& s, const ActuatorProfile* actuator) {
+void PostChain::prepare(const ProcessSpec& spec, const Settings& s,
+                        const ActuatorProfile* actuator) {
+    const double sample_rate_hz = spec.sample_rate_hz;
     const double low_hz = s[P::post_band_low_hz], high_hz = s[P::post_band_high_hz];
     sample_rate_hz_ = sample_rate_hz;
     flutter_on_ = flutter_enabled(s);
     pressure_on_ = pressure_enabled(s);
-    first_band_.prepare(sample_rate_hz, low_hz, high_hz, kFirstBandOrder);
-    flatten_.prepare(sample_rate_hz, low_hz, high_hz, flattening_inputs(s));
+    first_band_.prepare(spec, {.low_hz = low_hz, .high_hz = high_hz, .order = kFirstBandOrder});
+    flatten_.prepare(spec, flattening_inputs(s));
     compensate_ = actuator != nullptr;
-    if (actuator) compensation_.prepare(sample_rate_hz, *actuator);
+    if (actuator) compensation_.prepare(spec, *actuator);
     max_drive_ = actuator ? actuator->max_drive : 1.0;
-    limiter_.prepare(sample_rate_hz, s[P::post_lookahead_ms], {});
+    limiter_.prepare(spec, s[P::post_lookahead_ms], {});
     set_live(s, 0);
-    last_band_.prepare(sample_rate_hz, flutter_on_ ? s[P::post_flutter_low_hz] : low_hz, high_hz,
-                       kLastBandOrder);
+    last_band_.prepare(spec, {.low_hz = flutter_on_ ? s[P::post_flutter_low_hz] : low_hz,
+                              .high_hz = high_hz,
+                              .order = kLastBandOrder});
     reset();
 }
 
 FlatteningFilter::Design flattening_design(double sample_rate_hz, const Settings& s) {
-    return FlatteningFilter::design(sample_rate_hz, s[P::post_band_low_hz],
-                                    s[P::post_band_high_hz], flattening_inputs(s));
+    return FlatteningFilter::design(sample_rate_hz, flattening_inputs(s));
 }
 
 void PostChain::set_live(const Settings& s, int glide_samples) noexcept {

@@ -42,7 +42,7 @@ class PostChain {
     static constexpr double kRingingMarginDb = 1.0;
 
     // May allocate. `actuator` may be null (no compensation).
-    void prepare(double sample_rate_hz, const Settings& settings,
+    void prepare(const ProcessSpec& spec, const Settings& settings,
                  const ActuatorProfile* actuator = nullptr);
     void reset() noexcept;
     // Live (audio thread), each over `glide_samples`: drive, limiter threshold, ceiling (and the
@@ -61,7 +61,7 @@ class PostChain {
     // carrier: in place, becomes the output. flutter (filtered in place) and pressure may be
     // null; each is used only when its component is on (params/components.hpp).
     void process(float* carrier, float* flutter, const float* pressure, int count) noexcept;
-    int latency_samples() const { return limiter_.latency_samples(); }
+    int latency() const { return limiter_.latency(); }
     int64_t clipped_samples() const { return clipped_; }
     double ceiling() const { return ceiling_; }
     const FlatteningFilter& flattening() const { return flatten_; }
@@ -75,7 +75,7 @@ class PostChain {
     Biquad flutter_peak_;
     bool flutter_on_ = false, flutter_peak_on_ = false, pressure_on_ = false;
     double sample_rate_hz_ = 48000;
-    double max_drive_ = 1.0;  // the actuator's, 1 without one
+    double max_drive_ = 1.0;                     // the actuator's, 1 without one
     double ceiling_ = 1.0, clip_ceiling_ = 1.0;  // clip_ceiling_: the higher during a glide
     int64_t clipped_ = 0;
 };

@@ -5,12 +5,14 @@
 // silence stays exact.
 #pragma once
 
+#include "tactus/dsp/process_spec.hpp"
+
 namespace tactus {
 
 class Envelope {
   public:
-    void prepare(double sample_rate_hz) {
-        sample_rate_hz_ = sample_rate_hz;
+    void prepare(const ProcessSpec& spec) {
+        sample_rate_hz_ = spec.sample_rate_hz;
         reset();
     }
     void reset() noexcept {

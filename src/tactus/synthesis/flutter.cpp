@@ -7,9 +7,9 @@ namespace {
 constexpr double kNpiHighHz = perception::info(perception::Channel::NPI).range_high_hz;
 }  // namespace
 
-void Flutter::prepare(double sample_rate_hz) {
-    oscillator_.prepare(sample_rate_hz, kNpiHighHz);
-    glide_.prepare(corner_time_constant_ms(kNpiHighHz), sample_rate_hz);
+void Flutter::prepare(const ProcessSpec& spec) {
+    oscillator_.prepare(spec, kNpiHighHz);
+    glide_.prepare(spec, corner_time_constant_ms(kNpiHighHz));
     reset();
 }
 
@@ -30,7 +30,7 @@ void Flutter::apply(const ControlFrame& frame) noexcept {
     target_square_mix_ = frame.square_mix;
 }
 
-void Flutter::render(float* out, int count) noexcept {
+void Flutter::process(float* out, int count) noexcept {
     double amplitude = amplitude_, rate = rate_hz_, mix = square_mix_;
     const Glide glide = glide_;
     for (int i = 0; i < count; ++i) {

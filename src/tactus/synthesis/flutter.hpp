@@ -6,6 +6,7 @@
 // level steps do not click. A rise from silence starts at phase 0; silence is exact zeros.
 #pragma once
 
+#include "tactus/dsp/process_spec.hpp"
 #include "tactus/mapping/control_frame.hpp"
 #include "tactus/synthesis/glide.hpp"
 #include "tactus/synthesis/oscillator.hpp"
@@ -14,10 +15,11 @@ namespace tactus {
 
 class Flutter {
   public:
-    void prepare(double sample_rate_hz);
+    void prepare(const ProcessSpec& spec);
     void reset() noexcept;
     void apply(const ControlFrame& frame) noexcept;
-    void render(float* out, int count) noexcept;
+    void process(float* out, int count) noexcept;
+    int latency() const { return 0; }
 
   private:
     Oscillator oscillator_;

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "tactus/core/units.hpp"
+#include "tactus/dsp/process_spec.hpp"
 
 namespace tactus {
 
@@ -19,8 +20,8 @@ constexpr double corner_time_constant_ms(double corner_hz) {
 
 class Glide {
   public:
-    void prepare(double time_constant_ms, double sample_rate_hz) {
-        coefficient_ = one_pole_coefficient(time_constant_ms, sample_rate_hz);
+    void prepare(const ProcessSpec& spec, double time_constant_ms) {
+        coefficient_ = one_pole_coefficient(time_constant_ms, spec.sample_rate_hz);
         mean_fraction_ = coefficient_ > 0.0 ? (1.0 - coefficient_) / -std::log(coefficient_) : 0.0;
     }
     // `value` one sample on towards `target`.

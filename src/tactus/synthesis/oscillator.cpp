@@ -39,7 +39,8 @@ double sin_of_cycles(double phase) noexcept {
 }
 }  // namespace
 
-void Oscillator::prepare(double sample_rate_hz, double harmonic_limit_hz) {
+void Oscillator::prepare(const ProcessSpec& spec, double harmonic_limit_hz) {
+    const double sample_rate_hz = spec.sample_rate_hz;
     sample_rate_hz_ = sample_rate_hz;
     harmonic_limit_hz_ = std::min(harmonic_limit_hz, 0.45 * sample_rate_hz);
     reset();

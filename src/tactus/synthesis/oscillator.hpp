@@ -5,11 +5,13 @@
 // sin((k+2)x) = 2 cos(2x) sin(kx) - sin((k-2)x): one multiply-add per harmonic.
 #pragma once
 
+#include "tactus/dsp/process_spec.hpp"
+
 namespace tactus {
 
 class Oscillator {
   public:
-    void prepare(double sample_rate_hz, double harmonic_limit_hz);
+    void prepare(const ProcessSpec& spec, double harmonic_limit_hz);
     void reset() noexcept { phase_ = 0.0; }  // restarts the phase: the next sample is sin(0)
     // One sample at frequency_hz, mix 0 (sine) ... 1 (square).
     double next(double frequency_hz, double square_mix) noexcept;

@@ -7,12 +7,12 @@ namespace {
 constexpr double kNpiiiHighHz = perception::info(perception::Channel::NPIII).range_high_hz;
 }  // namespace
 
-void Pressure::prepare(double sample_rate_hz) {
-    glide_.prepare(corner_time_constant_ms(kNpiiiHighHz), sample_rate_hz);
+void Pressure::prepare(const ProcessSpec& spec) {
+    glide_.prepare(spec, corner_time_constant_ms(kNpiiiHighHz));
     reset();
 }
 
-void Pressure::render(float* out, int count) noexcept {
+void Pressure::process(float* out, int count) noexcept {
     double level = level_;
     const Glide glide = glide_;
     for (int i = 0; i < count; ++i) {

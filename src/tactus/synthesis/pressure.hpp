@@ -6,6 +6,7 @@
 // offset (actuator.dc); the mapping stage sends 0 otherwise. Silence is exact zeros.
 #pragma once
 
+#include "tactus/dsp/process_spec.hpp"
 #include "tactus/mapping/control_frame.hpp"
 #include "tactus/synthesis/glide.hpp"
 
@@ -13,10 +14,11 @@ namespace tactus {
 
 class Pressure {
   public:
-    void prepare(double sample_rate_hz);
+    void prepare(const ProcessSpec& spec);
     void reset() noexcept { level_ = target_ = 0.0; }
     void apply(const ControlFrame& frame) noexcept { target_ = frame.pressure; }
-    void render(float* out, int count) noexcept;
+    void process(float* out, int count) noexcept;
+    int latency() const { return 0; }
 
   private:
     Glide glide_;

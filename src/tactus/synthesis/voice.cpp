@@ -6,12 +6,12 @@ constexpr double kGlideMs = 1.0;
 constexpr double kQuietEnvelope = 1e-3;  // -60 dB: restarting the phase here cannot click
 }  // namespace
 
-void Voice::prepare(double sample_rate_hz, double harmonic_limit_hz) {
-    oscillator_.prepare(sample_rate_hz, harmonic_limit_hz);
-    envelope_.prepare(sample_rate_hz);
-    flutter_.prepare(sample_rate_hz);
-    pressure_.prepare(sample_rate_hz);
-    glide_.prepare(kGlideMs, sample_rate_hz);
+void Voice::prepare(const ProcessSpec& spec, double harmonic_limit_hz) {
+    oscillator_.prepare(spec, harmonic_limit_hz);
+    envelope_.prepare(spec);
+    flutter_.prepare(spec);
+    pressure_.prepare(spec);
+    glide_.prepare(spec, kGlideMs);
     reset();
 }
 
@@ -41,7 +41,7 @@ void Voice::apply(const ControlFrame& frame) noexcept {
     }
 }
 
-void Voice::render(float* out, int count) noexcept {
+void Voice::process(float* out, int count) noexcept {
     double amplitude = amplitude_, frequency = frequency_hz_, mix = square_mix_;
     const Glide glide = glide_;
     for (int i = 0; i < count; ++i) {
@@ -61,10 +61,10 @@ void Voice::render(float* out, int count) noexcept {
     square_mix_ = mix;
 }
 
-void Voice::render(float* carrier, float* flutter, float* pressure, int count) noexcept {
-    render(carrier, count);
-    if (flutter) flutter_.render(flutter, count);
-    if (pressure) pressure_.render(pressure, count);
+void Voice::process(float* carrier, float* flutter, float* pressure, int count) noexcept {
+    process(carrier, count);
+    if (flutter) flutter_.process(flutter, count);
+    if (pressure) pressure_.process(pressure, count);
 }
 
 }  // namespace tactus

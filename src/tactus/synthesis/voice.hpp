@@ -7,6 +7,7 @@
 // into separate buffers because the post chain routes them differently (post_chain.hpp).
 #pragma once
 
+#include "tactus/dsp/process_spec.hpp"
 #include "tactus/mapping/control_frame.hpp"
 #include "tactus/synthesis/envelope.hpp"
 #include "tactus/synthesis/flutter.hpp"
@@ -18,13 +19,14 @@ namespace tactus {
 
 class Voice {
   public:
-    void prepare(double sample_rate_hz, double harmonic_limit_hz);
+    void prepare(const ProcessSpec& spec, double harmonic_limit_hz);
     void reset() noexcept;
     void apply(const ControlFrame& frame) noexcept;
     // The P carrier alone.
-    void render(float* out, int count) noexcept;
+    void process(float* out, int count) noexcept;
     // Carrier, flutter and pressure; a null buffer skips its component (it is off).
-    void render(float* carrier, float* flutter, float* pressure, int count) noexcept;
+    void process(float* carrier, float* flutter, float* pressure, int count) noexcept;
+    int latency() const { return 0; }
 
   private:
     Oscillator oscillator_;
