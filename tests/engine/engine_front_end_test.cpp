@@ -90,16 +90,53 @@ TEST(EngineFrontEnd, AnyBlockSizeGivesTheOutputOfFixedBlocks) {
     }
 }
 
-TEST(EngineFrontEnd, ChannelsAreDownmixedInTheEngine) {
+// The analysis frames of `in` (one vector per channel) through an engine in 64-frame blocks.
+std::vector<AnalysisFrame> frames_of(const std::vector<std::vector<float>>& in, double fs) {
+    Engine engine;
+    engine.enable_frame_queue();
+    engine.prepare(
+        {.sample_rate_hz = fs, .max_block = 64, .channels = static_cast<int>(in.size())});
+    run(engine, in, {64});
+    std::vector<AnalysisFrame> frames;
+    for (AnalysisFrame f; engine.pop_frame(f);) frames.push_back(f);
+    return frames;
+}
+
+// Several channels are analysed as their mean, except the loudness, which is their sum as
+// ITU-R BS.1770 sums it: the same signal on two channels is 3.01 dB louder than on one, one
+// channel beside silence as loud as alone (its mean would read 6.02 dB quieter).
+TEST(EngineFrontEnd, ChannelsAreDownmixedInTheEngineAndTheirLoudnessSummed) {
     const double fs = 44100;
     const auto left = test::drum_pattern(fs, 2.0, 5).audio;
     const auto right = test::drum_pattern(fs, 2.0, 6).audio;
+    const std::vector<float> silence(left.size(), 0.0f);
     std::vector<float> mean(left.size());
     for (size_t i = 0; i < mean.size(); ++i) mean[i] = (left[i] + right[i]) * 0.5f;
-    Engine stereo;
-    stereo.prepare({.sample_rate_hz = fs, .max_block = 64, .channels = 2});
-    EXPECT_TRUE(bit_identical(run(stereo, {left, right}, {64})[0], mono_render(mean, fs)));
-    Engine chosen;
+
+    const auto stereo = frames_of({left, right}, fs), mixed = frames_of({mean}, fs);
+    ASSERT_EQ(stereo.size(), mixed.size());
+    int onsets = 0;
+    for (size_t f = 0; f < stereo.size(); ++f) {
+        EXPECT_EQ(stereo[f].features.onset, mixed[f].features.onset) << f;
+        EXPECT_EQ(stereo[f].features.brightness_hz, mixed[f].features.brightness_hz) << f;
+        onsets += stereo[f].features.onset;
+    }
+    EXPECT_GT(onsets, 3);
+
+    const auto alone = frames_of({left}, fs), twice = frames_of({left, left}, fs),
+               beside_silence = frames_of({left, silence}, fs);
+    ASSERT_EQ(alone.size(), twice.size());
+    int loud_frames = 0;
+    for (size_t f = 0; f < alone.size(); ++f) {
+        const double db = alone[f].features.loudness_db;
+        if (db < -100) continue;
+        ++loud_frames;
+        EXPECT_NEAR(twice[f].features.loudness_db, db + 10 * std::log10(2.0), 1e-3) << f;
+        EXPECT_NEAR(beside_silence[f].features.loudness_db, db, 1e-3) << f;
+    }
+    EXPECT_GT(loud_frames, 100);
+
+    Engine chosen;  // one channel analysed: exactly as if it came alone
     chosen.set_input_channel(1);
     chosen.prepare({.sample_rate_hz = fs, .max_block = 64, .channels = 2});
     EXPECT_TRUE(bit_identical(run(chosen, {left, right}, {64})[0], mono_render(right, fs)));
@@ -219,6 +256,39 @@ struct OnsetLog : FrameObserver {
 // turned on): the new pipeline is primed and crossfaded in. Every hit the unchanged engine finds
 // is found within 10 ms; around each change the output never drops out and steps no more than
 // the outputs with the settings before or after it held throughout.
+// A pipeline swapped in for a structural change is primed with the channels' summed loudness
+// too: before, during and after the change the loudness reads as in an engine that always
+// had the new setting.
+TEST(EngineFrontEnd, StructuralChangesKeepTheSummedLoudnessOfSeveralChannels) {
+    const double fs = 48000;
+    const auto left = test::drum_pattern(fs, 3.0, 12).audio;
+    const auto right = test::drum_pattern(fs, 3.0, 13).audio;
+    Settings after;
+    after.set(P::onset_window_ms, 8.0);  // keeps the hop: frames line up
+    const auto loudness_of = [&](Engine& engine, bool change) {
+        engine.enable_frame_queue();
+        engine.prepare({.sample_rate_hz = fs, .max_block = 64, .channels = 2});
+        std::vector<double> db;
+        for (size_t done = 0; done + 64 <= left.size(); done += 64) {
+            if (change && done == static_cast<size_t>(1.5 * fs))
+                engine.set(P::onset_window_ms, 8.0);
+            const float* in[] = {left.data() + done, right.data() + done};
+            float out[64];
+            float* outs[] = {out};
+            engine.process(in, outs, 64);
+            for (AnalysisFrame f; engine.pop_frame(f);) db.push_back(f.features.loudness_db);
+        }
+        return db;
+    };
+    Engine changed, held(after);
+    const auto y = loudness_of(changed, true), reference = loudness_of(held, false);
+    ASSERT_EQ(y.size(), reference.size());
+    int compared = 0;
+    for (size_t f = 0; f < y.size(); ++f, ++compared)
+        EXPECT_NEAR(y[f], reference[f], 1e-3) << "frame " << f;
+    EXPECT_GT(compared, 100);
+}
+
 TEST(EngineFrontEnd, StructuralChangesLoseNoOnsetAndLeaveNoGap) {
     const double fs = 48000;
     constexpr int kBlock = 64;

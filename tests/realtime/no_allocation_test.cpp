@@ -25,9 +25,9 @@
 
 #include "support/live_values.hpp"
 #include "support/signals.hpp"
+#include "tactus/engine/engine.hpp"
 #include "tactus/io/actuator_file.hpp"
 #include "tactus/io/preset.hpp"
-#include "tactus/engine/engine.hpp"
 #include "tactus/perception/meter.hpp"
 
 extern "C" {
@@ -360,15 +360,16 @@ TEST(RealTime, WithActuatorCompensation) {
 // Every live parameter turned while audio runs, an actuator's trim, triggers and a structural
 // change now and then: the changes are set on another thread between blocks (Engine::set may
 // allocate there: a flattening design, a new pipeline), and process() picks each up (catching a
-// new pipeline up and crossfading to it) without an allocation, a free or a lock. Turning a component's weight from or
-// to 0 is structural (routing): weights are turned only between values above 0.
-void expect_live_changes_are_real_time_safe(const Settings& start, double fs) {
+// new pipeline up and crossfading to it) without an allocation, a free or a lock. Turning a
+// component's weight from or to 0 is structural (routing): weights are turned only between values
+// above 0. With several input channels their summed loudness is primed too.
+void expect_live_changes_are_real_time_safe(const Settings& start, double fs, int channels) {
     const std::vector<float> x = varied_input(fs);
     std::vector<float> y(x.size());
     Engine engine(start);
     engine.set_actuators({ActuatorOutput{}, ActuatorOutput{.profile = {}, .gain_db = -3}});
     engine.enable_frame_queue();
-    engine.prepare({.sample_rate_hz = fs, .max_block = 256});
+    engine.prepare({.sample_rate_hz = fs, .max_block = 256, .channels = channels});
     std::vector<float> second(x.size());
     const auto changes = test::turned_live_values(start);
     reset_counts();
@@ -391,10 +392,11 @@ void expect_live_changes_are_real_time_safe(const Settings& start, double fs) {
         {
             Guard guard;
             float* outs[] = {y.data() + done, second.data() + done};
-            const float* in = x.data() + done;
-            engine.process(&in, outs, count);
+            const float* in[] = {x.data() + done, x.data() + done};  // the same on each
+            engine.process(in, outs, count);
         }
-        while (engine.pop_frame(frame)) {}
+        while (engine.pop_frame(frame)) {
+        }
         done += static_cast<size_t>(count);
     }
     EXPECT_GE(change, 2 * changes.size()) << "every live parameter turned there and back";
@@ -404,12 +406,12 @@ void expect_live_changes_are_real_time_safe(const Settings& start, double fs) {
 }
 
 TEST(RealTime, LiveParameterChanges) {
-    expect_live_changes_are_real_time_safe(Settings{}, 48000);
+    expect_live_changes_are_real_time_safe(Settings{}, 48000, 1);
     Settings four;
     apply_preset_file(four,
                       std::filesystem::path(TACTUS_SOURCE_DIR) / "presets" / "four-channel.toml");
     four.set(P::actuator_dc, 1);
-    expect_live_changes_are_real_time_safe(four, 44100);
+    expect_live_changes_are_real_time_safe(four, 44100, 2);
 }
 
 // The sensation meter is an offline tool, but after prepare() it does not allocate either.

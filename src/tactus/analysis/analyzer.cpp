@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "tactus/core/units.hpp"
+#include "tactus/dsp/sanitize.hpp"
 
 namespace tactus {
 namespace {
@@ -50,15 +51,14 @@ void Analyzer::reset() noexcept {
     frames_ = 0;
 }
 
-bool Analyzer::process(const float* samples, int count) noexcept {
-    for (int i = 0; i < count; ++i) {  // comparisons, not std::isnormal: they vectorise
-        const float x = samples[i], magnitude = std::fabs(x);
-        clean_[i] = magnitude >= std::numeric_limits<float>::min() && magnitude <= kMaxInput ? x
-                    : magnitude > kMaxInput && magnitude <= std::numeric_limits<float>::max()
-                        ? std::copysign(kMaxInput, x)
-                        : 0.0f;
+bool Analyzer::process(const float* samples, const float* power, int count) noexcept {
+    for (int i = 0; i < count; ++i) clean_[i] = sanitized(samples[i], kMaxInput);
+    if (computed_.loudness) {
+        if (power)
+            loudness_.process_power(power, count);
+        else
+            loudness_.process(clean_.data(), count);
     }
-    if (computed_.loudness) loudness_.process(clean_.data(), count);
     dc_blocker_.process(clean_.data(), count);
     history_.write(clean_.data(), count);
     filled_ += count;

@@ -33,9 +33,14 @@ class Analyzer {
     // Samples that can be written before the next frame is due (1 ... hop).
     int samples_to_next_frame() const noexcept { return hop_samples_ - filled_; }
     // Takes at most samples_to_next_frame() samples; returns true when a frame is due.
-    // Non-finite and denormal samples are read as 0, levels beyond +-kMaxInput are clipped; a DC
-    // offset is removed before the spectral features.
-    bool process(const float* samples, int count) noexcept;
+    // Non-finite and denormal samples are read as 0, levels beyond +-kMaxInput are clipped
+    // (dsp/sanitize.hpp); a DC offset is removed before the spectral features. `power`, when
+    // not null, is the K-weighted power of several channels (engine/channel_power.hpp), which
+    // the loudness reads instead of the samples'.
+    bool process(const float* samples, const float* power, int count) noexcept;
+    bool process(const float* samples, int count) noexcept {
+        return process(samples, nullptr, count);
+    }
     // The longest a sample waits before a frame reads it.
     int latency() const { return hop_samples_ - 1; }
 

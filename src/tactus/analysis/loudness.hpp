@@ -1,13 +1,13 @@
 // Short-window K-weighted loudness in dB (LKFS scale): the ITU-R BS.1770-4 K-weighting
-// (high shelf + RLB high-pass, coefficients re-derived for any sample rate as in libebur128),
-// mean square (a running sum) over a short window instead of BS.1770's 400 ms, so that drum
-// hits register within milliseconds. A full-scale 997 Hz sine reads -3.01 dB; doubling amplitude
-// adds 6.02 dB.
+// (analysis/k_weighting.hpp), mean square (a running sum) over a short window instead of
+// BS.1770's 400 ms, so that drum hits register within milliseconds. A full-scale 997 Hz sine
+// reads -3.01 dB; doubling amplitude adds 6.02 dB. Several channels come as their K-weighted
+// power, summed over the channels as BS.1770 sums them (engine/channel_power.hpp).
 #pragma once
 
 #include <vector>
 
-#include "tactus/dsp/biquad.hpp"
+#include "tactus/analysis/k_weighting.hpp"
 #include "tactus/dsp/process_spec.hpp"
 
 namespace tactus {
@@ -19,10 +19,14 @@ class Loudness {
     void prepare(const ProcessSpec& spec, double window_ms);  // may allocate
     void reset() noexcept;
     void process(const float* samples, int count) noexcept;  // K-weights and stores squares
-    double loudness_db() const noexcept;                     // over the newest window
+    // Instead of process(): the K-weighted power of each sample, summed over the channels.
+    void process_power(const float* power, int count) noexcept;
+    double loudness_db() const noexcept;  // over the newest window
 
   private:
-    Biquad shelf_, highpass_;
+    template <typename Square>
+    void add(int count, Square square) noexcept;
+    KWeighting k_weighting_;
     std::vector<double> squares_;  // ring of K-weighted squares, one window long
     size_t position_ = 0;
     double sum_ = 0.0;  // of squares_, kept running

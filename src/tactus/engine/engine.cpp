@@ -90,6 +90,13 @@ void Engine::prepare(const ProcessSpec& spec) {
     fade_samples_ =
         std::max<int>(1, static_cast<int>(ms_to_samples(kCrossfadeMs, spec.sample_rate_hz)));
     ring_.prepare(ms_to_samples(2e3 * kPrimeSeconds, spec.sample_rate_hz));
+    summed_loudness_ = spec.channels > 1 && input_channel_ < 0;
+    if (summed_loudness_) {
+        channel_power_.prepare(spec);
+        power_ring_.prepare(ring_.capacity());
+    }
+    power_.assign(summed_loudness_ ? block : 0, 0.0f);
+    power_catch_up_.assign(power_.size(), 0.0f);
     prepared_ = true;
     reset();
 }
@@ -101,6 +108,10 @@ void Engine::reset() noexcept {
     active_->reset();
     for (auto& trim : trims_) trim.reset();
     ring_.reset();
+    if (summed_loudness_) {
+        channel_power_.reset();
+        power_ring_.reset();
+    }
     latency_ = active_->latency();
     hop_samples_ = active_->hop_samples();
 }
@@ -165,14 +176,18 @@ void Engine::set(P id, double value) {
 // audio thread (which catches it up and crossfades to it).
 void Engine::swap_in(const Settings& settings) {
     const auto prime = static_cast<int64_t>(kPrimeSeconds * spec_.sample_rate_hz);
-    std::vector<float> past;
+    std::vector<float> past, past_power;
     int64_t to = 0, from = 0;
     std::unique_ptr<Pipeline> pipeline;
     for (int attempt = 0;; ++attempt) {  // the audio thread may overwrite what is being read
         to = ring_.written();
         from = std::max<int64_t>(0, to - prime);
-        past.resize(static_cast<size_t>(to - from));
-        if (ring_.read(from, past.data(), static_cast<int>(past.size())) || attempt == 3) break;
+        const auto count = static_cast<int>(to - from);
+        past.resize(static_cast<size_t>(count));
+        past_power.resize(summed_loudness_ ? past.size() : 0);
+        const bool held = ring_.read(from, past.data(), count) &&
+                          (!summed_loudness_ || power_ring_.read(from, past_power.data(), count));
+        if (held || attempt == 3) break;
     }
     pipeline = make_pipeline(settings, from);
     std::vector<std::vector<float>> scratch(
@@ -184,7 +199,9 @@ void Engine::swap_in(const Settings& settings) {
         for (size_t done = 0; done < past.size();) {
             const int count = static_cast<int>(
                 std::min<size_t>(past.size() - done, static_cast<size_t>(spec_.max_block)));
-            pipeline->process(past.data() + done, out.data(), count, nullptr);
+            pipeline->process(past.data() + done,
+                              summed_loudness_ ? past_power.data() + done : nullptr, out.data(),
+                              count, nullptr);
             done += static_cast<size_t>(count);
         }
     }
@@ -287,8 +304,11 @@ void Engine::start_crossfade() noexcept {
     const int block = spec_.max_block;
     for (int64_t at = p->position(); at < ring_.written();) {
         const int count = static_cast<int>(std::min<int64_t>(block, ring_.written() - at));
-        if (!ring_.read(at, mono_catch_up_.data(), count)) break;  // too far behind: as it is
-        p->process(mono_catch_up_.data(), incoming_pointers_.data(), count, nullptr);
+        if (!ring_.read(at, mono_catch_up_.data(), count) ||
+            (summed_loudness_ && !power_ring_.read(at, power_catch_up_.data(), count)))
+            break;  // too far behind: as it is
+        p->process(mono_catch_up_.data(), summed_loudness_ ? power_catch_up_.data() : nullptr,
+                   incoming_pointers_.data(), count, nullptr);
         at += count;
     }
     incoming_ = p;
@@ -317,13 +337,19 @@ void Engine::process_chunk(const float* const* in, float* const* out, int offset
                            int count) noexcept {
     const float* mono = downmix(in, offset, count);
     ring_.write(mono, count);
+    const float* power = nullptr;
+    if (summed_loudness_) {
+        channel_power_.process(in, offset, count, power_.data());
+        power_ring_.write(power_.data(), count);
+        power = power_.data();
+    }
     float* outs[kMaxActuators];
     const size_t n = trims_.size();
     for (size_t k = 0; k < n; ++k) outs[k] = out[k] + offset;
     // While a new pipeline fades in, the frames are its own (primed: they go on seamlessly).
-    active_->process(mono, outs, count, incoming_ ? nullptr : &sink_);
+    active_->process(mono, power, outs, count, incoming_ ? nullptr : &sink_);
     if (incoming_) {
-        incoming_->process(mono, incoming_pointers_.data(), count, &sink_);
+        incoming_->process(mono, power, incoming_pointers_.data(), count, &sink_);
         for (size_t k = 0; k < n; ++k) {
             const float* next = incoming_pointers_[k];
             for (int i = 0; i < count; ++i) {

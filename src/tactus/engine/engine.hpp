@@ -9,7 +9,8 @@
 // (5.5 times the highest edge) renders the same vibration as the input rate: eval/evaluate.py's
 // pulse frequencies agree within 0.1 Hz at 44.1, 22.05 and 11.025 kHz.
 //
-// Channels. Any number of input channels, downmixed to their mean or one chosen channel; N
+// Channels. Any number of input channels, downmixed to their mean or one chosen channel (the
+// mean's loudness is the channels' sum as ITU-R BS.1770 sums it: engine/channel_power.hpp); N
 // actuator outputs (ActuatorOutput: profile, trim gain, delay), one post chain per distinct
 // profile, all reading one analysis and one synthesis (Pipeline).
 //
@@ -42,6 +43,7 @@
 #include <optional>
 #include <vector>
 
+#include "tactus/engine/channel_power.hpp"
 #include "tactus/engine/input_ring.hpp"
 #include "tactus/engine/output_trim.hpp"
 #include "tactus/engine/pipeline.hpp"
@@ -186,6 +188,11 @@ class Engine {
     std::vector<std::vector<float>> incoming_out_;  // the incoming pipeline's output, one chunk
     std::vector<float*> incoming_pointers_;
     InputRing ring_;
+    // Several channels analysed as their mean: the loudness is their BS.1770 sum.
+    bool summed_loudness_ = false;
+    ChannelPower channel_power_;
+    std::vector<float> power_, power_catch_up_;  // one chunk
+    InputRing power_ring_;                       // beside ring_, for a pipeline being primed
     FrameSink sink_{*this};
     FrameObserver* observer_ = nullptr;
 

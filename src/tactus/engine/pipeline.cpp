@@ -117,7 +117,7 @@ int64_t Pipeline::clipped_samples() const {
     return clipped;
 }
 
-void Pipeline::process(const float* mono, float* const* out, int count,
+void Pipeline::process(const float* mono, const float* power, float* const* out, int count,
                        FrameObserver* observer) noexcept {
     if (live_.take_changed()) apply_live();
     const int divisor = rate_divisor_;
@@ -126,7 +126,8 @@ void Pipeline::process(const float* mono, float* const* out, int count,
     int done = 0, rendered = 0;
     while (done < count) {
         const int chunk = std::min(count - done, analyzer_.samples_to_next_frame());
-        const bool frame_due = analyzer_.process(mono + done, chunk);
+        const bool frame_due =
+            analyzer_.process(mono + done, power ? power + done : nullptr, chunk);
         // Internal sample k stands at input sample k * divisor (from the origin).
         const int64_t at = position_ - origin_;
         const auto due = static_cast<int>(ceil_div(at + chunk, divisor) - ceil_div(at, divisor));

@@ -50,9 +50,11 @@ class Pipeline {
     // The features the analysis computes beyond the mapping's (the engine's readers').
     void set_extra_features(FeatureSet features) noexcept;
 
-    // mono: count <= max_block samples; out: one buffer per actuator. Frames go to `observer`
-    // when not null.
-    void process(const float* mono, float* const* out, int count, FrameObserver* observer) noexcept;
+    // mono: count <= max_block samples; power: their K-weighted power summed over the input
+    // channels (engine/channel_power.hpp), or null (the loudness of `mono`); out: one buffer
+    // per actuator. Frames go to `observer` when not null.
+    void process(const float* mono, const float* power, float* const* out, int count,
+                 FrameObserver* observer) noexcept;
 
     int rate_divisor() const { return rate_divisor_; }
     double internal_rate_hz() const { return sample_rate_hz_ / rate_divisor_; }
