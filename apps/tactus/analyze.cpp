@@ -36,8 +36,10 @@ constexpr const char* kColumns[] = {
 constexpr size_t kMeterColumns = 5;
 using Row = std::array<double, std::size(kColumns)>;
 
-// Holds each frame's row until the meter has seen the vibration up to the frame's time.
-class FrameWriter final : public FrameObserver {
+// Holds each frame's row until the meter has seen the vibration up to the frame's time. The
+// frames come off the engine's frame queue between process() calls, as a live front end takes
+// them (nothing is stored from inside process()).
+class FrameWriter {
   public:
     FrameWriter(std::ostream& out, bool json, const Engine& engine, ActuatorProfile actuator)
         : out_(out), json_(json), engine_(engine), actuator_(std::move(actuator)) {
@@ -64,7 +66,15 @@ class FrameWriter final : public FrameObserver {
         if (json_) out_ << "\n]\n";
     }
 
-    void on_frame(const Features& f, const ControlFrame& c) noexcept override {
+    // The engine's frames so far.
+    void take_frames(Engine& engine) {
+        for (AnalysisFrame frame; engine.pop_frame(frame);) add(frame.features, frame.control);
+    }
+    size_t rows() const { return rows_; }
+    size_t onsets() const { return onsets_; }
+
+  private:
+    void add(const Features& f, const ControlFrame& c) {
         const double sample_rate_hz = engine_.sample_rate_hz();
         pending_.push_back({f.frame_end_sample / sample_rate_hz, f.loudness_db, f.brightness_hz,
                             f.noisiness, f.pitch_hz, f.pitch_confidence, f.onset_odf,
@@ -74,10 +84,6 @@ class FrameWriter final : public FrameObserver {
                             c.pressure});
         onsets_ += f.onset;
     }
-    size_t rows() const { return rows_; }
-    size_t onsets() const { return onsets_; }
-
-  private:
     // Writes the pending rows whose time (in samples) the meter has reached, each with the
     // latest reading at or before it.
     void write_rows_up_to(double samples) {
@@ -137,10 +143,16 @@ void analyze(const AnalyzeOptions& o) {
     TextOutput output(out_path);
     FrameWriter writer(output.stream(), format == "json", engine,
                        actuator ? *actuator : load_actuator(resolve_actuator(kDefaultActuator)));
-    engine.set_observer(&writer);
+    // A block brings at most kStreamBlockFrames / (0.5 ms at 8 kHz) = 1024 frames.
+    static_assert(kStreamBlockFrames / 4 <= Engine::kQueueCapacity);
+    engine.enable_frame_queue();
     run_with_progress(
         o.input, engine, "analyze",
-        {.on_output = [&](const float* const* v, int n) { writer.vibration(v[0], n); },
+        {.on_output =
+             [&](const float* const* v, int n) {
+                 writer.take_frames(engine);
+                 writer.vibration(v[0], n);
+             },
          .on_start = [&](double sample_rate_hz, int) { writer.start(sample_rate_hz); }});
     writer.finish();
     output.commit();
