@@ -143,8 +143,10 @@ void analyze(const AnalyzeOptions& o) {
     TextOutput output(out_path);
     FrameWriter writer(output.stream(), format == "json", engine,
                        actuator ? *actuator : load_actuator(resolve_actuator(kDefaultActuator)));
-    // A block brings at most kStreamBlockFrames / (0.5 ms at 8 kHz) = 1024 frames.
-    static_assert(kStreamBlockFrames / 4 <= Engine::kQueueCapacity);
+    // A block brings at most one frame per hop; the shortest hop (analysis.hop_ms at its least,
+    // 0.5 ms, at the lowest rate) is 4 samples: the queue holds every frame of a block.
+    constexpr int kShortestHopSamples = static_cast<int>(0.5e-3 * Engine::kMinSampleRateHz);
+    static_assert(kStreamBlockFrames / kShortestHopSamples <= Engine::kQueueCapacity);
     engine.enable_frame_queue();
     run_with_progress(
         o.input, engine, "analyze",

@@ -52,7 +52,7 @@ void Analyzer::reset() noexcept {
 }
 
 bool Analyzer::process(const float* samples, const float* power, int count) noexcept {
-    for (int i = 0; i < count; ++i) clean_[i] = sanitized(samples[i], kMaxInput);
+    for (int i = 0; i < count; ++i) clean_[i] = sanitized(samples[i]);
     if (computed_.loudness) {
         if (power)
             loudness_.process_power(power, count);

@@ -33,7 +33,7 @@ class Analyzer {
     // Samples that can be written before the next frame is due (1 ... hop).
     int samples_to_next_frame() const noexcept { return hop_samples_ - filled_; }
     // Takes at most samples_to_next_frame() samples; returns true when a frame is due.
-    // Non-finite and denormal samples are read as 0, levels beyond +-kMaxInput are clipped
+    // Non-finite and denormal samples are read as 0, levels beyond +-kMaxInputLevel are clipped
     // (dsp/sanitize.hpp); a DC offset is removed before the spectral features. `power`, when
     // not null, is the K-weighted power of several channels (engine/channel_power.hpp), which
     // the loudness reads instead of the samples'.
@@ -43,10 +43,6 @@ class Analyzer {
     }
     // The longest a sample waits before a frame reads it.
     int latency() const { return hop_samples_ - 1; }
-
-    // +60 dB over full scale: only corrupt input gets there, and it would overflow the float
-    // sums of squares of the spectra.
-    static constexpr float kMaxInput = 1000.0f;
     // Analyses the frame ending at the newest sample. Call when process() returned true.
     const Features& analyse() noexcept;
 

@@ -10,13 +10,11 @@ namespace tactus {
 
 void ActuatorChain::prepare(const ProcessSpec& spec, int rate_divisor, const Settings& settings,
                             const ActuatorProfile* profile) {
-    const double sample_rate_hz = spec.sample_rate_hz;
-    const ProcessSpec internal{.sample_rate_hz = sample_rate_hz / rate_divisor,
-                               .max_block = max_internal_block(spec, rate_divisor)};
+    const ProcessSpec internal = Upsampler::internal_spec(spec, rate_divisor);
     upsampler_.prepare(spec, rate_divisor);
     // The upsampler's delay comes out of the limiter's look-ahead (down to the shortest allowed).
     Settings post_settings = settings;
-    const double upsampler_delay_ms = 1e3 * upsampler_.delay_samples() / sample_rate_hz;
+    const double upsampler_delay_ms = 1e3 * upsampler_.delay_samples() / spec.sample_rate_hz;
     post_settings.set(P::post_lookahead_ms,
                       std::max(tactus::spec(P::post_lookahead_ms).min,
                                settings[P::post_lookahead_ms] - upsampler_delay_ms));

@@ -16,10 +16,6 @@ namespace tactus {
 
 class ActuatorChain {
   public:
-    // Internal samples one process() call gets at most, for output blocks of spec.max_block.
-    static int max_internal_block(const ProcessSpec& spec, int rate_divisor) {
-        return (spec.max_block + rate_divisor - 1) / rate_divisor + 1;
-    }
     // spec: the output (input-rate) side; synthesis and post-processing run at
     // spec.sample_rate_hz / rate_divisor. May allocate. `profile` may be null (no compensation).
     void prepare(const ProcessSpec& spec, int rate_divisor, const Settings& settings,

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "tactus/analysis/analyzer.hpp"
 #include "tactus/dsp/sanitize.hpp"
 
 namespace tactus {
@@ -21,7 +20,7 @@ void ChannelPower::process(const float* const* in, int offset, int count, float*
     std::fill(power, power + count, 0.0f);
     for (size_t c = 0; c < channels_.size(); ++c) {
         const float* x = in[c] + offset;
-        for (int i = 0; i < count; ++i) clean_[i] = sanitized(x[i], Analyzer::kMaxInput);
+        for (int i = 0; i < count; ++i) clean_[i] = sanitized(x[i]);
         channels_[c].add_power(clean_.data(), power, count);
     }
 }

@@ -89,12 +89,10 @@ void Engine::prepare(const ProcessSpec& spec) {
     for (size_t k = 0; k < outputs_.size(); ++k) incoming_pointers_[k] = incoming_out_[k].data();
     fade_samples_ =
         std::max<int>(1, static_cast<int>(ms_to_samples(kCrossfadeMs, spec.sample_rate_hz)));
-    ring_.prepare(ms_to_samples(2e3 * kPrimeSeconds, spec.sample_rate_hz));
     summed_loudness_ = spec.channels > 1 && input_channel_ < 0;
-    if (summed_loudness_) {
-        channel_power_.prepare(spec);
-        power_ring_.prepare(ring_.capacity());
-    }
+    if (summed_loudness_) channel_power_.prepare(spec);
+    ring_.prepare(summed_loudness_ ? 2 : 1,
+                  ms_to_samples(2e3 * kPrimeSeconds, spec.sample_rate_hz));
     power_.assign(summed_loudness_ ? block : 0, 0.0f);
     power_catch_up_.assign(power_.size(), 0.0f);
     prepared_ = true;
@@ -108,10 +106,7 @@ void Engine::reset() noexcept {
     active_->reset();
     for (auto& trim : trims_) trim.reset();
     ring_.reset();
-    if (summed_loudness_) {
-        channel_power_.reset();
-        power_ring_.reset();
-    }
+    channel_power_.reset();
     latency_ = active_->latency();
     hop_samples_ = active_->hop_samples();
 }
@@ -185,9 +180,8 @@ void Engine::swap_in(const Settings& settings) {
         const auto count = static_cast<int>(to - from);
         past.resize(static_cast<size_t>(count));
         past_power.resize(summed_loudness_ ? past.size() : 0);
-        const bool held = ring_.read(from, past.data(), count) &&
-                          (!summed_loudness_ || power_ring_.read(from, past_power.data(), count));
-        if (held || attempt == 3) break;
+        float* const lanes[] = {past.data(), past_power.data()};
+        if (ring_.read(from, lanes, count) || attempt == 3) break;
     }
     pipeline = make_pipeline(settings, from);
     std::vector<std::vector<float>> scratch(
@@ -304,9 +298,8 @@ void Engine::start_crossfade() noexcept {
     const int block = spec_.max_block;
     for (int64_t at = p->position(); at < ring_.written();) {
         const int count = static_cast<int>(std::min<int64_t>(block, ring_.written() - at));
-        if (!ring_.read(at, mono_catch_up_.data(), count) ||
-            (summed_loudness_ && !power_ring_.read(at, power_catch_up_.data(), count)))
-            break;  // too far behind: as it is
+        float* const lanes[] = {mono_catch_up_.data(), power_catch_up_.data()};
+        if (!ring_.read(at, lanes, count)) break;  // too far behind: as it is
         p->process(mono_catch_up_.data(), summed_loudness_ ? power_catch_up_.data() : nullptr,
                    incoming_pointers_.data(), count, nullptr);
         at += count;
@@ -336,13 +329,13 @@ void Engine::process(const float* const* in, float* const* out, int count) noexc
 void Engine::process_chunk(const float* const* in, float* const* out, int offset,
                            int count) noexcept {
     const float* mono = downmix(in, offset, count);
-    ring_.write(mono, count);
     const float* power = nullptr;
     if (summed_loudness_) {
         channel_power_.process(in, offset, count, power_.data());
-        power_ring_.write(power_.data(), count);
         power = power_.data();
     }
+    const float* const lanes[] = {mono, power};
+    ring_.write(lanes, count);
     float* outs[kMaxActuators];
     const size_t n = trims_.size();
     for (size_t k = 0; k < n; ++k) outs[k] = out[k] + offset;

@@ -187,12 +187,11 @@ class Engine {
     std::vector<float> mono_catch_up_;  // input a waiting pipeline has not heard, one chunk
     std::vector<std::vector<float>> incoming_out_;  // the incoming pipeline's output, one chunk
     std::vector<float*> incoming_pointers_;
-    InputRing ring_;
+    InputRing ring_;  // what the analysis read: the mono input (and the summed power)
     // Several channels analysed as their mean: the loudness is their BS.1770 sum.
     bool summed_loudness_ = false;
     ChannelPower channel_power_;
     std::vector<float> power_, power_catch_up_;  // one chunk
-    InputRing power_ring_;                       // beside ring_, for a pipeline being primed
     FrameSink sink_{*this};
     FrameObserver* observer_ = nullptr;
 

@@ -2,35 +2,43 @@
 
 namespace tactus {
 
-void InputRing::prepare(int64_t capacity) {
-    samples_ = std::make_unique<std::atomic<float>[]>(static_cast<size_t>(capacity));
+void InputRing::prepare(int lanes, int64_t capacity) {
+    samples_ = std::make_unique<std::atomic<float>[]>(static_cast<size_t>(lanes * capacity));
+    lanes_ = lanes;
     capacity_ = capacity;
     reset();
 }
 
 void InputRing::reset() noexcept {
-    for (int64_t i = 0; i < capacity_; ++i) samples_[i].store(0.0f, std::memory_order_relaxed);
+    for (int64_t i = 0; i < lanes_ * capacity_; ++i)
+        samples_[i].store(0.0f, std::memory_order_relaxed);
     written_.store(0, std::memory_order_release);
 }
 
-void InputRing::write(const float* samples, int count) noexcept {
+void InputRing::write(const float* const* lanes, int count) noexcept {
     const int64_t start = written_.load(std::memory_order_relaxed);
-    int64_t slot = start % capacity_;
-    for (int i = 0; i < count; ++i) {
-        samples_[slot].store(samples[i], std::memory_order_relaxed);
-        if (++slot == capacity_) slot = 0;
+    for (int l = 0; l < lanes_; ++l) {
+        std::atomic<float>* lane = samples_.get() + l * capacity_;
+        int64_t slot = start % capacity_;
+        for (int i = 0; i < count; ++i) {
+            lane[slot].store(lanes[l][i], std::memory_order_relaxed);
+            if (++slot == capacity_) slot = 0;
+        }
     }
     written_.store(start + count, std::memory_order_release);
 }
 
-bool InputRing::read(int64_t from, float* out, int count) const noexcept {
+bool InputRing::read(int64_t from, float* const* lanes, int count) const noexcept {
     const auto held = [&] {
         const int64_t now = written();
         return from >= 0 && from >= now - capacity_ && from + count <= now;
     };
     if (!held()) return false;
-    for (int i = 0; i < count; ++i)
-        out[i] = samples_[(from + i) % capacity_].load(std::memory_order_relaxed);
+    for (int l = 0; l < lanes_; ++l) {
+        const std::atomic<float>* lane = samples_.get() + l * capacity_;
+        for (int i = 0; i < count; ++i)
+            lanes[l][i] = lane[(from + i) % capacity_].load(std::memory_order_relaxed);
+    }
     std::atomic_thread_fence(std::memory_order_acquire);
     return held();
 }

@@ -1,8 +1,10 @@
-// The last few seconds of the engine's (downmixed) input, written by the audio thread and read by
-// a control thread that primes a pipeline for a structural change (engine.hpp): the new
+// The last few seconds of what the engine's analysis reads (the downmixed input and, for several
+// channels, their summed loudness power: one lane each), written by the audio thread and read
+// by a control thread that primes a pipeline for a structural change (engine.hpp): the new
 // pipeline hears the same recent past, so its onset history, loudness and envelopes are those
-// of the one it replaces. Lock-free: samples are relaxed atomics, the count written is released
-// after them; a reader checks afterwards that what it copied was not overwritten meanwhile.
+// of the one it replaces. Lock-free: samples are relaxed atomics, the count written (one for
+// every lane) is released after them; a reader checks afterwards that what it copied was not
+// overwritten meanwhile.
 #pragma once
 
 #include <atomic>
@@ -13,20 +15,22 @@ namespace tactus {
 
 class InputRing {
   public:
-    void prepare(int64_t capacity);  // allocates
+    void prepare(int lanes, int64_t capacity);  // allocates
     void reset() noexcept;
-    // Audio thread.
-    void write(const float* samples, int count) noexcept;
+    int lanes() const noexcept { return lanes_; }
+    // Audio thread: count samples of each lane.
+    void write(const float* const* lanes, int count) noexcept;
     // Any thread: samples written since reset.
     int64_t written() const noexcept { return written_.load(std::memory_order_acquire); }
     int64_t capacity() const noexcept { return capacity_; }
-    // Any thread: copies samples [from, from + count); false when they are no longer (or not
-    // yet) held.
-    bool read(int64_t from, float* out, int count) const noexcept;
+    // Any thread: copies samples [from, from + count) of each lane; false when they are no
+    // longer (or not yet) held.
+    bool read(int64_t from, float* const* lanes, int count) const noexcept;
 
   private:
     std::unique_ptr<std::atomic<float>[]> samples_;
-    int64_t capacity_ = 0;
+    int64_t capacity_ = 0;  // per lane; lane l is samples_[l * capacity_ ...]
+    int lanes_ = 0;
     std::atomic<int64_t> written_{0};
 };
 

@@ -31,8 +31,8 @@ void Pipeline::prepare(const ProcessSpec& spec, const Settings& settings,
     sample_rate_hz_ = rate;
     rate_divisor_ =
         std::clamp(static_cast<int>(rate / kMinInternalRateHz), 1, Upsampler::kMaxFactor);
-    const int max_internal_block = ActuatorChain::max_internal_block(spec, rate_divisor_);
-    const auto internal = static_cast<size_t>(max_internal_block);
+    const ProcessSpec internal_spec = Upsampler::internal_spec(spec, rate_divisor_);
+    const auto internal = static_cast<size_t>(internal_spec.max_block);
     // Actuators with the same profile share a chain.
     chains_.clear();
     chain_of_.clear();
@@ -57,8 +57,7 @@ void Pipeline::prepare(const ProcessSpec& spec, const Settings& settings,
     const double frames_per_second = rate / analyzer_.hop_samples();
     mapper_.prepare(settings, {.frames_per_second = frames_per_second,
                                .output_ceiling = chains_.front().post().ceiling()});
-    voice_.prepare({.sample_rate_hz = rate / rate_divisor_, .max_block = max_internal_block},
-                   settings[P::post_band_high_hz]);
+    voice_.prepare(internal_spec, settings[P::post_band_high_hz]);
     live_.prepare(settings, frames_per_second);
     update_features();
     reset();

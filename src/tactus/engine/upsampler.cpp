@@ -89,8 +89,7 @@ void Upsampler::prepare(const ProcessSpec& spec, int factor) {
         for (int i = 0; i < kTapsPerPhase; ++i)
             for (int r = 0; r < factor; ++r) taps_[i][r] = static_cast<float>(h[i * factor + r]);
     }
-    const int max_internal_block = (spec.max_block + factor - 1) / factor + 1;
-    line_.assign(static_cast<size_t>(kTapsPerPhase + max_internal_block), 0.0f);
+    line_.assign(static_cast<size_t>(kTapsPerPhase + internal_spec(spec, factor).max_block), 0.0f);
     reset();
 }
 

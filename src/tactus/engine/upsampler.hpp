@@ -21,8 +21,14 @@ class Upsampler {
     static constexpr int kMaxFactor = 16;
     static constexpr int kTapsPerPhase = 8;
 
-    // spec: the output side (rate, largest output block); `factor` output samples per
-    // internal sample. May allocate (design).
+    // The internal side of `output` (rate, largest output block): its rate over `factor`, and
+    // the most internal samples one process() call consumes.
+    static ProcessSpec internal_spec(const ProcessSpec& output, int factor) {
+        return {.sample_rate_hz = output.sample_rate_hz / factor,
+                .max_block = (output.max_block + factor - 1) / factor + 1};
+    }
+    // spec: the output side; `factor` output samples per internal sample. May allocate
+    // (design).
     void prepare(const ProcessSpec& spec, int factor);
     void reset() noexcept;
     // Consumes `internal_count` internal samples and writes `count` output samples: exactly

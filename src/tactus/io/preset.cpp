@@ -96,6 +96,13 @@ std::string toml_value(const Settings& settings, const ParamSpec& s) {
     return text;
 }
 
+// A parsed preset on top of `settings`: all or nothing.
+void apply_table(Settings& settings, const toml::table& table, std::string_view origin) {
+    Settings candidate = settings;
+    apply_node(candidate, "", table, format_of(table, origin), origin);
+    settings = candidate;
+}
+
 std::string description_of(const fs::path& path) {
     try {
         const toml::table table = toml::parse_file(path.string());
@@ -130,9 +137,7 @@ void apply_preset_text(Settings& settings, std::string_view toml_text, std::stri
         throw std::runtime_error(fmt::format("{}: TOML syntax error: {}", where(origin, e.source()),
                                              printable(e.description())));
     }
-    Settings candidate = settings;  // all or nothing
-    apply_node(candidate, "", table, format_of(table, origin), origin);
-    settings = candidate;
+    apply_table(settings, table, origin);
 }
 
 void apply_preset_file(Settings& settings, const fs::path& path) {
@@ -146,9 +151,7 @@ void apply_preset_file(Settings& settings, const fs::path& path) {
         throw std::runtime_error(fmt::format("{}: TOML syntax error: {}",
                                              where(path.string(), e.source()), description));
     }
-    Settings candidate = settings;
-    apply_node(candidate, "", table, format_of(table, path.string()), path.string());
-    settings = candidate;
+    apply_table(settings, table, path.string());
 }
 
 std::string_view current_key(std::string_view key, int format, std::span<const KeyRename> renames) {
