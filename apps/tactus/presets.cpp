@@ -16,7 +16,6 @@ namespace {
 
 void print_params() {
     constexpr std::string_view kRow = "{:>3} {:<36} {:<7} {:>10} {:>10} {:>10} {:<4} {:<10}  {}\n";
-    constexpr std::string_view kTypes[] = {"real", "integer", "toggle", "choice"};
     std::cout << fmt::format(kRow, "id", "key", "type", "default", "min", "max", "unit", "change",
                              "help");
     const Settings defaults;
@@ -26,7 +25,7 @@ void print_params() {
         const std::string change = s.change == ParamChange::structural ? "structural"
                                    : s.smoothing_ms > 0 ? fmt::format("{:g} ms", s.smoothing_ms)
                                                         : "live";
-        std::cout << fmt::format(kRow, s.id, s.key, kTypes[static_cast<int>(s.type)],
+        std::cout << fmt::format(kRow, s.id, s.key, kParamTypeNames[static_cast<int>(s.type)],
                                  defaults.text_of(s.param), range_min, range_max, s.unit, change,
                                  s.help);
     }

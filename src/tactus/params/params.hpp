@@ -13,6 +13,7 @@
 namespace tactus {
 
 enum class ParamType { real, integer, toggle, choice };  // the control a host shows
+inline constexpr std::string_view kParamTypeNames[] = {"real", "integer", "toggle", "choice"};
 enum class ParamCurve { lin, log };  // how a front end should lay the range out on a slider
 // live: set while audio runs (no allocation, no lock), gliding over smoothing_ms;
 // structural: the engine must be prepared again (buffer sizes, rates, routing).
