@@ -22,14 +22,9 @@
 #include <utility>
 #include <vector>
 
-namespace tactus::test {
+#include "plugin_reference.hpp"
 
-// A parameter change as a host sends it: CLAP param id and value, at a frame of the block.
-struct ParamChange {
-    clap_id id;
-    double value;
-    uint32_t frame = 0;
-};
+namespace tactus::test {
 
 // The .clap file, its entry initialised for as long as this lives.
 class ClapLibrary {

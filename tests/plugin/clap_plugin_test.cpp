@@ -10,6 +10,7 @@
 
 #include "clap_host.hpp"
 #include "plugin_audio.hpp"
+#include "plugin_reference.hpp"
 #include "support/run_cli.hpp"
 #include "tactus/engine/engine.hpp"
 #include "tactus/io/preset.hpp"
@@ -17,19 +18,11 @@
 namespace tactus::test {
 namespace {
 
-constexpr uint32_t kBlock = 256;  // not render's 4096: any block split renders the same
-constexpr int kActuators = 2;
 // A host change reaches the engine through the plugin's control thread (within a
 // millisecond, a structural one once its pipeline is built): this host gives it that time
 // between blocks, as a slow offline render does, so the block it starts at is known.
 constexpr auto kControlTime = std::chrono::milliseconds(300);
 
-using Outputs = std::vector<std::vector<float>>;  // vibration 1..N, music L, R (delayed)
-
-struct Automation {
-    size_t block;  // sent between block-1 and block
-    std::vector<ParamChange> changes;
-};
 
 // Runs `sound` through `instance` (activated here) in kBlock blocks; `automation` is flushed
 // between blocks, or sent as events in the block with `as_events`.
@@ -116,32 +109,6 @@ TEST_F(ClapPlugin, DefaultsRenderAsTheCommandLine) {
     for (size_t c = 0; c < 2; ++c)
         for (size_t i = latency; i < drums_.frames(); ++i)
             ASSERT_EQ(out[kActuators + c][i], drums_.channels[c][i - latency]) << i;
-}
-
-// The engine library driven as the plugin drives it: the same blocks, set() between them.
-Outputs engine_reference(const Sound& sound, const std::vector<Automation>& automation) {
-    Engine engine;
-    engine.set_actuators(std::vector<ActuatorOutput>(kActuators));
-    engine.prepare({.sample_rate_hz = sound.sample_rate_hz, .max_block = kBlock, .channels = 2});
-    Outputs out(kActuators, std::vector<float>(sound.frames()));
-    for (size_t start = 0, block = 0; start < sound.frames(); start += kBlock, ++block) {
-        for (const Automation& a : automation)
-            if (a.block == block)
-                for (const ParamChange& c : a.changes) engine.set(*find_param(c.id), c.value);
-        const int n = static_cast<int>(std::min<size_t>(kBlock, sound.frames() - start));
-        const float* in[2] = {sound.channels[0].data() + start, sound.channels[1].data() + start};
-        float* o[kActuators] = {out[0].data() + start, out[1].data() + start};
-        engine.process(in, o, n);
-    }
-    return out;
-}
-
-// The block just before the loudest vibration in [from_s, to_s): a change there lands on a hit.
-size_t block_before_peak(const std::vector<float>& x, double rate_hz, double from_s, double to_s) {
-    size_t peak = static_cast<size_t>(from_s * rate_hz);
-    for (size_t i = peak; i < static_cast<size_t>(to_s * rate_hz); ++i)
-        if (std::abs(x[i]) > std::abs(x[peak])) peak = i;
-    return peak / kBlock - 2;
 }
 
 TEST_F(ClapPlugin, AutomationGoesThroughTheEnginesLivePath) {
