@@ -103,21 +103,30 @@ class ClapInstance {
     // One block: `in` and `out` hold input_channels() and output_channels() pointers.
     void process(const float* const* in, float* const* out, uint32_t frames,
                  const std::vector<ParamChange>& changes = {}) {
+        stage(in, out, frames, changes);
+        process_staged();
+    }
+    // The same in two steps, so that a test can watch process() alone: stage() builds the
+    // block's buffers and events (allocating), process_staged() hands them to the plugin.
+    void stage(const float* const* in, float* const* out, uint32_t frames,
+               const std::vector<ParamChange>& changes = {}) {
         events_ = events_of(changes);
-        std::vector<clap_audio_buffer_t> ins = buffers(input_buses_, const_cast<float* const*>(in), frames);
-        std::vector<clap_audio_buffer_t> outs = buffers(output_buses_, out, frames);
-        clap_process_t p{};
-        p.steady_time = steady_time_;
-        p.frames_count = frames;
-        p.audio_inputs = ins.data();
-        p.audio_inputs_count = static_cast<uint32_t>(ins.size());
-        p.audio_outputs = outs.data();
-        p.audio_outputs_count = static_cast<uint32_t>(outs.size());
-        p.in_events = &in_events_;
-        p.out_events = &out_events_;
-        if (plugin_->process(plugin_, &p) == CLAP_PROCESS_ERROR)
+        inputs_ = buffers(input_buses_, const_cast<float* const*>(in));
+        outputs_ = buffers(output_buses_, out);
+        process_ = {};
+        process_.steady_time = steady_time_;
+        process_.frames_count = frames;
+        process_.audio_inputs = inputs_.data();
+        process_.audio_inputs_count = static_cast<uint32_t>(inputs_.size());
+        process_.audio_outputs = outputs_.data();
+        process_.audio_outputs_count = static_cast<uint32_t>(outputs_.size());
+        process_.in_events = &in_events_;
+        process_.out_events = &out_events_;
+    }
+    void process_staged() {
+        if (plugin_->process(plugin_, &process_) == CLAP_PROCESS_ERROR)
             throw std::runtime_error("process failed");
-        steady_time_ += frames;
+        steady_time_ += process_.frames_count;
     }
 
     // Parameter changes outside process() (before activation, or between blocks).
@@ -159,7 +168,7 @@ class ClapInstance {
         return n;
     }
     static std::vector<clap_audio_buffer_t> buffers(const std::vector<uint32_t>& buses,
-                                                    float* const* channels, uint32_t) {
+                                                    float* const* channels) {
         std::vector<clap_audio_buffer_t> result;
         int next = 0;
         for (uint32_t count : buses) {
@@ -196,6 +205,8 @@ class ClapInstance {
     bool active_ = false, processing_ = false, restart_requested_ = false;
     int64_t steady_time_ = 0;
     std::vector<clap_event_param_value_t> events_;
+    std::vector<clap_audio_buffer_t> inputs_, outputs_;
+    clap_process_t process_{};
 
     const clap_input_events_t in_events_{
         this,
