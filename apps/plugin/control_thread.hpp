@@ -18,7 +18,8 @@ class ControlThread {
     explicit ControlThread(std::function<void()> work) : work_(std::move(work)) {
         thread_ = std::thread([this] {
             std::unique_lock lock(mutex_);
-            while (!cv_.wait_for(lock, std::chrono::milliseconds(kPollMs), [this] { return stop_; })) {
+            while (
+                !cv_.wait_for(lock, std::chrono::milliseconds(kPollMs), [this] { return stop_; })) {
                 lock.unlock();
                 work_();
                 lock.lock();

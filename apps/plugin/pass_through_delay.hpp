@@ -14,7 +14,8 @@ class PassThroughDelay {
     void prepare(int channels, int max_delay_samples) {
         size_ = 1;
         while (size_ <= max_delay_samples) size_ *= 2;
-        lines_.assign(static_cast<size_t>(channels), std::vector<float>(static_cast<size_t>(size_)));
+        lines_.assign(static_cast<size_t>(channels),
+                      std::vector<float>(static_cast<size_t>(size_)));
         write_ = 0;
     }
     void reset() noexcept {

@@ -5,9 +5,10 @@
 // Threads. The host's audio thread calls run() and, often, setParameterValue(); neither
 // allocates, locks or makes a system call: a parameter goes into HostParameters' atomics and
 // the ControlThread hands it to Engine::set (a live parameter glides, a structural one is
-// built there and crossfaded in by the engine). The host's main thread calls activate(),
-// setState(), getState() and loadProgram(); engine_mutex_ keeps it and the control thread off
-// the engine's setup at the same time. The audio thread never takes that mutex.
+// built there and crossfaded in by the engine); a program (a preset read at construction)
+// is stored the same way. The host's main thread calls activate(), setState() and getState();
+// engine_mutex_ keeps it and the control thread off the engine's setup at the same time. The
+// audio thread never takes that mutex.
 //
 // Parameters come from the one table (plugin_params.hpp: index = stable id, 0 = bypass), the
 // state is the engine's TOML (plugin_state.hpp), the programs are presets/*.toml.
@@ -44,6 +45,16 @@ class TactusPlugin : public Plugin {
         : Plugin(tp::parameter_count(), static_cast<uint32_t>(std::size(tp::kFactoryPresets)), 1),
           rows_(tp::parameter_count()) {
         for (uint32_t index = 0; index < rows_.size(); ++index) rows_[index] = tp::param_at(index);
+        // Presets read here, once: a host may select one from its audio thread.
+        for (const tp::FactoryPreset& preset : tp::kFactoryPresets) {
+            tactus::Settings& settings = presets_.emplace_back();
+            try {
+                tactus::apply_preset_text(settings, preset.text, preset.name);
+            } catch (const std::exception& e) {
+                d_stderr2("tactus: %s", e.what());
+                settings = tactus::Settings{};
+            }
+        }
         engine_.set_actuators(std::vector<tactus::ActuatorOutput>(kActuators));
         if (!isDummyInstance())
             control_ = std::make_unique<tp::ControlThread>([this] { take_changes(); });
@@ -85,7 +96,8 @@ class TactusPlugin : public Plugin {
     }
 
     void initParameter(uint32_t index, Parameter& parameter) override {
-        if (index == tp::kBypassIndex) return parameter.initDesignation(kParameterDesignationBypass);
+        if (index == tp::kBypassIndex)
+            return parameter.initDesignation(kParameterDesignationBypass);
         const std::optional<tactus::P> row = rows_[index];
         if (!row) {  // a retired id: kept so that no later id moves
             parameter.name = parameter.symbol = String(fmt::format("retired_{}", index).c_str());
@@ -139,18 +151,12 @@ class TactusPlugin : public Plugin {
             if (const std::optional<tactus::P> row = rows_[index]) host_.set_from_host(*row, value);
     }
 
-    // ---- main thread ----
+    // Any thread (LV2 hosts may select a program from their audio thread): atomics only.
     void loadProgram(uint32_t index) override {
-        const tp::FactoryPreset& preset = tp::kFactoryPresets[index];
-        tactus::Settings settings;
-        try {
-            tactus::apply_preset_text(settings, preset.text, preset.name);
-        } catch (const std::exception& e) {
-            d_stderr2("tactus: %s", e.what());
-            return;
-        }
-        host_.set_all(settings);
+        if (index < presets_.size()) host_.set_all(presets_[index]);
     }
+
+    // ---- main thread ----
     String getState(const char* key) const override {
         if (std::string_view(key) != tp::kStateKey) return String();
         return String(tp::state_text(host_.settings()).c_str());
@@ -166,9 +172,11 @@ class TactusPlugin : public Plugin {
     void activate() override {
         const std::lock_guard lock(engine_mutex_);
         apply_changes();
-        const int block = std::clamp(static_cast<int>(getBufferSize()), 1, tactus::Engine::kMaxBlock);
+        const int block =
+            std::clamp(static_cast<int>(getBufferSize()), 1, tactus::Engine::kMaxBlock);
         try {
-            engine_.prepare({.sample_rate_hz = getSampleRate(), .max_block = block, .channels = kInputs});
+            engine_.prepare(
+                {.sample_rate_hz = getSampleRate(), .max_block = block, .channels = kInputs});
         } catch (const std::exception& e) {  // a sample rate the engine does not run at
             d_stderr2("tactus: %s", e.what());
             prepared_ = false;
@@ -178,8 +186,9 @@ class TactusPlugin : public Plugin {
         block_ = block;
         // The longest look-ahead the table allows, plus the upsampler's few samples.
         const double lookahead_ms = tactus::spec(tactus::P::post_lookahead_ms).max;
-        delay_.prepare(kInputs, static_cast<int>(tactus::ms_to_samples(lookahead_ms, getSampleRate())) +
-                                    kUpsamplerMarginSamples);
+        delay_.prepare(kInputs,
+                       static_cast<int>(tactus::ms_to_samples(lookahead_ms, getSampleRate())) +
+                           kUpsamplerMarginSamples);
         ramp_.prepare(getSampleRate());
         ramp_.reset(bypassed_.load());
         latency_samples_ = engine_.latency();
@@ -197,7 +206,8 @@ class TactusPlugin : public Plugin {
         }
         const bool bypassed = bypassed_.load(std::memory_order_relaxed);
         for (uint32_t done = 0; done < frames;) {
-            const int count = static_cast<int>(std::min<uint32_t>(frames - done, static_cast<uint32_t>(block_)));
+            const int count =
+                static_cast<int>(std::min<uint32_t>(frames - done, static_cast<uint32_t>(block_)));
             // Copied first: hosts may hand the same buffer in and out.
             const float* in[kInputs];
             for (int c = 0; c < kInputs; ++c) {
@@ -240,6 +250,7 @@ class TactusPlugin : public Plugin {
     }
 
     std::vector<std::optional<tactus::P>> rows_;  // host parameter index -> table row
+    std::vector<tactus::Settings> presets_;       // kFactoryPresets, read
     tp::HostParameters host_;
     std::atomic<bool> bypassed_{false};
     tactus::Engine engine_;
@@ -255,6 +266,8 @@ class TactusPlugin : public Plugin {
     DISTRHO_DECLARE_NON_COPYABLE_WITH_LEAK_DETECTOR(TactusPlugin)
 };
 
-Plugin* createPlugin() { return new TactusPlugin(); }
+Plugin* createPlugin() {
+    return new TactusPlugin();
+}
 
 END_NAMESPACE_DISTRHO

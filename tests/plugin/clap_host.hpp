@@ -4,8 +4,6 @@
 // audio-thread process() from the calling thread, in the order the CLAP spec allows.
 #pragma once
 
-#include <dlfcn.h>
-
 #include <clap/entry.h>
 #include <clap/events.h>
 #include <clap/ext/audio-ports.h>
@@ -14,6 +12,7 @@
 #include <clap/ext/state.h>
 #include <clap/plugin-factory.h>
 #include <clap/process.h>
+#include <dlfcn.h>
 
 #include <cstring>
 #include <filesystem>
@@ -35,8 +34,8 @@ class ClapLibrary {
         entry_ = static_cast<const clap_plugin_entry_t*>(dlsym(handle_, "clap_entry"));
         if (!entry_ || !entry_->init(path.c_str()))
             throw std::runtime_error(path.string() + ": no clap_entry, or its init failed");
-        factory_ = static_cast<const clap_plugin_factory_t*>(
-            entry_->get_factory(CLAP_PLUGIN_FACTORY_ID));
+        factory_ =
+            static_cast<const clap_plugin_factory_t*>(entry_->get_factory(CLAP_PLUGIN_FACTORY_ID));
         if (!factory_ || factory_->get_plugin_count(factory_) != 1)
             throw std::runtime_error(path.string() + ": no factory with one plugin");
     }
@@ -61,8 +60,8 @@ class ClapInstance {
   public:
     explicit ClapInstance(const ClapLibrary& library) {
         host_.host_data = this;
-        plugin_ = library.factory()->create_plugin(library.factory(), &host_,
-                                                   library.descriptor()->id);
+        plugin_ =
+            library.factory()->create_plugin(library.factory(), &host_, library.descriptor()->id);
         if (!plugin_ || !plugin_->init(plugin_)) throw std::runtime_error("create_plugin failed");
         params_ = extension<clap_plugin_params_t>(CLAP_EXT_PARAMS);
         state_ = extension<clap_plugin_state_t>(CLAP_EXT_STATE);
@@ -96,7 +95,8 @@ class ClapInstance {
         if (!plugin_->activate(plugin_, sample_rate_hz, 1, max_block))
             throw std::runtime_error("activate failed");
         active_ = true;
-        if (!plugin_->start_processing(plugin_)) throw std::runtime_error("start_processing failed");
+        if (!plugin_->start_processing(plugin_))
+            throw std::runtime_error("start_processing failed");
         processing_ = true;
     }
 
@@ -147,13 +147,14 @@ class ClapInstance {
     }
     bool load_state(const std::string& bytes) {
         std::pair<const std::string*, size_t> source{&bytes, 0};
-        clap_istream_t stream{&source, [](const clap_istream_t* s, void* data, uint64_t size) {
-                                  auto* src = static_cast<std::pair<const std::string*, size_t>*>(s->ctx);
-                                  const size_t n = std::min<size_t>(size, src->first->size() - src->second);
-                                  std::memcpy(data, src->first->data() + src->second, n);
-                                  src->second += n;
-                                  return static_cast<int64_t>(n);
-                              }};
+        clap_istream_t stream{
+            &source, [](const clap_istream_t* s, void* data, uint64_t size) {
+                auto* src = static_cast<std::pair<const std::string*, size_t>*>(s->ctx);
+                const size_t n = std::min<size_t>(size, src->first->size() - src->second);
+                std::memcpy(data, src->first->data() + src->second, n);
+                src->second += n;
+                return static_cast<int64_t>(n);
+            }};
         return state_->load(plugin_, &stream);
     }
 
@@ -180,7 +181,8 @@ class ClapInstance {
         }
         return result;
     }
-    static std::vector<clap_event_param_value_t> events_of(const std::vector<ParamChange>& changes) {
+    static std::vector<clap_event_param_value_t> events_of(
+        const std::vector<ParamChange>& changes) {
         std::vector<clap_event_param_value_t> events;
         for (const ParamChange& c : changes) {
             clap_event_param_value_t e{};
@@ -211,7 +213,8 @@ class ClapInstance {
     const clap_input_events_t in_events_{
         this,
         [](const clap_input_events_t* list) {
-            return static_cast<uint32_t>(static_cast<const ClapInstance*>(list->ctx)->events_.size());
+            return static_cast<uint32_t>(
+                static_cast<const ClapInstance*>(list->ctx)->events_.size());
         },
         [](const clap_input_events_t* list, uint32_t i) {
             return &static_cast<const ClapInstance*>(list->ctx)->events_[i].header;
@@ -224,22 +227,21 @@ class ClapInstance {
         [](const clap_host_t*, clap_param_rescan_flags) {},
         [](const clap_host_t*, clap_id, clap_param_clear_flags) {}, [](const clap_host_t*) {}};
     static inline const clap_host_state_t host_state_{[](const clap_host_t*) {}};
-    clap_host_t host_{
-        CLAP_VERSION_INIT,
-        nullptr,
-        "tactus test host",
-        "tactus",
-        "",
-        "1",
-        [](const clap_host_t*, const char* id) -> const void* {
-            if (!std::strcmp(id, CLAP_EXT_LATENCY)) return &host_latency_;
-            if (!std::strcmp(id, CLAP_EXT_PARAMS)) return &host_params_;
-            if (!std::strcmp(id, CLAP_EXT_STATE)) return &host_state_;
-            return nullptr;
-        },
-        [](const clap_host_t* host) { self(host).restart_requested_ = true; },
-        [](const clap_host_t*) {},
-        [](const clap_host_t*) {}};
+    clap_host_t host_{CLAP_VERSION_INIT,
+                      nullptr,
+                      "tactus test host",
+                      "tactus",
+                      "",
+                      "1",
+                      [](const clap_host_t*, const char* id) -> const void* {
+                          if (!std::strcmp(id, CLAP_EXT_LATENCY)) return &host_latency_;
+                          if (!std::strcmp(id, CLAP_EXT_PARAMS)) return &host_params_;
+                          if (!std::strcmp(id, CLAP_EXT_STATE)) return &host_state_;
+                          return nullptr;
+                      },
+                      [](const clap_host_t* host) { self(host).restart_requested_ = true; },
+                      [](const clap_host_t*) {},
+                      [](const clap_host_t*) {}};
 };
 
 }  // namespace tactus::test

@@ -23,13 +23,13 @@ namespace {
 // between blocks, as a slow offline render does, so the block it starts at is known.
 constexpr auto kControlTime = std::chrono::milliseconds(300);
 
-
 // Runs `sound` through `instance` (activated here) in kBlock blocks; `automation` is flushed
 // between blocks, or sent as events in the block with `as_events`.
-Outputs play(ClapInstance& instance, const Sound& sound, const std::vector<Automation>& automation = {},
-            bool as_events = false) {
+Outputs play(ClapInstance& instance, const Sound& sound,
+             const std::vector<Automation>& automation = {}, bool as_events = false) {
     instance.activate(sound.sample_rate_hz, kBlock);
-    Outputs out(static_cast<size_t>(instance.output_channels()), std::vector<float>(sound.frames()));
+    Outputs out(static_cast<size_t>(instance.output_channels()),
+                std::vector<float>(sound.frames()));
     for (size_t start = 0, block = 0; start < sound.frames(); start += kBlock, ++block) {
         const auto n = static_cast<uint32_t>(std::min<size_t>(kBlock, sound.frames() - start));
         std::vector<ParamChange> events;
@@ -124,20 +124,23 @@ TEST_F(ClapPlugin, AutomationGoesThroughTheEnginesLivePath) {
     const Outputs reference = engine_reference(drums_, automation);
     const size_t from = automation[0].block * kBlock;
     const double d = max_difference(out[0], reference[0]);
-    std::printf("CLAP automated vs Engine::set at the same block: largest difference %.3g; "
-                "vs no automation after it: %.3g\n",
-                d, max_difference(out[0], unchanged[0], from));
+    std::printf(
+        "CLAP automated vs Engine::set at the same block: largest difference %.3g; "
+        "vs no automation after it: %.3g\n",
+        d, max_difference(out[0], unchanged[0], from));
     EXPECT_LE(d, 1e-5);
-    EXPECT_EQ(max_difference(out[0], unchanged[0]) , max_difference(out[0], unchanged[0], from));
+    EXPECT_EQ(max_difference(out[0], unchanged[0]), max_difference(out[0], unchanged[0], from));
     EXPECT_GT(max_difference(out[0], unchanged[0], from), 1e-2);  // the change is heard
     // No step beyond what the drums make anyway: the largest step in the 50 ms after each
     // change is no larger than the unchanged output's largest step anywhere.
     const double own = max_step(unchanged[0], 0, drums_.frames());
     for (const Automation& a : automation) {
         const size_t at = a.block * kBlock;
-        const double step = max_step(out[0], at, at + static_cast<size_t>(0.05 * drums_.sample_rate_hz));
-        std::printf("largest step after the change at %zu: %.4f (unchanged output's largest: %.4f)\n",
-                    at, step, own);
+        const double step =
+            max_step(out[0], at, at + static_cast<size_t>(0.05 * drums_.sample_rate_hz));
+        std::printf(
+            "largest step after the change at %zu: %.4f (unchanged output's largest: %.4f)\n", at,
+            step, own);
         EXPECT_LE(step, own);
     }
 }
@@ -215,12 +218,13 @@ TEST_F(ClapPlugin, BypassRampsInsteadOfClicking) {
     const size_t at = block * kBlock;
     const auto ramp = static_cast<size_t>(0.020 * drums_.sample_rate_hz);
     EXPECT_EQ(max_difference(std::vector<float>(out[0].begin(), out[0].begin() + at),
-                             std::vector<float>(on[0].begin(), on[0].begin() + at)), 0.0);
+                             std::vector<float>(on[0].begin(), on[0].begin() + at)),
+              0.0);
     EXPECT_GT(max_difference(out[0], on[0], at), 0.0);
     for (size_t i = at + ramp + 1; i < drums_.frames(); ++i) ASSERT_EQ(out[0][i], 0.0f) << i;
     const double step = max_step(out[0], at, at + ramp + 2);
-    std::printf("bypass: largest step in the ramp %.4f, the running output's largest %.4f\n",
-                step, max_step(on[0], 0, drums_.frames()));
+    std::printf("bypass: largest step in the ramp %.4f, the running output's largest %.4f\n", step,
+                max_step(on[0], 0, drums_.frames()));
     EXPECT_LE(step, max_step(on[0], 0, drums_.frames()));
     // The music goes on through the bypass.
     for (size_t i = at; i < drums_.frames(); ++i)

@@ -42,16 +42,18 @@ TEST(ClapRealtime, ProcessWithParameterEventsNeitherAllocatesNorLocks) {
         {{id(P::amplitude_curve), 1.0, 0}, {id(P::post_drive_db), 6.0, 100}},
         {{0, 1.0, 3}},  // bypass on
         {{id(P::onset_window_ms), 11.6, 0}, {0, 0.0, 200}},
-        {{id(P::post_flatten_strength), 0.5, 0}},  // a flattening design fitted off the audio thread
-        {{id(P::flutter_weight), 0.5, 0}},         // a component turned on: structural
-        {{id(P::post_lookahead_ms), 3.0, 0}},      // the latency changes
+        {{id(P::post_flatten_strength), 0.5,
+          0}},                                 // a flattening design fitted off the audio thread
+        {{id(P::flutter_weight), 0.5, 0}},     // a component turned on: structural
+        {{id(P::post_lookahead_ms), 3.0, 0}},  // the latency changes
     };
     reset_counts();
     long blocks = 0;
     for (int pass = 0; pass < 3; ++pass)
         for (size_t start = 0, block = 0; start < drums.frames(); start += kBlock, ++block) {
             const auto n = static_cast<uint32_t>(std::min<size_t>(kBlock, drums.frames() - start));
-            const float* in[2] = {drums.channels[0].data() + start, drums.channels[1].data() + start};
+            const float* in[2] = {drums.channels[0].data() + start,
+                                  drums.channels[1].data() + start};
             std::vector<std::vector<float>> out(4, std::vector<float>(n));
             float* o[4] = {out[0].data(), out[1].data(), out[2].data(), out[3].data()};
             const bool send = block % 40 == 10 && (block / 40) < events.size() && pass == 0;

@@ -58,12 +58,14 @@ class Lv2World {
     std::map<std::string, std::string> presets() {
         std::map<std::string, std::string> result;
         LilvNodes* related = lilv_plugin_get_related(plugin_, node(LV2_PRESETS__Preset));
-        LILV_FOREACH (nodes, i, related) {
+        LILV_FOREACH(nodes, i, related) {
             const LilvNode* preset = lilv_nodes_get(related, i);
             lilv_world_load_resource(world_, preset);
-            LilvNodes* labels = lilv_world_find_nodes(world_, preset, node(LILV_NS_RDFS "label"), nullptr);
+            LilvNodes* labels =
+                lilv_world_find_nodes(world_, preset, node(LILV_NS_RDFS "label"), nullptr);
             if (labels && lilv_nodes_size(labels) > 0)
-                result[lilv_node_as_string(lilv_nodes_get_first(labels))] = lilv_node_as_uri(preset);
+                result[lilv_node_as_string(lilv_nodes_get_first(labels))] =
+                    lilv_node_as_uri(preset);
             lilv_nodes_free(labels);
         }
         lilv_nodes_free(related);
@@ -104,12 +106,15 @@ class Lv2Instance {
     Lv2Instance(Lv2World& world, double sample_rate_hz, int max_block)
         : world_(world), rate_(static_cast<float>(sample_rate_hz)), block_(max_block) {
         const LV2_URID atom_int = world.map(LV2_ATOM__Int);
-        options_ = {
-            {LV2_OPTIONS_INSTANCE, 0, world.map(LV2_BUF_SIZE__minBlockLength), sizeof(int32_t), atom_int, &zero_},
-            {LV2_OPTIONS_INSTANCE, 0, world.map(LV2_BUF_SIZE__maxBlockLength), sizeof(int32_t), atom_int, &block_},
-            {LV2_OPTIONS_INSTANCE, 0, world.map(LV2_BUF_SIZE__nominalBlockLength), sizeof(int32_t), atom_int, &block_},
-            {LV2_OPTIONS_INSTANCE, 0, world.map(LV2_PARAMETERS__sampleRate), sizeof(float), world.map(LV2_ATOM__Float), &rate_},
-            {LV2_OPTIONS_INSTANCE, 0, 0, 0, 0, nullptr}};
+        options_ = {{LV2_OPTIONS_INSTANCE, 0, world.map(LV2_BUF_SIZE__minBlockLength),
+                     sizeof(int32_t), atom_int, &zero_},
+                    {LV2_OPTIONS_INSTANCE, 0, world.map(LV2_BUF_SIZE__maxBlockLength),
+                     sizeof(int32_t), atom_int, &block_},
+                    {LV2_OPTIONS_INSTANCE, 0, world.map(LV2_BUF_SIZE__nominalBlockLength),
+                     sizeof(int32_t), atom_int, &block_},
+                    {LV2_OPTIONS_INSTANCE, 0, world.map(LV2_PARAMETERS__sampleRate), sizeof(float),
+                     world.map(LV2_ATOM__Float), &rate_},
+                    {LV2_OPTIONS_INSTANCE, 0, 0, 0, 0, nullptr}};
         features_store_ = {{LV2_URID__map, world.map_feature()},
                            {LV2_URID__unmap, world.unmap_feature()},
                            {LV2_OPTIONS__options, options_.data()},
@@ -161,17 +166,20 @@ class Lv2Instance {
     // One block (0 frames: the plugin only reads its control ports).
     void run(const float* const* in, float* const* out, uint32_t frames) {
         for (uint32_t port : atom_in_) {
-            auto* seq = reinterpret_cast<LV2_Atom_Sequence*>(atoms_.emplace_back(kAtomBytes / 8).data());
+            auto* seq =
+                reinterpret_cast<LV2_Atom_Sequence*>(atoms_.emplace_back(kAtomBytes / 8).data());
             seq->atom = {sizeof(LV2_Atom_Sequence_Body), world_.map(LV2_ATOM__Sequence)};
             lilv_instance_connect_port(instance_, port, seq);
         }
         for (uint32_t port : atom_out_) {
-            auto* seq = reinterpret_cast<LV2_Atom_Sequence*>(atoms_.emplace_back(kAtomBytes / 8).data());
+            auto* seq =
+                reinterpret_cast<LV2_Atom_Sequence*>(atoms_.emplace_back(kAtomBytes / 8).data());
             seq->atom = {kAtomBytes - sizeof(LV2_Atom), world_.map(LV2_ATOM__Chunk)};
             lilv_instance_connect_port(instance_, port, seq);
         }
         for (size_t c = 0; c < audio_in_.size(); ++c)
-            lilv_instance_connect_port(instance_, audio_in_[c], in ? const_cast<float*>(in[c]) : nullptr);
+            lilv_instance_connect_port(instance_, audio_in_[c],
+                                       in ? const_cast<float*>(in[c]) : nullptr);
         for (size_t c = 0; c < audio_out_.size(); ++c)
             lilv_instance_connect_port(instance_, audio_out_[c], out ? out[c] : nullptr);
         lilv_instance_run(instance_, frames);
@@ -212,7 +220,8 @@ class Lv2Instance {
 
   private:
     // The worker, run at once on the calling thread (DPF schedules work only for UI messages).
-    static LV2_Worker_Status schedule(LV2_Worker_Schedule_Handle self, uint32_t size, const void* data) {
+    static LV2_Worker_Status schedule(LV2_Worker_Schedule_Handle self, uint32_t size,
+                                      const void* data) {
         auto* me = static_cast<Lv2Instance*>(self);
         const auto* iface = static_cast<const LV2_Worker_Interface*>(
             lilv_instance_get_extension_data(me->instance_, LV2_WORKER__interface));

@@ -29,8 +29,10 @@ std::string symbol(P id) {
 
 // Runs `sound` through an activated `instance` in kBlock blocks; before block a.block, the
 // automation's control ports are set, read by a run of 0 frames, and given kControlTime.
-Outputs play(Lv2Instance& instance, const Sound& sound, const std::vector<Automation>& automation = {}) {
-    Outputs out(static_cast<size_t>(instance.output_channels()), std::vector<float>(sound.frames()));
+Outputs play(Lv2Instance& instance, const Sound& sound,
+             const std::vector<Automation>& automation = {}) {
+    Outputs out(static_cast<size_t>(instance.output_channels()),
+                std::vector<float>(sound.frames()));
     for (size_t start = 0, block = 0; start < sound.frames(); start += kBlock, ++block) {
         for (const Automation& a : automation)
             if (a.block == block) {
@@ -53,7 +55,8 @@ class Lv2Plugin : public Cli {
     Sound render_cli(const std::string& options) {
         const auto out = dir_ / "reference.wav";
         EXPECT_EQ(run("render " + kDrums.string() + " -o " + out.string() + " --force " + options)
-                      .exit_code, 0);
+                      .exit_code,
+                  0);
         return read_sound(out);
     }
     Lv2World world_{TACTUS_PLUGIN_LV2};

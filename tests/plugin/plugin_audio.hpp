@@ -28,8 +28,8 @@ inline Sound read_sound(const std::filesystem::path& path) {
     ChannelBlock block(reader.channels(), 4096);
     for (int n; (n = reader.read(block.data(), 4096)) > 0;)
         for (int c = 0; c < reader.channels(); ++c)
-            sound.channels[static_cast<size_t>(c)].insert(sound.channels[static_cast<size_t>(c)].end(),
-                                                           block[c], block[c] + n);
+            sound.channels[static_cast<size_t>(c)].insert(
+                sound.channels[static_cast<size_t>(c)].end(), block[c], block[c] + n);
     return sound;
 }
 

@@ -47,7 +47,8 @@ inline Outputs engine_reference(const Sound& sound, const std::vector<Automation
 }
 
 // The block just before the loudest vibration in [from_s, to_s): a change there lands on a hit.
-inline size_t block_before_peak(const std::vector<float>& x, double rate_hz, double from_s, double to_s) {
+inline size_t block_before_peak(const std::vector<float>& x, double rate_hz, double from_s,
+                                double to_s) {
     size_t peak = static_cast<size_t>(from_s * rate_hz);
     for (size_t i = peak; i < static_cast<size_t>(to_s * rate_hz); ++i)
         if (std::abs(x[i]) > std::abs(x[peak])) peak = i;

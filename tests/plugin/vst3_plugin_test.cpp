@@ -30,7 +30,8 @@ TEST(Vst3Plugin, TheControllerListsTheTableByStableId) {
     ASSERT_NE(module, nullptr) << dlerror();
     auto entry = reinterpret_cast<bool (*)(void*)>(dlsym(module, "ModuleEntry"));
     auto exit = reinterpret_cast<bool (*)()>(dlsym(module, "ModuleExit"));
-    auto get_factory = reinterpret_cast<v3_plugin_factory** (*)()>(dlsym(module, "GetPluginFactory"));
+    auto get_factory =
+        reinterpret_cast<v3_plugin_factory** (*)()>(dlsym(module, "GetPluginFactory"));
     ASSERT_TRUE(entry && exit && get_factory);
     ASSERT_TRUE(entry(module));
     v3_plugin_factory** factory = get_factory();
@@ -42,7 +43,8 @@ TEST(Vst3Plugin, TheControllerListsTheTableByStableId) {
 
     v3_component** component = nullptr;
     ASSERT_EQ(v3_cpp_obj(factory)->create_instance(factory, info.class_id, v3_component_iid,
-                                                   reinterpret_cast<void**>(&component)), V3_OK);
+                                                   reinterpret_cast<void**>(&component)),
+              V3_OK);
     ASSERT_EQ(v3_cpp_obj_initialize(component, nullptr), V3_OK);
     // Without a UI, DPF's component is its own edit controller (a host asks it first).
     v3_edit_controller** controller = nullptr;
@@ -74,13 +76,16 @@ TEST(Vst3Plugin, TheControllerListsTheTableByStableId) {
             EXPECT_EQ(p.step_count, static_cast<int32_t>(std::lround(s.max - s.min))) << s.key;
         }
         const double plain =
-            v3_cpp_obj(controller)->normalised_parameter_to_plain(controller, p.param_id,
-                                                                  p.default_normalised_value);
-        EXPECT_NEAR(plain, s.default_value, 1e-6 * (s.max - s.min)) << s.key;  // normalised in floats
+            v3_cpp_obj(controller)
+                ->normalised_parameter_to_plain(controller, p.param_id, p.default_normalised_value);
+        EXPECT_NEAR(plain, s.default_value, 1e-6 * (s.max - s.min))
+            << s.key;  // normalised in floats
         ++listed;
     }
-    std::printf("VST3 controller: %d parameters; the bypass at id %d, the table's %d at their "
-                "stable id + %d\n", count, offset, listed, offset);
+    std::printf(
+        "VST3 controller: %d parameters; the bypass at id %d, the table's %d at their "
+        "stable id + %d\n",
+        count, offset, listed, offset);
 
     v3_cpp_obj_unref(controller);
     v3_cpp_obj_terminate(component);
