@@ -45,16 +45,20 @@ class TactusPlugin : public Plugin {
         : Plugin(tp::parameter_count(), static_cast<uint32_t>(std::size(tp::kFactoryPresets)), 1),
           rows_(tp::parameter_count()) {
         for (uint32_t index = 0; index < rows_.size(); ++index) rows_[index] = tp::param_at(index);
-        // Presets read here, once: a host may select one from its audio thread.
+        // Presets read here, once: a host may select one from its audio thread. The one that
+        // is the table's defaults comes first (program 0, which some hosts load at start).
         for (const tp::FactoryPreset& preset : tp::kFactoryPresets) {
-            tactus::Settings& settings = presets_.emplace_back();
+            Program& program = programs_.emplace_back(Program{preset.name, {}});
             try {
-                tactus::apply_preset_text(settings, preset.text, preset.name);
+                tactus::apply_preset_text(program.settings, preset.text, preset.name);
             } catch (const std::exception& e) {
                 d_stderr2("tactus: %s", e.what());
-                settings = tactus::Settings{};
+                program.settings = tactus::Settings{};
             }
         }
+        std::stable_partition(programs_.begin(), programs_.end(), [](const Program& p) {
+            return tp::state_text(p.settings) == tp::state_text(tactus::Settings{});
+        });
         engine_.set_actuators(std::vector<tactus::ActuatorOutput>(kActuators));
         if (!isDummyInstance())
             control_ = std::make_unique<tp::ControlThread>([this] { take_changes(); });
@@ -130,7 +134,7 @@ class TactusPlugin : public Plugin {
     }
 
     void initProgramName(uint32_t index, String& name) override {
-        name = String(std::string(tp::kFactoryPresets[index].name).c_str());
+        name = String(std::string(programs_[index].name).c_str());
     }
     void initState(uint32_t, State& state) override {
         state.key = tp::kStateKey;
@@ -153,7 +157,7 @@ class TactusPlugin : public Plugin {
 
     // Any thread (LV2 hosts may select a program from their audio thread): atomics only.
     void loadProgram(uint32_t index) override {
-        if (index < presets_.size()) host_.set_all(presets_[index]);
+        if (index < programs_.size()) host_.set_all(programs_[index].settings);
     }
 
     // ---- main thread ----
@@ -250,7 +254,11 @@ class TactusPlugin : public Plugin {
     }
 
     std::vector<std::optional<tactus::P>> rows_;  // host parameter index -> table row
-    std::vector<tactus::Settings> presets_;       // kFactoryPresets, read
+    struct Program {
+        std::string_view name;
+        tactus::Settings settings;
+    };
+    std::vector<Program> programs_;  // kFactoryPresets, read; the defaults first
     tp::HostParameters host_;
     std::atomic<bool> bypassed_{false};
     tactus::Engine engine_;
