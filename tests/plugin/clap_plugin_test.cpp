@@ -19,9 +19,10 @@ namespace tactus::test {
 namespace {
 
 // A host change reaches the engine through the plugin's control thread (within a
-// millisecond, a structural one once its pipeline is built): this host gives it that time
-// between blocks, as a slow offline render does, so the block it starts at is known.
-constexpr auto kControlTime = std::chrono::milliseconds(300);
+// millisecond; a structural one once its pipeline is built, about 25 ms here): this host gives
+// it a second between blocks, room for a loaded machine, as a slow offline render does, so the
+// block it starts at is known.
+constexpr auto kControlTime = std::chrono::milliseconds(1000);
 
 // Runs `sound` through `instance` (activated here) in kBlock blocks; `automation` is flushed
 // between blocks, or sent as events in the block with `as_events`.

@@ -18,7 +18,7 @@ namespace tactus::test {
 namespace {
 
 // Time the plugin's control thread gets to take a change to the engine (see the CLAP test).
-constexpr auto kControlTime = std::chrono::milliseconds(300);
+constexpr auto kControlTime = std::chrono::milliseconds(1000);
 
 std::string symbol(P id) {
     std::string s(spec(id).key);
