@@ -70,16 +70,22 @@ class PdExternal : public Cli {
         ASSERT_NO_FATAL_FAILURE(write_sound_file(dir_ / "in.wav", input_, kRateHz));
     }
 
-    // Runs the test patch with these messages to tactus~ before the start (and `at`, a message
-    // after it); returns the three outputs (actuator 0, actuator 1, thru) and Pd's stderr.
+    // Runs the test patch with these messages to tactus~ before the start, and `score`, lines
+    // of timed messages after it ("MS tactus-msg KEY VALUE;", each MS after the one before);
+    // returns the three outputs (actuator 0, actuator 1, thru) and keeps Pd's stderr.
     std::vector<std::vector<float>> run_pd(const std::vector<std::string>& messages,
-                                           const std::string& at = "") {
-        std::string command = std::string(TACTUS_PD) + " -nogui -batch -noaudio -r " +
+                                           const std::string& score = "",
+                                           const std::string& prefix = "") {
+        const std::filesystem::path guard_dir = std::filesystem::path(TACTUS_PD_GUARD).parent_path();
+        std::string command = prefix + TACTUS_PD + " -nogui -batch -noaudio -r " +
                               std::to_string(static_cast<int>(kRateHz)) + " -path " +
-                              TACTUS_PD_DIR + "/.. -open " + TACTUS_SOURCE_DIR +
-                              "/tests/pd/render_through.pd";
+                              TACTUS_PD_DIR + "/.. -path " + guard_dir.string() + " -open " +
+                              TACTUS_SOURCE_DIR + "/tests/pd/render_through.pd";
         for (const std::string& m : messages) command += " -send \"tactus-msg " + m + "\"";
-        if (!at.empty()) command += " -send \"tactus-at " + at + "\"";
+        if (!score.empty()) {
+            std::ofstream(dir_ / "score.txt") << score;
+            command += " -send \"tactus-score symbol " + (dir_ / "score.txt").string() + "\"";
+        }
         command += " -send \"tactus-out symbol " + (dir_ / "pd.wav").string() + "\"";
         command += " -send \"tactus-in symbol " + (dir_ / "in.wav").string() + "\"";
         command += " 2>" + (dir_ / "pd.txt").string();
@@ -145,7 +151,7 @@ TEST_F(PdExternal, AMessageMidFileActsAsTheEnginesSetFromItsBlock) {
                                           [](float a, float b) { return std::abs(a) < std::abs(b); });
     const int block = static_cast<int>((loudest - unchanged.begin()) / kPdBlock) - 1;
     const double at_ms = (block + 0.5) * kPdBlock / kRateHz * 1000;
-    const auto pd = run_pd({}, fmt::format("{:.6f} post.drive_db 3", at_ms));
+    const auto pd = run_pd({}, fmt::format("{:.6f} tactus-msg post.drive_db 3;", at_ms));
     ASSERT_EQ(pd.size(), 3u) << pd_log_;
 
     Engine engine;
@@ -196,6 +202,27 @@ TEST_F(PdExternal, BadMessagesSayWhyAndChangeNothing) {
           "no-such-actuator", "gain: outlet 5", "trigger"})
         EXPECT_NE(pd_log_.find(expected), std::string::npos) << expected << "\n" << pd_log_;
     EXPECT_LE(largest_difference(pd[0], render()), kTolerance);
+}
+
+// perform() runs the engine and copies: no allocation and no lock, while live and structural
+// parameters, a preset, gains and triggers arrive mid-file.
+TEST_F(PdExternal, PerformNeitherAllocatesNorLocks) {
+    const std::string score =
+        "100 tactus-msg post.drive_db 3; 100 tactus-msg envelope.decay_ms 60;"
+        "100 tactus-msg mapping.frequency.curve lin; 100 tactus-msg analysis.hop_ms 5;"
+        "100 tactus-msg preset four-channel; 100 tactus-msg gain 1 -12;"
+        "100 tactus-msg trigger 80 0.5; 100 tactus-msg flutter.weight 0;";
+    const auto pd = run_pd({}, score, std::string("LD_PRELOAD=") + TACTUS_PD_GUARD + " ");
+    ASSERT_EQ(pd.size(), 3u) << pd_log_;
+    long performs = -1, allocations = -1, locks = -1;
+    const size_t at = pd_log_.rfind("perform-guard:");
+    ASSERT_NE(at, std::string::npos) << pd_log_;
+    ASSERT_EQ(std::sscanf(pd_log_.c_str() + at, "perform-guard: performs=%ld allocations=%ld locks=%ld",
+                          &performs, &allocations, &locks), 3);
+    EXPECT_GE(performs, static_cast<long>(input_.size() / kPdBlock));
+    EXPECT_EQ(allocations, 0);
+    EXPECT_EQ(locks, 0);
+    EXPECT_GT(largest_difference(pd[0], render()), 0.01f);  // the messages arrived
 }
 
 // The help and example patches, as installed beside the external, open with every object made.
