@@ -245,6 +245,9 @@ class TactusPlugin : public Plugin {
     }
     void apply_changes() {  // engine_mutex_ held
         host_.take_changes([this](tactus::P id, double value) {
+            // A restored state or a program sets every parameter: only the ones that differ
+            // reach the engine (a structural one builds a pipeline even for the same value).
+            if (engine_.settings()[id] == value) return;
             try {
                 engine_.set(id, value);
             } catch (const std::exception& e) {
