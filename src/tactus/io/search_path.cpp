@@ -1,6 +1,8 @@
 #include "tactus/io/search_path.hpp"
 
+#include <dlfcn.h>
 #include <fmt/format.h>
+#include <link.h>
 
 #include <cstdlib>
 #include <stdexcept>
@@ -11,9 +13,31 @@
 namespace tactus {
 
 std::filesystem::path installed_data_dir() {
+    namespace fs = std::filesystem;
     std::error_code error;
-    const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", error);
-    if (error) return {};
+    const fs::path program = fs::read_symlink("/proc/self/exe", error);
+    // Linked into a module another program loads (a Python module, a plugin): the first folder
+    // above the module that holds share/tactus.
+    Dl_info module{};
+    link_map* module_map = nullptr;
+    link_map* program_map = nullptr;
+    if (void* self = dlopen(nullptr, RTLD_LAZY)) {
+        dlinfo(self, RTLD_DI_LINKMAP, &program_map);
+        dlclose(self);
+    }
+    if (dladdr1(reinterpret_cast<const void*>(&installed_data_dir), &module,
+                reinterpret_cast<void**>(&module_map), RTLD_DL_LINKMAP) &&
+        module_map && module_map != program_map && module.dli_fname && *module.dli_fname) {
+        std::error_code unreadable;
+        const fs::path file = fs::weakly_canonical(module.dli_fname, unreadable);
+        for (fs::path dir = file.parent_path(); !unreadable && dir != dir.root_path();
+             dir = dir.parent_path()) {
+            std::error_code missing;
+            if (fs::is_directory(dir / "share" / "tactus", missing))
+                return dir / "share" / "tactus";
+        }
+    }
+    if (program.empty()) return {};
     return program.parent_path().parent_path() / "share" / "tactus";
 }
 
