@@ -9,6 +9,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   sonic-pi-samples aubio-tools sox puredata-core puredata-extra time
   python3 python3-numpy python3-scipy python3-soundfile python3-mir-eval
+  python3-dev pybind11-dev python3-pytest python3-matplotlib python3-distributed
+  vamp-plugin-sdk vamp-examples
 )
 
 missing=()
