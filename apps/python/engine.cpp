@@ -73,7 +73,7 @@ class PyEngine {
         if (!keep_frames_) throw py::value_error("frames(): make the engine with keep_frames=True");
         const std::unique_lock running(processing_);
         const double rate = engine_->sample_rate_hz();
-        constexpr size_t kColumns = 19;  // AnalysisRows::kColumns up to the sensation levels
+        constexpr size_t kColumns = AnalysisRows::kFrameColumns;
         py::dict out;
         std::vector<py::array_t<double>> columns;
         for (size_t c = 0; c < kColumns; ++c) {
@@ -81,27 +81,7 @@ class PyEngine {
             out[py::str(std::string(AnalysisRows::kColumns[c]))] = columns.back();
         }
         for (size_t r = 0; r < frames_.size(); ++r) {
-            const Features& f = frames_[r].features;
-            const ControlFrame& c = frames_[r].control;
-            const double row[kColumns] = {f.frame_end_sample / rate,
-                                          f.loudness_db,
-                                          f.brightness_hz,
-                                          f.noisiness,
-                                          f.pitch_hz,
-                                          f.pitch_confidence,
-                                          f.onset_odf,
-                                          f.onset ? 1.0 : 0.0,
-                                          f.onset ? f.onset_sample / rate : 0.0,
-                                          c.frequency_hz,
-                                          c.amplitude,
-                                          c.square_mix,
-                                          c.trigger ? 1.0 : 0.0,
-                                          c.attack_ms,
-                                          c.decay_ms,
-                                          c.sustain,
-                                          c.flutter_hz,
-                                          c.flutter_amplitude,
-                                          c.pressure};
+            const AnalysisRows::Row row = AnalysisRows::row_of(frames_[r], rate);
             for (size_t k = 0; k < kColumns; ++k) columns[k].mutable_data()[r] = row[k];
         }
         frames_.clear();

@@ -4,9 +4,32 @@
 #include <utility>
 
 namespace tactus {
-namespace {
-constexpr size_t kMeterColumns = perception::kChannels.size() + 1;  // and the combined level
-}  // namespace
+static_assert(AnalysisRows::kColumns.size() - AnalysisRows::kFrameColumns ==
+              perception::kChannels.size() + 1);  // and the combined level
+
+AnalysisRows::Row AnalysisRows::row_of(const AnalysisFrame& frame, double sample_rate_hz) {
+    const Features& f = frame.features;
+    const ControlFrame& c = frame.control;
+    return {f.frame_end_sample / sample_rate_hz,
+            f.loudness_db,
+            f.brightness_hz,
+            f.noisiness,
+            f.pitch_hz,
+            f.pitch_confidence,
+            f.onset_odf,
+            f.onset ? 1.0 : 0.0,
+            f.onset ? f.onset_sample / sample_rate_hz : 0.0,
+            c.frequency_hz,
+            c.amplitude,
+            c.square_mix,
+            c.trigger ? 1.0 : 0.0,
+            c.attack_ms,
+            c.decay_ms,
+            c.sustain,
+            c.flutter_hz,
+            c.flutter_amplitude,
+            c.pressure};
+}
 
 AnalysisRows::AnalysisRows(const Engine& engine, ActuatorProfile actuator,
                            std::function<void(const Row&)> on_row)
@@ -19,17 +42,9 @@ void AnalysisRows::start(double sample_rate_hz) {
 }
 
 void AnalysisRows::take_frames(Engine& engine) {
-    const double sample_rate_hz = engine_.sample_rate_hz();
     for (AnalysisFrame frame; engine.pop_frame(frame);) {
-        const Features& f = frame.features;
-        const ControlFrame& c = frame.control;
-        pending_.push_back({f.frame_end_sample / sample_rate_hz, f.loudness_db, f.brightness_hz,
-                            f.noisiness, f.pitch_hz, f.pitch_confidence, f.onset_odf,
-                            f.onset ? 1.0 : 0.0, f.onset ? f.onset_sample / sample_rate_hz : 0.0,
-                            c.frequency_hz, c.amplitude, c.square_mix, c.trigger ? 1.0 : 0.0,
-                            c.attack_ms, c.decay_ms, c.sustain, c.flutter_hz, c.flutter_amplitude,
-                            c.pressure});
-        onsets_ += f.onset;
+        pending_.push_back(row_of(frame, engine_.sample_rate_hz()));
+        onsets_ += frame.features.onset;
     }
 }
 
@@ -53,7 +68,7 @@ void AnalysisRows::write_rows_up_to(double samples) {
             current_ = readings_.front();
             readings_.pop_front();
         }
-        const size_t first = values.size() - kMeterColumns;
+        const size_t first = kFrameColumns;
         for (size_t i = 0; i < current_.level_db.size(); ++i)
             values[first + i] = current_.level_db[i];
         values[first + current_.level_db.size()] = current_.combined_db;

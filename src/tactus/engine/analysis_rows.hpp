@@ -27,6 +27,11 @@ class AnalysisRows {
         "flutter_hz",   "flutter_amplitude", "pressure",      "P_sl_db",
         "NPI_sl_db",    "NPII_sl_db",        "NPIII_sl_db",   "combined_sl_db"};
     using Row = std::array<double, kColumns.size()>;
+    // The frame's own columns (features and vibration program) come first, the sensation levels
+    // (four channels and combined) last.
+    static constexpr size_t kFrameColumns = kColumns.size() - 5;
+    // A frame's own columns; the sensation levels 0.
+    static Row row_of(const AnalysisFrame& frame, double sample_rate_hz);
 
     // `engine` must have its frame queue enabled; `actuator` turns the vibration into skin
     // displacement for the meter.
