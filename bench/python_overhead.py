@@ -15,6 +15,7 @@ plus the one-off `import tactus` in a fresh /usr/bin/python3. The module must be
 """
 import argparse
 import pathlib
+import resource
 import statistics
 import subprocess
 import sys
@@ -25,13 +26,22 @@ from compare import LOOPS, looped
 import tactus
 
 
+def cpu_s():
+    """CPU seconds (user + system) of this process and of its finished children."""
+    own = resource.getrusage(resource.RUSAGE_SELF)
+    children = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return own.ru_utime + own.ru_stime + children.ru_utime + children.ru_stime
+
+
+def timed(work):
+    """(wall seconds, CPU seconds) of one run of work()."""
+    wall, cpu = time.perf_counter(), cpu_s()
+    work()
+    return time.perf_counter() - wall, cpu_s() - cpu
+
+
 def median_s(runs, work):
-    times = []
-    for _ in range(runs):
-        start = time.perf_counter()
-        work()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
+    return statistics.median(timed(work)[0] for _ in range(runs))
 
 
 def main():
@@ -61,17 +71,20 @@ def main():
                 "python": lambda: tactus.write(out, tactus.render(*tactus.read(flac)), rate),
                 "cli-wav": lambda: run(cli, "render", decoded, "-o", out, "--force"),
                 "render": lambda: tactus.render(x, rate)}.items():
-            timings.setdefault(name, []).append(median_s(1, job))
-    m = {name: statistics.median(t) for name, t in timings.items()}
+            timings.setdefault(name, []).append(timed(job))
+    wall = {name: statistics.median(w for w, _ in t) for name, t in timings.items()}
+    cpu = {name: statistics.median(c for _, c in t) for name, t in timings.items()}
     print(f"10-minute file: {seconds / 60:.2f} min at {rate:g} Hz, {x.shape[1]} channels; "
-          f"median of {args.runs} runs")
-    print(f"  cli      tactus render FLAC -> WAV        {m['cli']:.3f} s  "
-          f"({seconds / m['cli']:.0f}x real time)")
-    print(f"  python   read + render + write (module)  {m['python']:.3f} s  "
-          f"({seconds / m['python']:.0f}x real time)  {m['python'] / m['cli']:.2f}x the cli")
-    print(f"  cli-wav  tactus render float WAV -> WAV  {m['cli-wav']:.3f} s")
-    print(f"  render   tactus.render on the array      {m['render']:.3f} s  "
-          f"({seconds / m['render']:.0f}x real time)  {m['render'] / m['cli-wav']:.2f}x cli-wav")
+          f"median of {args.runs} runs, wall and CPU (user + system) seconds")
+    rows = [("cli", "tactus render FLAC -> WAV", "cli"),
+            ("python", "read + render + write (module)", "cli"),
+            ("cli-wav", "tactus render float WAV -> WAV", "cli-wav"),
+            ("render", "tactus.render on the array", "cli-wav")]
+    for name, label, against in rows:
+        ratio = "" if name == against else (f"  {wall[name] / wall[against]:.2f}x / "
+                                            f"{cpu[name] / cpu[against]:.2f}x {against}")
+        print(f"  {name:<8} {label:<32} wall {wall[name]:.3f} s  cpu {cpu[name]:.3f} s  "
+              f"({seconds / wall[name]:.0f}x real time){ratio}")
     print(f"  import tactus (fresh interpreter, less `python3 -c pass`): "
           f"{import_s - base_s:.3f} s")
     out.unlink(missing_ok=True)

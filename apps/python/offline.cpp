@@ -6,6 +6,9 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <limits>
+#include <optional>
+
 #include "audio_view.hpp"
 #include "settings.hpp"
 #include "tactus/dsp/downmix.hpp"
@@ -180,10 +183,27 @@ py::dict meter(const py::handle& vibration, double sample_rate_hz, const std::st
     return columns(names, rows);
 }
 
-py::tuple read(const std::filesystem::path& path) {
+// Decodes into `out`'s channels (allocated for the header's length): false if the file holds more
+// frames than its header says (some compressed formats only estimate it).
+bool read_into(AudioReader& reader, AudioOutput& out, int& frames) {
+    const int channels = reader.channels(), expected = frames;
+    std::vector<float*> at(static_cast<size_t>(channels));
+    for (frames = 0; frames < expected;) {
+        for (int c = 0; c < channels; ++c) at[c] = out.pointers[c] + frames;
+        const int got = reader.read(at.data(), std::min(kBlock, expected - frames));
+        if (got == 0) return true;
+        frames += got;
+    }
+    ChannelBlock beyond(channels, 1);
+    return reader.read(beyond.data(), 1) == 0;
+}
+
+// A file whose header does not say its length, or says too little: decoded into growing buffers,
+// then copied once.
+py::tuple read_growing(const std::filesystem::path& path) {
     std::vector<std::vector<float>> channels;
     double sample_rate_hz = 0;
-    try {
+    {
         const py::gil_scoped_release unlocked;
         AudioReader reader(path);
         sample_rate_hz = reader.sample_rate_hz();
@@ -192,14 +212,45 @@ py::tuple read(const std::filesystem::path& path) {
         while (const int got = reader.read(block.data(), kBlock))
             for (int c = 0; c < reader.channels(); ++c)
                 channels[c].insert(channels[c].end(), block[c], block[c] + got);
-    } catch (const std::runtime_error& e) {
-        throw py::value_error(e.what());
     }
+    if (channels[0].empty())
+        throw std::runtime_error(fmt::format("{}: no audio frames", path.string()));
+    if (channels[0].size() > static_cast<size_t>(std::numeric_limits<int>::max()))
+        throw std::runtime_error(fmt::format("{}: more than 2^31 frames", path.string()));
     AudioOutput out =
         audio_output(static_cast<int>(channels[0].size()), static_cast<int>(channels.size()));
     for (size_t c = 0; c < channels.size(); ++c)
         std::copy(channels[c].begin(), channels[c].end(), out.pointers[c]);
     return py::make_tuple(out.array, sample_rate_hz);
+}
+
+py::tuple read(const std::filesystem::path& path) {
+    try {
+        std::optional<AudioOutput> out;
+        int frames = 0;
+        double sample_rate_hz = 0;
+        {
+            AudioReader reader(path);
+            sample_rate_hz = reader.sample_rate_hz();
+            if (reader.frames() <= 0 || reader.frames() > std::numeric_limits<int>::max())
+                return read_growing(path);
+            frames = static_cast<int>(reader.frames());
+            out.emplace(audio_output(frames, reader.channels()));
+            bool complete = false;
+            {
+                const py::gil_scoped_release unlocked;
+                complete = read_into(reader, *out, frames);
+            }
+            if (!complete) return read_growing(path);
+        }
+        if (frames == 0)
+            throw std::runtime_error(fmt::format("{}: no audio frames", path.string()));
+        if (frames < out->array.shape(0))  // a header that promised more (a view of what came)
+            return py::make_tuple(out->array[py::slice(0, frames, 1)], sample_rate_hz);
+        return py::make_tuple(out->array, sample_rate_hz);
+    } catch (const std::runtime_error& e) {
+        throw py::value_error(e.what());
+    }
 }
 
 void write(const std::filesystem::path& path, const py::handle& x, double sample_rate_hz) {
