@@ -71,7 +71,7 @@ class PyEngine {
     // The frames analysed since the last call: the first columns of tactus.analyze().
     py::dict frames() {
         if (!keep_frames_) throw py::value_error("frames(): make the engine with keep_frames=True");
-        const std::unique_lock running(processing_);
+        const auto running = wait_for_process();
         const double rate = engine_->sample_rate_hz();
         constexpr size_t kColumns = AnalysisRows::kFrameColumns;
         py::dict out;
@@ -115,7 +115,7 @@ class PyEngine {
     }
 
     void reset() {
-        const std::unique_lock running(processing_);
+        const auto running = wait_for_process();
         engine_->reset();
         frames_.clear();
     }
@@ -125,6 +125,15 @@ class PyEngine {
     int actuators() const { return actuators_; }
 
   private:
+    // Waits for a process() running in another thread, without the GIL (which that thread takes
+    // back before it lets go of the engine).
+    std::unique_lock<std::mutex> wait_for_process() {
+        std::unique_lock running(processing_, std::defer_lock);
+        const py::gil_scoped_release unlocked;
+        running.lock();
+        return running;
+    }
+
     std::unique_ptr<Engine> engine_;
     int channels_, actuators_;
     bool keep_frames_;

@@ -172,3 +172,25 @@ def test_bad_values_are_refused_and_change_nothing():
     assert engine.post_drive_db == tactus.Engine(48000).post_drive_db
     with pytest.raises(ValueError, match="sample rate"):
         tactus.Engine(1000)
+
+
+def test_process_in_one_thread_frames_and_set_in_another(amen_audio):
+    import threading
+    x, rate = amen_audio
+    long = np.asfortranarray(np.tile(x, (10, 1)))
+    engine = tactus.Engine(rate, channels=2, keep_frames=True)
+    thread = threading.Thread(target=engine.process, args=(long,))
+    thread.start()
+    frames, refused = 0, False
+    while thread.is_alive():
+        frames += len(engine.frames()["time_s"])  # waits for the running block, GIL released
+        engine.envelope_decay_ms = 120.0  # the control thread, while audio runs
+        try:
+            engine.process(x[:64])
+        except ValueError as error:
+            refused = "already running" in str(error)
+    thread.join(timeout=60)
+    assert not thread.is_alive()
+    frames += len(engine.frames()["time_s"])
+    assert frames == len(long) // engine.hop_samples
+    assert refused, "a second process() while one runs is refused"
