@@ -176,19 +176,21 @@ def test_bad_values_are_refused_and_change_nothing():
 
 def test_process_in_one_thread_frames_and_set_in_another(amen_audio):
     import threading
+    import time
     x, rate = amen_audio
     long = np.asfortranarray(np.tile(x, (10, 1)))
     engine = tactus.Engine(rate, channels=2, keep_frames=True)
     thread = threading.Thread(target=engine.process, args=(long,))
     thread.start()
+    time.sleep(0.2)  # well inside the long block (a second or more)
     frames, refused = 0, False
     while thread.is_alive():
-        frames += len(engine.frames()["time_s"])  # waits for the running block, GIL released
-        engine.envelope_decay_ms = 120.0  # the control thread, while audio runs
         try:
             engine.process(x[:64])
         except ValueError as error:
             refused = "already running" in str(error)
+        engine.envelope_decay_ms = 120.0  # the control thread, while audio runs
+        frames += len(engine.frames()["time_s"])  # waits for process() without the GIL
     thread.join(timeout=60)
     assert not thread.is_alive()
     frames += len(engine.frames()["time_s"])
