@@ -9,9 +9,13 @@ TACTUS := $(BUILD)/bin/tactus
 setup:
 	bash scripts/setup.sh
 
+# The build also lets /usr/bin/python3 import tactus from it (a tactus.pth in the user's
+# site-packages, apps/python/use_build_tree.sh).
 build: setup
 	cmake --preset release -DTACTUS_BUILD_TESTS=ON
 	cmake --build --preset release -j $(JOBS)
+	if [ -d $(BUILD)/python/tactus ]; then \
+	  bash apps/python/use_build_tree.sh /usr/bin/python3 $(BUILD)/python; fi
 
 demo: build
 	mkdir -p out

@@ -4,9 +4,6 @@
 // Streams: constant memory for any length.
 #include <fmt/format.h>
 
-#include <array>
-#include <cmath>
-#include <deque>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -15,9 +12,9 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "pipeline_options.hpp"
+#include "tactus/engine/analysis_rows.hpp"
 #include "tactus/io/actuator_file.hpp"
 #include "tactus/io/text_output.hpp"
-#include "tactus/perception/meter.hpp"
 
 namespace tactus::cli {
 namespace {
@@ -28,108 +25,39 @@ struct AnalyzeOptions {
     PipelineOptions pipeline;
 };
 
-constexpr const char* kColumns[] = {
-    "time_s",    "loudness_db", "brightness_hz", "noisiness",    "pitch_hz",    "pitch_confidence",
-    "onset_odf", "onset",       "onset_time_s",  "frequency_hz", "amplitude",   "square_mix",
-    "trigger",   "attack_ms",   "decay_ms",      "sustain",      "flutter_hz",  "flutter_amplitude",
-    "pressure",  "P_sl_db",     "NPI_sl_db",     "NPII_sl_db",   "NPIII_sl_db", "combined_sl_db"};
-constexpr size_t kMeterColumns = 5;
-using Row = std::array<double, std::size(kColumns)>;
-
-// Holds each frame's row until the meter has seen the vibration up to the frame's time. The
-// frames come off the engine's frame queue between process() calls, as a live front end takes
-// them (nothing is stored from inside process()).
-class FrameWriter {
+// Writes AnalysisRows as CSV or JSON.
+class RowWriter {
   public:
-    FrameWriter(std::ostream& out, bool json, const Engine& engine, ActuatorProfile actuator)
-        : out_(out), json_(json), engine_(engine), actuator_(std::move(actuator)) {
+    RowWriter(std::ostream& out, bool json) : out_(out), json_(json) {
         if (json_) {
             out_ << "[\n";
         } else {
-            for (size_t i = 0; i < std::size(kColumns); ++i) out_ << (i ? "," : "") << kColumns[i];
+            for (size_t i = 0; i < AnalysisRows::kColumns.size(); ++i)
+                out_ << (i ? "," : "") << AnalysisRows::kColumns[i];
             out_ << '\n';
         }
     }
-    void start(double sample_rate_hz) {
-        meter_.prepare(
-            sample_rate_hz, [this](double f) { return actuator_.displacement_um_at(f); },
-            engine_.settings()[P::perception_contact_area_cm2]);
-    }
-    void vibration(const float* samples, int count) {
-        meter_.write(samples, count,
-                     [this](const perception::MeterReading& r) { readings_.push_back(r); });
-        write_rows(false);
-    }
-    void finish() {
-        write_rows(true);
-        if (json_) out_ << "\n]\n";
-    }
-
-    // The engine's frames so far.
-    void take_frames(Engine& engine) {
-        for (AnalysisFrame frame; engine.pop_frame(frame);) add(frame.features, frame.control);
-    }
-    size_t rows() const { return rows_; }
-    size_t onsets() const { return onsets_; }
-
-  private:
-    void add(const Features& f, const ControlFrame& c) {
-        const double sample_rate_hz = engine_.sample_rate_hz();
-        pending_.push_back({f.frame_end_sample / sample_rate_hz, f.loudness_db, f.brightness_hz,
-                            f.noisiness, f.pitch_hz, f.pitch_confidence, f.onset_odf,
-                            f.onset ? 1.0 : 0.0, f.onset ? f.onset_sample / sample_rate_hz : 0.0,
-                            c.frequency_hz, c.amplitude, c.square_mix, c.trigger ? 1.0 : 0.0,
-                            c.attack_ms, c.decay_ms, c.sustain, c.flutter_hz, c.flutter_amplitude,
-                            c.pressure});
-        onsets_ += f.onset;
-    }
-    // Writes the pending rows the meter has read past, each with the sensation levels at its
-    // own time: interpolated between the 10 ms readings around it, so they line up with
-    // `meter -o` of the rendered vibration. `finished`: the rest, with the last reading.
-    void write_rows(bool finished) {
-        while (!pending_.empty()) {
-            Row values = pending_.front();
-            const double t = values[0];
-            while (!readings_.empty() && readings_.front().time_s <= t + 1e-9) {
-                before_ = readings_.front();
-                readings_.pop_front();
-            }
-            if (readings_.empty() && !finished) return;  // the reading after t is yet to come
-            pending_.pop_front();
-            const perception::MeterReading& after = readings_.empty() ? before_ : readings_.front();
-            const double span = after.time_s - before_.time_s;
-            const double w = span > 0 ? (t - before_.time_s) / span : 0.0;
-            const size_t first = values.size() - kMeterColumns;
-            for (size_t i = 0; i < before_.level_db.size(); ++i)
-                values[first + i] =
-                    before_.level_db[i] + w * (after.level_db[i] - before_.level_db[i]);
-            values[first + before_.level_db.size()] =
-                before_.combined_db + w * (after.combined_db - before_.combined_db);
-            write_row(values);
-        }
-    }
-    void write_row(const Row& values) {
+    void write(const AnalysisRows::Row& values) {
         if (json_) {
             nlohmann::ordered_json row;
-            for (size_t i = 0; i < std::size(kColumns); ++i) row[kColumns[i]] = values[i];
+            for (size_t i = 0; i < values.size(); ++i)
+                row[std::string(AnalysisRows::kColumns[i])] = values[i];
             out_ << (rows_ ? ",\n" : "") << row.dump();
         } else {
-            for (size_t i = 0; i < std::size(values); ++i)
+            for (size_t i = 0; i < values.size(); ++i)
                 out_ << (i ? "," : "") << fmt::format("{:.6g}", values[i]);
             out_ << '\n';
         }
         ++rows_;
     }
+    void finish() {
+        if (json_) out_ << "\n]\n";
+    }
 
+  private:
     std::ostream& out_;
     bool json_;
-    const Engine& engine_;
-    ActuatorProfile actuator_;
-    perception::SensationMeter meter_;
-    std::deque<Row> pending_;
-    std::deque<perception::MeterReading> readings_;
-    perception::MeterReading before_;  // the latest reading at or before the next row
-    size_t rows_ = 0, onsets_ = 0;
+    size_t rows_ = 0;
 };
 
 void analyze(const AnalyzeOptions& o) {
@@ -146,8 +74,10 @@ void analyze(const AnalyzeOptions& o) {
     if (!o.actuator.empty()) actuator = load_actuator_for(o.actuator, settings);
     engine.set_actuator(actuator);
     TextOutput output(out_path);
-    FrameWriter writer(output.stream(), format == "json", engine,
-                       actuator ? *actuator : load_actuator(resolve_actuator(kDefaultActuator)));
+    RowWriter writer(output.stream(), format == "json");
+    AnalysisRows rows(engine,
+                      actuator ? *actuator : load_actuator(resolve_actuator(kDefaultActuator)),
+                      [&](const AnalysisRows::Row& row) { writer.write(row); });
     // A block brings at most one frame per hop; the shortest hop (analysis.hop_ms at its least,
     // 0.5 ms, at the lowest rate) is 4 samples: the queue holds every frame of a block.
     constexpr int kShortestHopSamples = static_cast<int>(0.5e-3 * Engine::kMinSampleRateHz);
@@ -157,16 +87,17 @@ void analyze(const AnalyzeOptions& o) {
         o.input, engine, "analyze",
         {.on_output =
              [&](const float* const* v, int n) {
-                 writer.take_frames(engine);
-                 writer.vibration(v[0], n);
+                 rows.take_frames(engine);
+                 rows.vibration(v[0], n);
              },
-         .on_start = [&](double sample_rate_hz, int) { writer.start(sample_rate_hz); }});
+         .on_start = [&](double sample_rate_hz, int) { rows.start(sample_rate_hz); }});
+    rows.finish();
     writer.finish();
     output.commit();
     if (!is_stdout(o.output))
-        std::cerr << fmt::format(
-            "{}: {} frames every {:.2f} ms, {} onsets\n", o.output, writer.rows(),
-            1e3 * engine.hop_samples() / engine.sample_rate_hz(), writer.onsets());
+        std::cerr << fmt::format("{}: {} frames every {:.2f} ms, {} onsets\n", o.output,
+                                 rows.rows(), 1e3 * engine.hop_samples() / engine.sample_rate_hz(),
+                                 rows.onsets());
 }
 
 }  // namespace

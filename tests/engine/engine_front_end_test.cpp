@@ -358,6 +358,40 @@ TEST(EngineFrontEnd, StructuralChangesLoseNoOnsetAndLeaveNoGap) {
     }
 }
 
+// A structural change long after the start (more than the priming input) that keeps the hop:
+// the new pipeline's frames end where the running one's would, so the analysis goes on as if
+// nothing had changed (frames off that grid find other onsets on real drums).
+struct FrameLog : FrameObserver {
+    std::vector<int64_t> ends, onsets;
+    void on_frame(const Features& f, const ControlFrame&) noexcept override {
+        ends.push_back(f.frame_end_sample);
+        if (f.onset) onsets.push_back(f.onset_sample);
+    }
+};
+
+TEST(EngineFrontEnd, StructuralChangesLateInAFileKeepTheHopGrid) {
+    const double fs = 44100;
+    constexpr int kBlock = 64;
+    const auto x = test::drum_pattern(fs, 8.0, 14).audio;
+    FrameLog held_log, changed_log;
+    Engine held;
+    held.set_observer(&held_log);
+    held.prepare(fs, kBlock);
+    test::process_in_blocks(held, x, kBlock);
+    Engine engine;
+    engine.set_observer(&changed_log);
+    engine.prepare(fs, kBlock);
+    std::vector<float> y(x.size());
+    const auto change_at = static_cast<size_t>(5.0 * fs) / kBlock * kBlock;  // after 2.5 s
+    test::process_in_blocks(engine, x.data(), y.data(), change_at, {kBlock});
+    engine.set(P::post_lookahead_ms, 3.0);
+    test::process_in_blocks(engine, x.data() + change_at, y.data() + change_at,
+                            x.size() - change_at, {kBlock});
+    ASSERT_GE(held_log.onsets.size(), 20u);
+    EXPECT_EQ(changed_log.ends, held_log.ends);
+    EXPECT_EQ(changed_log.onsets, held_log.onsets);
+}
+
 // A control thread turning parameters (live and structural) while the audio thread runs:
 // the output stays finite and under the ceiling (under AddressSanitizer: no memory error).
 TEST(EngineFrontEnd, ControlAndAudioThreadsAtOnce) {

@@ -12,10 +12,14 @@ namespace {
 constexpr double kPitchIntervalMs = 10.0;  // f0 changes slowly: update it every ~10 ms
 }
 
+int Analyzer::hop_samples_for(const Settings& settings, double sample_rate_hz) {
+    return std::max<int>(
+        1, static_cast<int>(ms_to_samples(settings[P::analysis_hop_ms], sample_rate_hz)));
+}
+
 void Analyzer::prepare(const ProcessSpec& spec, const Settings& s) {
     const double sample_rate_hz = spec.sample_rate_hz;
-    hop_samples_ =
-        std::max<int>(1, static_cast<int>(ms_to_samples(s[P::analysis_hop_ms], sample_rate_hz)));
+    hop_samples_ = hop_samples_for(s, sample_rate_hz);
     stft_.prepare(nearest_power_of_two(ms_to_samples(s[P::analysis_window_ms], sample_rate_hz)),
                   sample_rate_hz);
     brightness_.prepare(stft_.bins(), stft_.bin_hz());

@@ -28,6 +28,8 @@ class Analyzer {
     void set_live(const Settings& settings) noexcept;
 
     int hop_samples() const { return hop_samples_; }
+    // The hop `settings` give at a sample rate: frames end at multiples of it.
+    static int hop_samples_for(const Settings& settings, double sample_rate_hz);
     // The features to compute (all by default); the others keep their Features default.
     void set_features(FeatureSet computed) noexcept { computed_ = computed; }
     // Samples that can be written before the next frame is due (1 ... hop).

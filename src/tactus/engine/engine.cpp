@@ -171,12 +171,18 @@ void Engine::set(P id, double value) {
 // audio thread (which catches it up and crossfades to it).
 void Engine::swap_in(const Settings& settings) {
     const auto prime = static_cast<int64_t>(kPrimeSeconds * spec_.sample_rate_hz);
+    // The new pipeline starts on the grids one with these settings from the first sample has
+    // (an analysis frame every hop, an internal sample every rate_divisor_ input samples), so a
+    // change that keeps the hop keeps every frame and onset time.
+    const int64_t grid =
+        int64_t{Analyzer::hop_samples_for(settings, spec_.sample_rate_hz)} * rate_divisor_;
     std::vector<float> past, past_power;
     int64_t to = 0, from = 0;
     std::unique_ptr<Pipeline> pipeline;
     for (int attempt = 0;; ++attempt) {  // the audio thread may overwrite what is being read
         to = ring_.written();
         from = std::max<int64_t>(0, to - prime);
+        from -= from % grid;
         const auto count = static_cast<int>(to - from);
         past.resize(static_cast<size_t>(count));
         past_power.resize(summed_loudness_ ? past.size() : 0);

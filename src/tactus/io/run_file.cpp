@@ -64,6 +64,28 @@ RunSummary run_file(const std::filesystem::path& input, Engine& engine,
         callbacks);
 }
 
+void prepare_analysis(Analyzer& analyzer, const ProcessSpec& spec, const Settings& settings,
+                      FeatureSet features) {
+    Engine::check_sample_rate(spec.sample_rate_hz);
+    analyzer.prepare(spec, settings);
+    analyzer.set_features(features);
+}
+
+void analyse_block(Analyzer& analyzer, const float* const* channels, int input_channels, int frames,
+                   float* mono, const std::function<void(const Features&)>& on_frame) {
+    const ScopedFlushDenormals no_denormals;  // as in Engine::process
+    const float* in = channels[0];
+    if (input_channels > 1) {  // the engine's default downmix
+        downmix_mean(channels, input_channels, 0, mono, frames);
+        in = mono;
+    }
+    for (int done = 0; done < frames;) {
+        const int chunk = std::min(frames - done, analyzer.samples_to_next_frame());
+        if (analyzer.process(in + done, chunk)) on_frame(analyzer.analyse());
+        done += chunk;
+    }
+}
+
 RunSummary analyse_file(const std::filesystem::path& input, Analyzer& analyzer,
                         const Settings& settings, FeatureSet features,
                         const std::function<void(const Features&)>& on_frame,
@@ -73,23 +95,11 @@ RunSummary analyse_file(const std::filesystem::path& input, Analyzer& analyzer,
     return stream_file(
         input,
         [&](const ProcessSpec& spec) {
-            Engine::check_sample_rate(spec.sample_rate_hz);
-            analyzer.prepare(spec, settings);
-            analyzer.set_features(features);
+            prepare_analysis(analyzer, spec, settings, features);
             input_channels = spec.channels;
         },
         [&](const float* const* channels, int frames) {
-            const ScopedFlushDenormals no_denormals;  // as in Engine::process
-            const float* in = channels[0];
-            if (input_channels > 1) {  // the engine's default downmix
-                downmix_mean(channels, input_channels, 0, mono.data(), frames);
-                in = mono.data();
-            }
-            for (int done = 0; done < frames;) {
-                const int chunk = std::min(frames - done, analyzer.samples_to_next_frame());
-                if (analyzer.process(in + done, chunk)) on_frame(analyzer.analyse());
-                done += chunk;
-            }
+            analyse_block(analyzer, channels, input_channels, frames, mono.data(), on_frame);
         },
         callbacks);
 }

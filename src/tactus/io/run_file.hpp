@@ -53,4 +53,12 @@ RunSummary analyse_file(const std::filesystem::path& input, Analyzer& analyzer,
                         const std::function<void(const Features&)>& on_frame,
                         const RunCallbacks& callbacks = {});
 
+// analyse_file's work on audio already in memory (the Python module's onsets()): prepare_analysis
+// once (std::invalid_argument for a bad rate or setting), then analyse_block for each block of at
+// most spec.max_block frames; `mono` holds spec.max_block samples (the channels' mean).
+void prepare_analysis(Analyzer& analyzer, const ProcessSpec& spec, const Settings& settings,
+                      FeatureSet features);
+void analyse_block(Analyzer& analyzer, const float* const* channels, int input_channels, int frames,
+                   float* mono, const std::function<void(const Features&)>& on_frame);
+
 }  // namespace tactus

@@ -1,8 +1,7 @@
 #include "tactus/io/search_path.hpp"
 
-#include <fmt/format.h>
-
 #include <dlfcn.h>
+#include <fmt/format.h>
 #include <link.h>
 
 #include <cstdlib>
@@ -14,17 +13,32 @@
 namespace tactus {
 
 std::filesystem::path installed_data_dir() {
+    namespace fs = std::filesystem;
     std::error_code error;
-    const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", error);
-    // The object holding this code: the program itself (its link map has no name), or a shared
-    // object loaded into another program (a Pd external, a plugin, a Python module).
-    Dl_info info{};
-    link_map* object = nullptr;
-    if (dladdr1(reinterpret_cast<const void*>(&installed_data_dir), &info,
-                reinterpret_cast<void**>(&object), RTLD_DL_LINKMAP) != 0 &&
-        object && object->l_name && object->l_name[0] != '\0') {
-        const std::filesystem::path module = std::filesystem::weakly_canonical(object->l_name, error);
-        if (!error) return module.parent_path();
+    const fs::path program = fs::read_symlink("/proc/self/exe", error);
+    // Linked into a module another program loads (a Pd external, a Python module, a plugin):
+    // the module's own folder when it holds the data (a bundle: tactus~/presets), else the first
+    // folder above the module that holds share/tactus (an installed prefix, the build tree).
+    Dl_info module{};
+    link_map* module_map = nullptr;
+    link_map* program_map = nullptr;
+    if (void* self = dlopen(nullptr, RTLD_LAZY)) {
+        dlinfo(self, RTLD_DI_LINKMAP, &program_map);
+        dlclose(self);
+    }
+    if (dladdr1(reinterpret_cast<const void*>(&installed_data_dir), &module,
+                reinterpret_cast<void**>(&module_map), RTLD_DL_LINKMAP) &&
+        module_map && module_map != program_map && module.dli_fname && *module.dli_fname) {
+        std::error_code unreadable;
+        const fs::path file = fs::weakly_canonical(module.dli_fname, unreadable);
+        std::error_code missing;
+        if (!unreadable && (fs::is_directory(file.parent_path() / "presets", missing) ||
+                            fs::is_directory(file.parent_path() / "actuators", missing)))
+            return file.parent_path();
+        for (fs::path dir = file.parent_path(); !unreadable && dir != dir.root_path();
+             dir = dir.parent_path())
+            if (fs::is_directory(dir / "share" / "tactus", missing))
+                return dir / "share" / "tactus";
     }
     if (program.empty()) return {};
     return program.parent_path().parent_path() / "share" / "tactus";

@@ -1,0 +1,210 @@
+// tactus.Engine: the library's Engine (engine/engine.hpp) for Python, as a host drives it.
+// process() is the audio thread (the GIL released; one call at a time), set() and the parameter
+// attributes the control thread (the live path: a change is picked up at the start of the next
+// process() call, live parameters glide, structural ones are swapped in). The attributes are
+// generated from the parameter table, with unit, range and help in their docstrings.
+#include <fmt/format.h>
+#include <pybind11/stl.h>
+
+#include <mutex>
+
+#include "audio_view.hpp"
+#include "settings.hpp"
+#include "tactus/engine/analysis_rows.hpp"
+#include "tactus/io/run_file.hpp"
+
+namespace py = pybind11;
+
+namespace tactus::python {
+namespace {
+
+class PyEngine {
+  public:
+    PyEngine(double sample_rate_hz, const std::string& preset, const py::object& actuator_name,
+             int channels, int actuators, bool keep_frames, const py::object& settings_dict,
+             const py::kwargs& params)
+        : channels_(channels), actuators_(actuators), keep_frames_(keep_frames) {
+        const Settings settings = resolve_settings(preset, settings_dict, params);
+        const auto actuator = resolve_actuator_for(actuator_name, settings);
+        if (actuators < 1 || actuators > Engine::kMaxActuators)
+            throw py::value_error(fmt::format("actuators = {} is out of range: allowed 1 to {}",
+                                              actuators, Engine::kMaxActuators));
+        engine_ = std::make_unique<Engine>(settings);
+        engine_->set_actuators(std::vector<ActuatorOutput>(static_cast<size_t>(actuators),
+                                                           ActuatorOutput{.profile = actuator}));
+        if (keep_frames_) engine_->enable_frame_queue();
+        try {
+            engine_->prepare({.sample_rate_hz = sample_rate_hz,
+                              .max_block = kStreamBlockFrames,
+                              .channels = channels});
+        } catch (const std::invalid_argument& e) {
+            throw py::value_error(e.what());
+        }
+    }
+
+    py::array_t<float> process(const py::handle& block) {
+        const AudioView in = audio_view(block);
+        if (in.channels != channels_)
+            throw py::value_error(fmt::format("block: {} channel(s), the engine was made for {}",
+                                              in.channels, channels_));
+        const std::unique_lock running(processing_, std::try_to_lock);
+        if (!running.owns_lock())
+            throw py::value_error("process(): already running in another thread");
+        AudioOutput out = audio_output(in.frames, actuators_);
+        {
+            const py::gil_scoped_release unlocked;
+            // Frames are taken off the engine's queue between blocks, as a live front end does.
+            std::vector<const float*> from(in.pointers.size());
+            std::vector<float*> to(out.pointers.size());
+            for (int done = 0; done < in.frames; done += kStreamBlockFrames) {
+                const int count = std::min(kStreamBlockFrames, in.frames - done);
+                for (size_t c = 0; c < from.size(); ++c) from[c] = in.pointers[c] + done;
+                for (size_t c = 0; c < to.size(); ++c) to[c] = out.pointers[c] + done;
+                engine_->process(from.data(), to.data(), count);
+                if (keep_frames_)
+                    for (AnalysisFrame f; engine_->pop_frame(f);) frames_.push_back(f);
+            }
+        }
+        return out.array;
+    }
+
+    // The frames analysed since the last call: the first columns of tactus.analyze().
+    py::dict frames() {
+        if (!keep_frames_) throw py::value_error("frames(): make the engine with keep_frames=True");
+        const auto running = wait_for_process();
+        const double rate = engine_->sample_rate_hz();
+        constexpr size_t kColumns = AnalysisRows::kFrameColumns;
+        py::dict out;
+        std::vector<py::array_t<double>> columns;
+        for (size_t c = 0; c < kColumns; ++c) {
+            columns.emplace_back(static_cast<py::ssize_t>(frames_.size()));
+            out[py::str(std::string(AnalysisRows::kColumns[c]))] = columns.back();
+        }
+        for (size_t r = 0; r < frames_.size(); ++r) {
+            const AnalysisRows::Row row = AnalysisRows::row_of(frames_[r], rate);
+            for (size_t k = 0; k < kColumns; ++k) columns[k].mutable_data()[r] = row[k];
+        }
+        frames_.clear();
+        return out;
+    }
+
+    void set(const std::string& name, const py::handle& value) {
+        set_param(param_named(name), value);
+    }
+
+    void set_param(P id, const py::handle& value) {
+        try {
+            engine_->set(id, param_value(id, value));
+        } catch (const std::invalid_argument& e) {
+            throw py::value_error(e.what());
+        }
+    }
+
+    py::object get(P id) const {
+        const ParamSpec& s = spec(id);
+        const double value = engine_->settings()[id];
+        if (!s.choices.empty()) return py::str(std::string(s.choices[static_cast<size_t>(value)]));
+        if (s.type == ParamType::integer) return py::int_(static_cast<long long>(value));
+        return py::float_(value);
+    }
+
+    py::dict settings() const {
+        py::dict out;
+        for (const ParamSpec& s : param_table()) out[py::str(std::string(s.key))] = get(s.param);
+        return out;
+    }
+
+    void reset() {
+        const auto running = wait_for_process();
+        engine_->reset();
+        frames_.clear();
+    }
+
+    const Engine& engine() const { return *engine_; }
+    int channels() const { return channels_; }
+    int actuators() const { return actuators_; }
+
+  private:
+    // Waits for a process() running in another thread, without the GIL (which that thread takes
+    // back before it lets go of the engine).
+    std::unique_lock<std::mutex> wait_for_process() {
+        std::unique_lock running(processing_, std::defer_lock);
+        const py::gil_scoped_release unlocked;
+        running.lock();
+        return running;
+    }
+
+    std::unique_ptr<Engine> engine_;
+    int channels_, actuators_;
+    bool keep_frames_;
+    std::mutex processing_;  // one process() at a time: it is the engine's audio thread
+    std::vector<AnalysisFrame> frames_;
+};
+
+std::string param_doc(const ParamSpec& s) {
+    std::string doc = fmt::format("{} ({}, {}, default {}): {}.", s.key, range_text(s),
+                                  s.change == ParamChange::live ? "live" : "structural",
+                                  Settings().text_of(s.param), s.help);
+    if (!s.choices.empty()) {
+        std::string names;
+        for (auto c : s.choices) names += (names.empty() ? "" : ", ") + std::string(c);
+        doc += fmt::format(" Choices: {}.", names);
+    }
+    if (s.change == ParamChange::live && s.smoothing_ms > 0)
+        doc += fmt::format(" Glides over {:g} ms.", s.smoothing_ms);
+    return doc;
+}
+
+}  // namespace
+
+void add_engine(py::module_& m) {
+    using py::arg;
+    py::class_<PyEngine> engine(m, "Engine",
+                                R"(The tactus engine, block by block, as a host runs it.
+
+Engine(sample_rate, preset="tfd", actuator=None, channels=1, actuators=1, keep_frames=False,
+       settings=None, **params)
+
+process(block) takes any number of frames, (frames,) or (frames, channels), and returns the
+vibration, float32 (frames, actuators); blocks of any sizes give the output of one call.
+set(key, value) and the parameter attributes change a parameter through the live path: it
+applies from the next process() call (live parameters glide over their smoothing time,
+structural ones build a new pipeline and crossfade to it). Every parameter of the table is an
+attribute named by its key with dots as underscores (engine.envelope_decay_ms).)");
+    engine
+        .def(py::init<double, const std::string&, const py::object&, int, int, bool,
+                      const py::object&, const py::kwargs&>(),
+             arg("sample_rate"), arg("preset") = "tfd", arg("actuator") = py::none(),
+             arg("channels") = 1, arg("actuators") = 1, arg("keep_frames") = false,
+             arg("settings") = py::none())
+        .def("process", &PyEngine::process, arg("block"),
+             "The vibration for the next block: float32 (frames, actuators).")
+        .def("set", &PyEngine::set, arg("key"), arg("value"),
+             "Sets a parameter (key or Python name; a number, or a choice's name) from the next "
+             "block on. ValueError naming the key for an unknown key or a value out of range.")
+        .def("frames", &PyEngine::frames,
+             "The analysis frames since the last call (keep_frames=True): a dict of float64 "
+             "arrays, the first 19 columns of tactus.analyze().")
+        .def("reset", &PyEngine::reset, "Back to silence, as if nothing had been processed.")
+        .def_property_readonly(
+            "latency", [](const PyEngine& e) { return e.engine().latency(); },
+            "Samples the vibration lags the input (the limiter's look-ahead).")
+        .def_property_readonly(
+            "hop_samples", [](const PyEngine& e) { return e.engine().hop_samples(); },
+            "Samples between analysis frames.")
+        .def_property_readonly(
+            "sample_rate", [](const PyEngine& e) { return e.engine().sample_rate_hz(); }, "Hz.")
+        .def_property_readonly("channels", &PyEngine::channels, "Input channels.")
+        .def_property_readonly("actuators", &PyEngine::actuators, "Actuator outputs.")
+        .def_property_readonly("settings", &PyEngine::settings,
+                               "Every parameter as last set: {key: value}.");
+    for (const ParamSpec& s : param_table()) {
+        const P id = s.param;
+        engine.def_property(
+            python_name(s).c_str(), [id](const PyEngine& e) { return e.get(id); },
+            [id](PyEngine& e, const py::handle& value) { e.set_param(id, value); },
+            param_doc(s).c_str());
+    }
+}
+
+}  // namespace tactus::python

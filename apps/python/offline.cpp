@@ -1,0 +1,316 @@
+// tactus.render, analyze, onsets, meter, read and write: the command line's offline commands on
+// numpy arrays, driving the library as the commands do (apps/tactus/render.cpp, analyze.cpp,
+// onsets.cpp, meter.cpp) so their values are the commands' values, bit for bit. The GIL is
+// released while audio is processed.
+#include <fmt/format.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <limits>
+#include <optional>
+
+#include "audio_view.hpp"
+#include "settings.hpp"
+#include "tactus/dsp/downmix.hpp"
+#include "tactus/engine/analysis_rows.hpp"
+#include "tactus/io/actuator_file.hpp"
+#include "tactus/io/audio_reader.hpp"
+#include "tactus/io/audio_writer.hpp"
+#include "tactus/io/run_file.hpp"
+#include "tactus/perception/meter.hpp"
+
+namespace py = pybind11;
+
+namespace tactus::python {
+namespace {
+
+constexpr int kBlock = kStreamBlockFrames;  // the command line's blocks
+
+ProcessSpec spec_for(double sample_rate_hz, const AudioView& in) {
+    if (in.frames == 0) throw py::value_error("audio: no audio frames");
+    try {
+        Engine::check_sample_rate(sample_rate_hz);
+    } catch (const std::invalid_argument& e) {
+        throw py::value_error(e.what());
+    }
+    return {.sample_rate_hz = sample_rate_hz, .max_block = kBlock, .channels = in.channels};
+}
+
+void prepare(Engine& engine, const ProcessSpec& spec) {
+    try {
+        engine.prepare(spec);
+    } catch (const std::invalid_argument& e) {
+        throw py::value_error(e.what());
+    }
+}
+
+// Columns of equal length as a dict of float64 arrays, in `names`' order.
+template <typename Names, typename Row>
+py::dict columns(const Names& names, const std::vector<Row>& rows) {
+    py::dict out;
+    for (size_t c = 0; c < std::size(names); ++c) {
+        py::array_t<double> column(static_cast<py::ssize_t>(rows.size()));
+        double* data = column.mutable_data();
+        for (size_t r = 0; r < rows.size(); ++r) data[r] = rows[r][c];
+        out[py::str(std::string(names[c]))] = column;
+    }
+    return out;
+}
+
+py::array_t<float> render(const py::handle& x, double sample_rate_hz, const std::string& preset,
+                          const py::object& actuator_name, int actuators,
+                          const py::object& settings_dict, const py::kwargs& params) {
+    const Settings settings = resolve_settings(preset, settings_dict, params);
+    const auto actuator = resolve_actuator_for(actuator_name, settings);
+    const AudioView in = audio_view(x);
+    const ProcessSpec spec = spec_for(sample_rate_hz, in);
+    if (actuators < 1 || actuators > Engine::kMaxActuators)
+        throw py::value_error(fmt::format("actuators = {} is out of range: allowed 1 to {}",
+                                          actuators, Engine::kMaxActuators));
+    Engine engine(settings);
+    engine.set_actuators(std::vector<ActuatorOutput>(static_cast<size_t>(actuators),
+                                                     ActuatorOutput{.profile = actuator}));
+    prepare(engine, spec);
+    AudioOutput out = audio_output(in.frames, actuators);
+    {
+        const py::gil_scoped_release unlocked;
+        engine.process(in.pointers.data(), out.pointers.data(), in.frames);
+    }
+    return out.array;
+}
+
+py::dict analyze(const py::handle& x, double sample_rate_hz, const std::string& preset,
+                 const py::object& actuator_name, const py::object& settings_dict,
+                 const py::kwargs& params) {
+    const Settings settings = resolve_settings(preset, settings_dict, params);
+    const auto actuator = resolve_actuator_for(actuator_name, settings);
+    ActuatorProfile metered;
+    try {
+        metered = actuator ? *actuator : load_actuator(resolve_actuator(kDefaultActuator));
+    } catch (const std::exception& e) {
+        throw py::value_error(e.what());
+    }
+    const AudioView in = audio_view(x);
+    const ProcessSpec spec = spec_for(sample_rate_hz, in);
+    Engine engine(settings);
+    engine.set_actuator(actuator);
+    std::vector<AnalysisRows::Row> rows;
+    AnalysisRows table(engine, metered, [&](const AnalysisRows::Row& row) { rows.push_back(row); });
+    engine.enable_frame_queue();
+    prepare(engine, spec);
+    {
+        const py::gil_scoped_release unlocked;
+        table.start(sample_rate_hz);
+        std::vector<float> vibration(kBlock);
+        float* out = vibration.data();
+        std::vector<const float*> block(in.pointers.size());
+        for (int done = 0; done < in.frames; done += kBlock) {  // as run_file reads a file
+            const int count = std::min(kBlock, in.frames - done);
+            for (size_t c = 0; c < block.size(); ++c) block[c] = in.pointers[c] + done;
+            engine.process(block.data(), &out, count);
+            table.take_frames(engine);
+            table.vibration(out, count);
+        }
+        table.finish();
+    }
+    return columns(AnalysisRows::kColumns, rows);
+}
+
+py::dict onsets(const py::handle& x, double sample_rate_hz, const std::string& preset,
+                const py::object& settings_dict, const py::kwargs& params) {
+    const Settings settings = resolve_settings(preset, settings_dict, params);
+    const AudioView in = audio_view(x);
+    const ProcessSpec spec = spec_for(sample_rate_hz, in);
+    Analyzer analyzer;
+    try {
+        prepare_analysis(analyzer, spec, settings, FeatureSet::none());
+    } catch (const std::invalid_argument& e) {
+        throw py::value_error(e.what());
+    }
+    std::vector<std::array<double, 3>> rows;
+    {
+        const py::gil_scoped_release unlocked;
+        std::vector<float> mono(kBlock);
+        std::vector<const float*> block(in.pointers.size());
+        for (int done = 0; done < in.frames; done += kBlock) {
+            const int count = std::min(kBlock, in.frames - done);
+            for (size_t c = 0; c < block.size(); ++c) block[c] = in.pointers[c] + done;
+            analyse_block(
+                analyzer, block.data(), in.channels, count, mono.data(), [&](const Features& f) {
+                    if (f.onset)
+                        rows.push_back({f.onset_sample / sample_rate_hz,
+                                        f.frame_end_sample / sample_rate_hz, f.onset_odf});
+                });
+        }
+    }
+    constexpr std::array<std::string_view, 3> kNames = {"onset_s", "decided_s", "strength"};
+    return columns(kNames, rows);
+}
+
+py::dict meter(const py::handle& vibration, double sample_rate_hz, const std::string& actuator_name,
+               double contact_area_cm2) {
+    ActuatorProfile actuator;
+    try {
+        actuator = load_actuator(resolve_actuator(actuator_name));
+        Settings().set(P::perception_contact_area_cm2, contact_area_cm2);  // its range
+    } catch (const std::exception& e) {
+        throw py::value_error(e.what());
+    }
+    const AudioView in = audio_view(vibration);
+    const ProcessSpec spec = spec_for(sample_rate_hz, in);
+    std::vector<std::array<double, 6>> rows;
+    {
+        const py::gil_scoped_release unlocked;
+        perception::SensationMeter meter;
+        meter.prepare(
+            spec.sample_rate_hz, [&](double f) { return actuator.displacement_um_at(f); },
+            contact_area_cm2);
+        const auto on_reading = [&](const perception::MeterReading& r) {
+            rows.push_back({r.time_s, r.level_db[0], r.level_db[1], r.level_db[2], r.level_db[3],
+                            r.combined_db});
+        };
+        std::vector<float> mono(kBlock);
+        for (int done = 0; done < in.frames; done += kBlock) {  // the actuators' mean
+            const int count = std::min(kBlock, in.frames - done);
+            downmix_mean(in.pointers.data(), in.channels, done, mono.data(), count);
+            meter.write(mono.data(), count, on_reading);
+        }
+        meter.finish(on_reading);
+    }
+    std::vector<std::string> names = {"time_s"};
+    for (const auto& c : perception::kChannels) names.push_back(std::string(c.name) + "_sl_db");
+    names.push_back("combined_sl_db");
+    return columns(names, rows);
+}
+
+// Decodes into `out`'s channels (allocated for the header's length): false if the file holds more
+// frames than its header says (some compressed formats only estimate it).
+bool read_into(AudioReader& reader, AudioOutput& out, int& frames) {
+    const int channels = reader.channels(), expected = frames;
+    std::vector<float*> at(static_cast<size_t>(channels));
+    for (frames = 0; frames < expected;) {
+        for (int c = 0; c < channels; ++c) at[c] = out.pointers[c] + frames;
+        const int got = reader.read(at.data(), std::min(kBlock, expected - frames));
+        if (got == 0) return true;
+        frames += got;
+    }
+    ChannelBlock beyond(channels, 1);
+    return reader.read(beyond.data(), 1) == 0;
+}
+
+// A file whose header does not say its length, or says too little: decoded into growing buffers,
+// then copied once.
+py::tuple read_growing(const std::filesystem::path& path) {
+    std::vector<std::vector<float>> channels;
+    double sample_rate_hz = 0;
+    {
+        const py::gil_scoped_release unlocked;
+        AudioReader reader(path);
+        sample_rate_hz = reader.sample_rate_hz();
+        ChannelBlock block(reader.channels(), kBlock);
+        channels.resize(static_cast<size_t>(reader.channels()));
+        while (const int got = reader.read(block.data(), kBlock))
+            for (int c = 0; c < reader.channels(); ++c)
+                channels[c].insert(channels[c].end(), block[c], block[c] + got);
+    }
+    if (channels[0].empty())
+        throw std::runtime_error(fmt::format("{}: no audio frames", path.string()));
+    if (channels[0].size() > static_cast<size_t>(std::numeric_limits<int>::max()))
+        throw std::runtime_error(fmt::format("{}: more than 2^31 frames", path.string()));
+    AudioOutput out =
+        audio_output(static_cast<int>(channels[0].size()), static_cast<int>(channels.size()));
+    for (size_t c = 0; c < channels.size(); ++c)
+        std::copy(channels[c].begin(), channels[c].end(), out.pointers[c]);
+    return py::make_tuple(out.array, sample_rate_hz);
+}
+
+py::tuple read(const std::filesystem::path& path) {
+    try {
+        std::optional<AudioOutput> out;
+        int frames = 0;
+        double sample_rate_hz = 0;
+        {
+            AudioReader reader(path);
+            sample_rate_hz = reader.sample_rate_hz();
+            if (reader.frames() <= 0 || reader.frames() > std::numeric_limits<int>::max())
+                return read_growing(path);
+            frames = static_cast<int>(reader.frames());
+            out.emplace(audio_output(frames, reader.channels()));
+            bool complete = false;
+            {
+                const py::gil_scoped_release unlocked;
+                complete = read_into(reader, *out, frames);
+            }
+            if (!complete) return read_growing(path);
+        }
+        if (frames == 0)
+            throw std::runtime_error(fmt::format("{}: no audio frames", path.string()));
+        if (frames < out->array.shape(0))  // a header that promised more (a view of what came)
+            return py::make_tuple(out->array[py::slice(0, frames, 1)], sample_rate_hz);
+        return py::make_tuple(out->array, sample_rate_hz);
+    } catch (const std::runtime_error& e) {
+        throw py::value_error(e.what());
+    }
+}
+
+void write(const std::filesystem::path& path, const py::handle& x, double sample_rate_hz) {
+    const AudioView in = audio_view(x);
+    try {
+        const py::gil_scoped_release unlocked;
+        AudioWriter writer(path, sample_rate_hz, in.channels);
+        std::vector<const float*> block(in.pointers.size());
+        for (int done = 0; done < in.frames; done += kBlock) {
+            for (size_t c = 0; c < block.size(); ++c) block[c] = in.pointers[c] + done;
+            writer.write(block.data(), std::min(kBlock, in.frames - done));
+        }
+        writer.commit();
+    } catch (const std::exception& e) {
+        throw py::value_error(e.what());
+    }
+}
+
+}  // namespace
+
+void add_offline(py::module_& m) {
+    using py::arg;
+    m.def("render", &render, arg("x"), arg("sample_rate"), arg("preset") = "tfd",
+          arg("actuator") = py::none(), arg("actuators") = 1, arg("settings") = py::none(),
+          R"(The vibration for audio x, as `tactus render` writes it (bit for bit).
+
+x: float array, (frames,) or (frames, channels), full scale 1 (any channel count: analysed as
+   their mean, their loudness summed as ITU-R BS.1770 sums it).
+sample_rate: Hz, 8000 to 192000.
+preset: a preset name (tactus.presets()) or a .toml path (--preset).
+actuator: None, an actuator profile name or a .toml path (--actuator); what the settings ask that
+   it cannot do is reported as warnings.
+actuators: identical actuator channels (--channels).
+settings: {"envelope.decay_ms": 120, ...}, and/or keyword arguments by Python name
+   (envelope_decay_ms=120): --set. Choices take their names ("log", "on").
+Returns float32 (frames, actuators). Raises ValueError with the command line's messages.)");
+    m.def("analyze", &analyze, arg("x"), arg("sample_rate"), arg("preset") = "tfd",
+          arg("actuator") = py::none(), arg("settings") = py::none(),
+          R"(Every analysis frame's features, vibration program and sensation levels, the
+columns of `tactus analyze` (the same values), as a dict of float64 arrays: time_s, loudness_db,
+brightness_hz, noisiness, pitch_hz, pitch_confidence, onset_odf, onset, onset_time_s,
+frequency_hz, amplitude, square_mix, trigger, attack_ms, decay_ms, sustain, flutter_hz,
+flutter_amplitude, pressure, P_sl_db, NPI_sl_db, NPII_sl_db, NPIII_sl_db, combined_sl_db.
+The sensation levels are metered through `actuator` (default: voice-coil). Arguments as render().)");
+    m.def("onsets", &onsets, arg("x"), arg("sample_rate"), arg("preset") = "tfd",
+          arg("settings") = py::none(),
+          R"(The onsets `tactus onsets` prints (the ones render() triggers pulses on), as a dict
+of float64 arrays: onset_s (estimated start), decided_s (when it was decided), strength.)");
+    m.def("meter", &meter, arg("vibration"), arg("sample_rate"), arg("actuator") = "voice-coil",
+          arg("contact_area_cm2") = Settings()[P::perception_contact_area_cm2],
+          R"(The sensation-level meter over time, as `tactus meter -o` writes it: a dict of
+float64 arrays time_s, P_sl_db, NPI_sl_db, NPII_sl_db, NPIII_sl_db, combined_sl_db (dB SL every
+10 ms; 0: not engaged). vibration: (frames,) or (frames, actuators), metered as their mean
+through the actuator profile at the contact area (cm2).)");
+    m.def("read", &read, arg("path"),
+          R"(An audio file as the command line reads it (libsndfile): (float32 array
+(frames, channels), sample rate).)");
+    m.def("write", &write, arg("path"), arg("x"), arg("sample_rate"),
+          R"(A float WAV as `tactus render` writes it: to a temporary file beside `path`,
+renamed over it only when complete.)");
+}
+
+}  // namespace tactus::python

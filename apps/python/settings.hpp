@@ -1,0 +1,33 @@
+// Settings, presets and actuators as the command line resolves them (--preset, --set,
+// --actuator), from Python arguments. Parameters are named by their table key
+// ("envelope.decay_ms", in a `settings` dict) or by their Python name, the key with its dots
+// as underscores ("envelope_decay_ms", as keyword arguments and Engine attributes).
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include <optional>
+#include <string>
+
+#include "tactus/actuator/profile.hpp"
+#include "tactus/params/params.hpp"
+
+namespace tactus::python {
+
+// "envelope.decay_ms" -> "envelope_decay_ms".
+std::string python_name(const ParamSpec& spec);
+// A key or Python name; ValueError "unknown key 'x' (did you mean 'y'?)".
+P param_named(const std::string& name);
+// The value a Python object stands for: a number, or a choice's name ("log", "on").
+double param_value(P id, const pybind11::handle& value);
+
+// The preset, then `settings` (a dict by key or Python name, may be None), then `params`
+// (keyword arguments by Python name). ValueError with the library's one-line message.
+Settings resolve_settings(const std::string& preset, const pybind11::object& settings,
+                          const pybind11::kwargs& params);
+// None: no actuator. Its warnings (what the settings ask that it cannot do) as Python
+// warnings, one each, as the command line prints them.
+std::optional<ActuatorProfile> resolve_actuator_for(const pybind11::object& name_or_path,
+                                                    const Settings& settings);
+
+}  // namespace tactus::python

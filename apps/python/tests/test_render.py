@@ -1,0 +1,163 @@
+"""tactus.render, analyze, onsets and meter give the command line's values, bit for bit; errors
+are Python exceptions with its messages; arrays are read in place; the GIL is released."""
+
+import threading
+import time
+import tracemalloc
+
+import numpy as np
+import pytest
+
+import tactus
+from conftest import cli_error, read_wav, run
+
+
+def test_render_equals_the_command_line_on_the_amen_break(cli, amen, tmp_path):
+    x, rate = tactus.read(amen)
+    y = tactus.render(x, rate)
+    run(cli, "render", amen, "-o", tmp_path / "cli.wav")
+    expected, expected_rate = read_wav(tmp_path / "cli.wav")
+    assert rate == expected_rate == 44100
+    assert y.dtype == np.float32 and y.shape == (x.shape[0], 1)
+    assert np.abs(y).max() > 0.1
+    assert np.array_equal(y, expected)
+
+
+def test_render_with_preset_actuator_settings_equals_the_command_line(cli, amen, tmp_path):
+    x, rate = tactus.read(amen)
+    with pytest.warns(UserWarning, match="lra-175"):
+        y = tactus.render(x, rate, preset="four-channel", actuator="lra-175", actuators=2,
+                          settings={"envelope.decay_ms": 90.125}, mapping_frequency_curve="lin")
+    run(cli, "render", amen, "-o", tmp_path / "cli.wav", "--preset", "four-channel",
+        "--actuator", "lra-175", "--channels", 2, "--set", "envelope.decay_ms=90.125",
+        "mapping.frequency.curve=lin")
+    expected, _ = read_wav(tmp_path / "cli.wav")
+    assert y.shape == expected.shape == (x.shape[0], 2)
+    assert np.array_equal(y, expected)
+    assert not np.array_equal(y[:, :1], tactus.render(x, rate))
+
+
+def test_render_equals_the_command_line_on_a_stereo_48k_file(cli, stereo_48k, tmp_path):
+    x, rate = tactus.read(stereo_48k)
+    assert rate == 48000 and x.shape[1] == 2
+    run(cli, "render", stereo_48k, "-o", tmp_path / "cli.wav")
+    expected, _ = read_wav(tmp_path / "cli.wav")
+    assert np.array_equal(tactus.render(x, rate), expected)
+    # The same samples decoded by soundfile, interleaved (C order) or as float64: the same.
+    decoded, _ = read_wav(stereo_48k)
+    assert np.array_equal(decoded, x)
+    assert np.array_equal(tactus.render(np.ascontiguousarray(decoded), rate), expected)
+    assert np.array_equal(tactus.render(decoded.astype(np.float64), rate), expected)
+    # Both channels count: the left one alone renders differently.
+    assert not np.array_equal(tactus.render(x[:, 0], rate), expected)
+
+
+def test_analyze_equals_the_command_lines_json(cli, amen, tmp_path):
+    import json
+    x, rate = tactus.read(amen)
+    with pytest.warns(UserWarning):
+        columns = tactus.analyze(x, rate, preset="four-channel", actuator="voice-coil")
+    run(cli, "analyze", amen, "-o", tmp_path / "cli.json", "--preset", "four-channel",
+        "--actuator", "voice-coil")
+    rows = json.loads((tmp_path / "cli.json").read_text())
+    assert list(columns) == list(rows[0])
+    assert len(columns["time_s"]) == len(rows) > 2000
+    for name, values in columns.items():
+        assert values.dtype == np.float64
+        assert np.array_equal(values, [row[name] for row in rows]), name
+    assert columns["onset"].sum() > 40
+    assert columns["P_sl_db"].max() > 10 and columns["NPI_sl_db"].max() > 3
+
+
+def test_onsets_equal_the_command_line(cli, amen, stereo_48k):
+    for path in (amen, stereo_48k):
+        x, rate = tactus.read(path)
+        found = tactus.onsets(x, rate)
+        printed = run(cli, "onsets", path).splitlines()
+        assert len(printed) == len(found["onset_s"]) > 40
+        for line, onset, decided, strength in zip(printed, found["onset_s"], found["decided_s"],
+                                                  found["strength"]):
+            assert line == f"{onset:.6f} {decided:.6f} {float(f'{strength:.4g}'):.4g}"
+
+
+def test_meter_equals_the_command_line(cli, amen, tmp_path):
+    run(cli, "render", amen, "-o", tmp_path / "v.wav")
+    run(cli, "meter", tmp_path / "v.wav", "-o", tmp_path / "meter.csv", "--contact-area", 0.5)
+    y, rate = tactus.read(tmp_path / "v.wav")
+    levels = tactus.meter(y, rate, contact_area_cm2=0.5)
+    table = np.genfromtxt(tmp_path / "meter.csv", delimiter=",", names=True)
+    assert list(levels) == list(table.dtype.names)
+    for name in levels:
+        assert np.array_equal(np.round(levels[name], 2), table[name]), name
+    assert levels["P_sl_db"].max() > 10
+
+
+@pytest.mark.parametrize("call, args", [
+    (lambda x, r: tactus.render(x, r, settings={"envelope.decay": 100}),
+     ["--set", "envelope.decay=100"]),
+    (lambda x, r: tactus.render(x, r, envelope_decay_ms=-3), ["--set", "envelope.decay_ms=-3"]),
+    (lambda x, r: tactus.render(x, r, mapping_frequency_curve="cubic"),
+     ["--set", "mapping.frequency.curve=cubic"]),
+    (lambda x, r: tactus.render(x, r, preset="no-such-preset"), ["--preset", "no-such-preset"]),
+    (lambda x, r: tactus.render(x, r, actuator="no-such-actuator"),
+     ["--actuator", "no-such-actuator"]),
+])
+def test_errors_carry_the_command_lines_messages(cli, amen, tmp_path, call, args):
+    x, rate = tactus.read(amen)
+    expected = cli_error(cli, "render", amen, "-o", tmp_path / "out.wav", *args)
+    with pytest.raises(ValueError) as error:
+        call(x, rate)
+    assert expected.removeprefix("--set: ") == str(error.value)
+    assert not (tmp_path / "out.wav").exists()
+
+
+def test_bad_arrays_and_rates_are_value_errors():
+    with pytest.raises(ValueError, match="no audio frames"):
+        tactus.render(np.zeros(0, np.float32), 48000)
+    with pytest.raises(ValueError, match="dimensions"):
+        tactus.render(np.zeros((4, 4, 4), np.float32), 48000)
+    with pytest.raises(ValueError, match="sample rate"):
+        tactus.render(np.zeros(100, np.float32), 4000)
+    with pytest.raises(ValueError, match="python_name|did you mean 'envelope_decay_ms'"):
+        tactus.render(np.zeros(100, np.float32), 48000, envelope_decay=3)
+    with pytest.raises(ValueError, match="cannot read audio"):
+        tactus.read("/nonexistent.wav")
+
+
+def test_audio_is_read_in_place_not_copied(amen):
+    x, rate = tactus.read(amen)
+    x = np.asfortranarray(np.tile(x, (8, 1)))  # 55 s, 19 MB of float32
+    tracemalloc.start()
+    y = tactus.render(x, rate)
+    _, peak = tracemalloc.get_traced_memory()
+    tracemalloc.stop()
+    assert y.nbytes == x.nbytes // 2
+    # The output and the engine's own buffers, but no copy of the input.
+    assert peak < y.nbytes + x.nbytes // 4, peak
+
+
+def test_the_gil_is_released_while_rendering(amen):
+    x, rate = tactus.read(amen)
+    x = np.asfortranarray(np.tile(x, (20, 1)))  # 2.3 minutes of audio
+    done = threading.Event()
+    spans = []
+
+    def render():
+        start = time.perf_counter()
+        tactus.render(x, rate)
+        spans.append((start, time.perf_counter()))
+        done.set()
+
+    ticks = []
+    thread = threading.Thread(target=render)
+    thread.start()
+    while not done.is_set():
+        ticks.append(time.perf_counter())
+        time.sleep(0.001)
+    thread.join()
+    start, end = spans[0]
+    during = [t for t in ticks if start <= t <= end]
+    assert end - start > 0.1
+    gaps = np.diff([start, *during, end])
+    # Holding the GIL would stop this thread for the whole render.
+    assert gaps.max() < 0.5 * (end - start), (gaps.max(), end - start)

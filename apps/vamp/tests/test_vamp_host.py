@@ -1,0 +1,89 @@
+"""The tactus Vamp plugin in a real host, vamp-simple-host (vamp-examples): it is listed with
+its outputs, its onsets are those `tactus onsets` prints, its features those of `tactus analyze`,
+on the Amen break and on a 48 kHz stereo file."""
+
+import csv
+import io
+import os
+import pathlib
+import re
+import subprocess
+
+import pytest
+
+HOST = os.environ.get("VAMP_SIMPLE_HOST", "vamp-simple-host")
+CLI = os.environ.get("TACTUS_CLI")
+AMEN = pathlib.Path("/usr/share/sonic-pi/samples/loop_amen_full.flac")
+OUTPUTS = ["onsets", "loudness", "brightness", "noisiness", "pitch", "vibration_frequency",
+           "vibration_amplitude", "sensation"]
+
+
+def host(*args):
+    done = subprocess.run([HOST, *map(str, args)], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    return done.stdout
+
+
+def features(path, output):
+    """(time, [values]) for every feature the host prints for an output of the plugin."""
+    rows = []
+    for line in host(f"tactus:tactus:{output}", path).splitlines():
+        match = re.match(r"^\s*(-?[\d.]+):\s*(.*)$", line)
+        if match:
+            rows.append((float(match[1]), [float(v) for v in match[2].split()]))
+    return rows
+
+
+@pytest.fixture(scope="module", params=["amen", "stereo_48k"])
+def audio(request, tmp_path_factory):
+    if request.param == "amen":
+        return AMEN
+    path = tmp_path_factory.mktemp("vamp") / "amen_48k.wav"
+    subprocess.run(["sox", "-q", str(AMEN), "-r", "48000", "-b", "24", str(path), "remix", "1",
+                    "2v0.5", "delay", "0", "0.1"], check=True)
+    return path
+
+
+def test_the_host_lists_the_plugin_and_its_outputs():
+    assert os.environ.get("VAMP_PATH"), "ctest sets VAMP_PATH to the build's plugin folder"
+    listing = host("--list-outputs")
+    for output in OUTPUTS:
+        assert f"vamp:tactus:tactus:{output}" in listing
+    full = host("--list")
+    assert '"tactus" [tactus]' in full and "Sensation level per channel of touch" in full
+
+
+def test_onsets_equal_tactus_onsets(audio):
+    onsets = features(audio, "onsets")
+    done = subprocess.run([CLI, "onsets", audio], capture_output=True, text=True, check=True)
+    expected = [[float(v) for v in line.split()] for line in done.stdout.splitlines()]
+    # The host pads the last block with silence, which lets the detector decide an onset near
+    # the end that the command line, stopping at the last sample, never decides.
+    duration = float(subprocess.run(["soxi", "-D", audio], capture_output=True, text=True,
+                                    check=True).stdout)
+    within = [(t, v) for t, v in onsets if v[0] <= duration]
+    assert len(onsets) - len(within) <= 1
+    assert len(within) == len(expected) > 40
+    for (onset, (decided, strength)), (want_onset, want_decided, want_strength) in zip(
+            within, expected):
+        assert abs(onset - want_onset) <= 5.01e-7, (onset, want_onset)  # printed to 6 decimals
+        assert decided == pytest.approx(want_decided, abs=1e-5)  # the host: 6 digits
+        assert strength == pytest.approx(want_strength, rel=1e-3)
+
+
+def test_features_equal_tactus_analyze(audio, tmp_path):
+    subprocess.run([CLI, "analyze", audio, "-o", tmp_path / "a.csv"], check=True,
+                   capture_output=True)
+    rows = list(csv.DictReader(io.StringIO((tmp_path / "a.csv").read_text())))
+    columns = {"loudness": ["loudness_db"], "vibration_frequency": ["frequency_hz"],
+               "sensation": ["P_sl_db", "NPI_sl_db", "NPII_sl_db", "NPIII_sl_db",
+                             "combined_sl_db"]}
+    for output, names in columns.items():
+        got = features(audio, output)
+        # The host pads the last block with silence: frames past the end come after the file's.
+        assert len(got) >= len(rows) > 2000
+        for (time, values), row in zip(got, rows):
+            assert time == pytest.approx(float(row["time_s"]), rel=1e-5)
+            want = [float(row[n]) for n in names]
+            assert values == pytest.approx(want, rel=1e-5, abs=1e-4), (output, time)
+    assert max(float(r["P_sl_db"]) for r in rows) > 10
