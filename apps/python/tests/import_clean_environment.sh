@@ -25,7 +25,10 @@ prefix="$home/prefix"
 cmake --install "$build" --prefix "$prefix" >/dev/null
 presets=$(env -i HOME="$home/nobody" PYTHONPATH="$prefix/$platlib" "$python" -c \
   'import tactus; print(tactus.__file__, *sorted(p["path"] for p in tactus.presets()))')
-expected="$prefix/$platlib/tactus/__init__.py $prefix/share/tactus/presets/four-channel.toml $prefix/share/tactus/presets/tfd.toml"
+expected="$prefix/$platlib/tactus/__init__.py"
+for shipped in "$build"/share/tactus/presets/*.toml; do
+  expected+=" $prefix/share/tactus/presets/$(basename "$shipped")"
+done
 if [ "$presets" != "$expected" ]; then
   echo "FAIL: installed: $presets" >&2
   exit 1

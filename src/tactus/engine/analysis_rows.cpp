@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <utility>
+#include <vector>
 
 namespace tactus {
 static_assert(AnalysisRows::kColumns.size() - AnalysisRows::kFrameColumns ==
@@ -54,7 +55,15 @@ void AnalysisRows::vibration(const float* samples, int count) {
     write_rows(false);
 }
 
-void AnalysisRows::finish() { write_rows(true); }
+// After the last sample the vibration is silent: one more step of it gives the reading after
+// the last rows, so they are interpolated as every other row is.
+void AnalysisRows::finish() {
+    const int step = static_cast<int>(
+        std::lround(perception::SensationMeter::kStepS * engine_.sample_rate_hz()));
+    const std::vector<float> silence(static_cast<size_t>(step), 0.0f);
+    if (!pending_.empty()) vibration(silence.data(), step);
+    write_rows(true);
+}
 
 // Each row carries the sensation levels at its own time, interpolated between the 10 ms readings
 // around it, so they line up with `tactus meter -o` of the rendered vibration. A row waits for
