@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
     tactus::cli::add_presets(app);
     tactus::cli::add_placement(app);
     tactus::cli::add_meter(app);
+    tactus::cli::add_export(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
