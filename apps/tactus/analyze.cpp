@@ -172,7 +172,7 @@ void add_analyze(CLI::App& app) {
         "analyze", "print features and vibration parameters for every analysis frame");
     command->add_option("input", options->input, "audio file")
         ->required()
-        ->check(CLI::ExistingFile);
+        ->check(input_file());
     command->add_option("-o,--output", options->output,
                         "FILE.csv or FILE.json (default: CSV on stdout)");
     command->add_option("--format", options->format, "csv or json (default: from -o's extension)")

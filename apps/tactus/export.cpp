@@ -104,7 +104,7 @@ void add_export(CLI::App& app) {
         "export", "write the vibration as haptic files: .ahap, .haptic, .android.json, .ogg");
     command->add_option("input", options->input, "audio file")
         ->required()
-        ->check(CLI::ExistingFile);
+        ->check(input_file());
     command
         ->add_option("-o,--output", options->outputs,
                      "OUT.ahap (Core Haptics), OUT.haptic (Meta Haptics SDK), OUT.android.json "

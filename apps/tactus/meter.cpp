@@ -9,6 +9,9 @@
 #include "actuator_option.hpp"
 #include "commands.hpp"
 #include "common.hpp"
+#include "global_options.hpp"
+#include "tactus/io/audio_reader.hpp"
+#include "tactus/io/render_info.hpp"
 #include "tactus/dsp/downmix.hpp"
 #include "tactus/io/actuator_file.hpp"
 #include "tactus/io/text_output.hpp"
@@ -19,7 +22,7 @@ namespace {
 using perception::kChannels;
 
 struct MeterOptions {
-    std::string input, output, actuator = std::string(kDefaultActuator);
+    std::string input, output, actuator;  // empty: the one the file was rendered for
     bool force = false;
     double contact_area_cm2 = Settings()[P::perception_contact_area_cm2];
 };
@@ -46,7 +49,16 @@ void print_summary(std::ostream& out, const MeterOptions& o, const ActuatorProfi
 
 void meter(const MeterOptions& o) {
     if (!is_stdout(o.output)) check_output(o.input, o.output, o.force);
-    const ActuatorProfile actuator = load_actuator(resolve_actuator(o.actuator));
+    // The actuator named, else the one the file says it was rendered for, else the default.
+    std::string actuator_name = o.actuator;
+    if (actuator_name.empty()) {
+        actuator_name = RenderInfo::from_comment(AudioReader(o.input).comment()).actuator;
+        if (!actuator_name.empty())
+            note(fmt::format("{}: rendered for {}: metered through it", o.input, actuator_name));
+        else
+            actuator_name = kDefaultActuator;
+    }
+    const ActuatorProfile actuator = load_actuator(resolve_actuator(actuator_name));
     std::optional<TextOutput> csv;
     if (!o.output.empty()) {
         csv.emplace(o.output);
@@ -98,12 +110,13 @@ void add_meter(CLI::App& app) {
                            "vibration file driving an actuator");
     command->add_option("input", options->input, "vibration file (e.g. from `tactus render`)")
         ->required()
-        ->check(CLI::ExistingFile);
+        ->check(input_file());
     command->add_option("-o,--output", options->output,
                         "FILE.csv: sensation levels every 10 ms (dB SL, 0 = not engaged)");
     add_force_option(*command, options->force);
     add_actuator_option(*command, options->actuator,
-                        "actuator profile (name in actuators/ or FILE.toml; default voice-coil)");
+                        "actuator profile (name in actuators/ or FILE.toml; default: the one the file was "
+                        "rendered for, as its comment says, else voice-coil)");
     command
         ->add_option("--contact-area", options->contact_area_cm2,
                      "skin contact area, cm2 (P channel spatial summation)")

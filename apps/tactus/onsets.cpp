@@ -46,7 +46,7 @@ void add_onsets(CLI::App& app) {
         app.add_subcommand("onsets", "print one onset per line: onset_s decided_s strength");
     command->add_option("input", options->input, "audio file")
         ->required()
-        ->check(CLI::ExistingFile);
+        ->check(input_file());
     command->add_option("-o,--output", options->output, "file to write (default: stdout)");
     add_force_option(*command, options->force);
     options->pipeline.add_to(*command);

@@ -1,5 +1,6 @@
-// tactus render IN... (-o OUT.wav | -O DIR) [-j N]: audio files -> vibration files (float WAV, N
-// identical channels). Several inputs are rendered in parallel, one file per worker, each with
+// tactus render IN... (-o OUT | -O DIR) [-j N]: audio files -> vibration files (N identical
+// channels, the container the output's extension names, the vibration's tail included, how it
+// was made in the file's comment). Several inputs are rendered in parallel, one file per worker, each with
 // its own Engine.
 #include <fmt/format.h>
 
@@ -13,10 +14,12 @@
 #include "batch.hpp"
 #include "commands.hpp"
 #include "common.hpp"
+#include "global_options.hpp"
 #include "pipeline_options.hpp"
 #include "tactus/io/actuator_file.hpp"
 #include "tactus/io/audio_reader.hpp"
 #include "tactus/io/audio_writer.hpp"
+#include "tactus/io/render_info.hpp"
 #include "tactus/io/temporary_path.hpp"
 
 namespace tactus::cli {
@@ -29,6 +32,7 @@ constexpr const char* kOutputSuffix = ".vibration.wav";
 struct RenderOptions {
     std::vector<std::string> inputs;
     std::string output, output_dir;
+    SampleFormat sample_format = SampleFormat::automatic;
     int channels = 1;
     int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     std::string actuator;
@@ -72,6 +76,7 @@ std::vector<Job> plan(const RenderOptions& o) {
             check_output(input, output, o.force);
         else
             refuse_overwriting_input(input, output);  // DIR is made below: it holds nothing yet
+        writable_sound_format(output, o.sample_format);  // a container libsndfile writes
         jobs.push_back({input, output});
     }
     return jobs;
@@ -80,6 +85,7 @@ std::vector<Job> plan(const RenderOptions& o) {
 // Renders one file; returns its one-line summary. On failure the output is not written.
 std::string render_one(const Job& job, const Settings& settings,
                        const std::optional<ActuatorProfile>& actuator, int channels,
+                       SampleFormat sample_format, const RenderInfo& how,
                        const std::function<void(int64_t done, int64_t total)>& on_progress) {
     Engine engine(settings);
     engine.set_actuators(std::vector<ActuatorOutput>(static_cast<size_t>(channels),
@@ -93,14 +99,20 @@ std::string render_one(const Job& job, const Settings& settings,
             for (int i = 0; i < n; ++i) peak = std::max(peak, std::abs(v[c][i]));
         writer->write(v, n);
     };
+    RenderInfo info = how;
+    info.source = job.input.filename().string();
     const auto open = [&](double sample_rate_hz, int) {
-        writer.emplace(job.output, sample_rate_hz, channels);
+        writer.emplace(job.output, sample_rate_hz, channels, sample_format,
+                       SoundTags{.software = "tactus " + info.version, .comment = info.comment()});
     };
+    // The vibration rings out after the input: a short sound keeps its whole pulse.
     const RunSummary summary = run_file(
-        job.input, engine, {.on_output = write, .on_progress = on_progress, .on_start = open});
+        job.input, engine, {.on_output = write, .on_progress = on_progress, .on_start = open},
+        RunTail::ring_out);
     writer->commit();
     return fmt::format("{}: {:.2f} s at {:g} Hz, {} pulses, peak {:.1f} dBFS, {} channel(s)",
-                       job.output.string(), summary.frames / summary.sample_rate_hz,
+                       job.output.string(),
+                       (summary.frames + summary.tail_frames) / summary.sample_rate_hz,
                        summary.sample_rate_hz, counter.onsets,
                        peak > 0 ? 20 * std::log10(peak) : -INFINITY, channels);
 }
@@ -120,6 +132,11 @@ void render(const RenderOptions& o) {
     const std::vector<Job> jobs = plan(o);
     std::optional<ActuatorProfile> actuator;
     if (!o.actuator.empty()) actuator = load_actuator_for(o.actuator, settings);
+    const RenderInfo how{.source = {},
+                         .preset = o.pipeline.preset,
+                         .changes = o.pipeline.assignments,
+                         .actuator = actuator ? actuator->name : std::string(),
+                         .version = TACTUS_VERSION};
     if (std::error_code error; !o.output_dir.empty() && !fs::is_directory(o.output_dir) &&
                                !fs::create_directories(o.output_dir, error))
         throw std::runtime_error(fmt::format("{}: cannot create the output directory: {}",
@@ -132,7 +149,8 @@ void render(const RenderOptions& o) {
         [&](size_t i, const AddFrames& add_frames) {
             int64_t reported = 0;
             summaries[i] =
-                render_one(jobs[i], settings, actuator, o.channels, [&](int64_t done, int64_t) {
+                render_one(jobs[i], settings, actuator, o.channels, o.sample_format, how,
+                           [&](int64_t done, int64_t) {
                     add_frames(done - reported);
                     reported = done;
                 });
@@ -140,7 +158,7 @@ void render(const RenderOptions& o) {
     size_t failed = 0;
     for (size_t i = 0; i < jobs.size(); ++i) {
         if (!errors[i]) {
-            std::cerr << summaries[i] << '\n';
+            note(summaries[i]);
             continue;
         }
         if (jobs.size() == 1) std::rethrow_exception(errors[i]);
@@ -163,11 +181,19 @@ void add_render(CLI::App& app) {
     CLI::App* command = app.add_subcommand("render", "render the vibration for audio files");
     command
         ->add_option("inputs", options->inputs,
-                     "audio files (anything libsndfile reads); several need -O")
+                     "audio files (anything libsndfile reads; - for stdin); several need -O")
         ->required()
-        ->check(CLI::ExistingFile);
+        ->check(input_file());
     command->add_option("-o,--output", options->output,
-                        "vibration file to write (.wav), one input");
+                        "vibration file to write, one input: its extension names the format (" +
+                            writable_sound_extensions() + "); - writes WAV to stdout");
+    command
+        ->add_option("--sample-format", options->sample_format,
+                     "16, 24 (bit integer) or float (default: float; FLAC 24; none for .ogg/.mp3)")
+        ->transform(CLI::CheckedTransformer(
+            std::map<std::string, SampleFormat>{{"16", SampleFormat::pcm16},
+                                                {"24", SampleFormat::pcm24},
+                                                {"float", SampleFormat::float32}}));
     command->add_option("-O,--output-dir", options->output_dir,
                         "directory for the vibration files: DIR/<input name without its "
                         "extension>.vibration.wav (created if missing)");

@@ -32,6 +32,7 @@ struct Sound {
     const char* name;
     const char* path;
 };
+void PrintTo(const Sound& sound, std::ostream* out) { *out << sound.name; }
 const Sound kSounds[] = {{"amen", "/usr/share/sonic-pi/samples/loop_amen_full.flac"},
                          {"tick", "/usr/share/sonic-pi/samples/elec_tick.flac"}};
 

@@ -36,13 +36,6 @@ class CarrierTrack {
 
 }  // namespace
 
-std::string ExportInfo::describe() const {
-    std::string text = fmt::format("tactus {} from {}: preset {}", version, source, preset);
-    for (const auto& c : changes) text += " --set " + c;
-    text += actuator.empty() ? ", no actuator profile" : ", actuator " + actuator;
-    return text;
-}
-
 double HapticTrack::intensity_at(double time_s) const {
     if (intensity.empty()) return 0;
     const double x = std::clamp(time_s / kStepS, 0.0, static_cast<double>(intensity.size() - 1));

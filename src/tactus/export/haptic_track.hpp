@@ -11,19 +11,11 @@
 #include <vector>
 
 #include "tactus/engine/engine.hpp"
+#include "tactus/io/render_info.hpp"
 #include "tactus/io/run_file.hpp"
 
 namespace tactus {
 
-// What a file says about how it was made (every format's metadata field).
-struct ExportInfo {
-    std::string source;                // the input file's name
-    std::string preset;                // name or path
-    std::vector<std::string> changes;  // key=value settings changed from the preset
-    std::string actuator;              // profile name, empty for none
-    std::string version;               // tactus version
-    std::string describe() const;      // one line: all of the above
-};
 
 struct HapticOnset {
     double time_s = 0;
@@ -37,7 +29,7 @@ struct HapticTrack {
     std::vector<double> sharpness;  // 0 ... 1, carrier frequency (sharpness_of)
     std::vector<HapticOnset> onsets;
     double felt_peak = 0;  // the felt amplitude intensity 1 stands for (full scale at 250 Hz)
-    ExportInfo info;
+    RenderInfo info;
     double duration_s() const { return static_cast<double>(intensity.size()) * kStepS; }
     // Intensity at any time, linear between steps.
     double intensity_at(double time_s) const;
