@@ -1,5 +1,5 @@
-// tactus analyze IN [-o FILE.csv|FILE.json]: every analysis frame's features, the vibration
-// parameters mapped from them, and the sensation level each channel of touch receives from the
+// tactus analyze IN [-o FILE.csv|FILE.json]: how it was made (version, preset, settings,
+// actuator), then every analysis frame's features, the vibration parameters mapped from them, and the sensation level each channel of touch receives from the
 // vibration through an actuator (perception/meter.hpp; readings are causal, every 10 ms).
 // Streams: constant memory for any length.
 #include <fmt/format.h>
@@ -16,6 +16,7 @@
 #include "common.hpp"
 #include "pipeline_options.hpp"
 #include "tactus/io/actuator_file.hpp"
+#include "tactus/io/render_info.hpp"
 #include "tactus/io/text_output.hpp"
 #include "tactus/perception/meter.hpp"
 
@@ -41,11 +42,20 @@ using Row = std::array<double, std::size(kColumns)>;
 // them (nothing is stored from inside process()).
 class FrameWriter {
   public:
-    FrameWriter(std::ostream& out, bool json, const Engine& engine, ActuatorProfile actuator)
+    // How the frames were made heads the output: a comment line atop the CSV, the "tactus"
+    // field of the JSON object (its rows in "frames").
+    FrameWriter(std::ostream& out, bool json, const Engine& engine, ActuatorProfile actuator,
+                const RenderInfo& how)
         : out_(out), json_(json), engine_(engine), actuator_(std::move(actuator)) {
         if (json_) {
-            out_ << "[\n";
+            const nlohmann::ordered_json info = {{"version", how.version},
+                                                 {"source", how.source},
+                                                 {"preset", how.preset},
+                                                 {"set", how.changes},
+                                                 {"actuator", how.actuator}};
+            out_ << "{\"tactus\": " << info.dump() << ",\n\"frames\": [\n";
         } else {
+            out_ << "# " << how.comment() << '\n';
             for (size_t i = 0; i < std::size(kColumns); ++i) out_ << (i ? "," : "") << kColumns[i];
             out_ << '\n';
         }
@@ -63,7 +73,7 @@ class FrameWriter {
     }
     void finish() {
         write_rows_up_to(INFINITY);
-        if (json_) out_ << "\n]\n";
+        if (json_) out_ << "\n]}\n";
     }
 
     // The engine's frames so far.
@@ -140,9 +150,15 @@ void analyze(const AnalyzeOptions& o) {
     std::optional<ActuatorProfile> actuator;
     if (!o.actuator.empty()) actuator = load_actuator_for(o.actuator, settings);
     engine.set_actuator(actuator);
+    const ActuatorProfile metered =
+        actuator ? *actuator : load_actuator(resolve_actuator(kDefaultActuator));
+    const RenderInfo how{.source = std::filesystem::path(o.input).filename().string(),
+                         .preset = o.pipeline.preset,
+                         .changes = o.pipeline.assignments,
+                         .actuator = metered.name,
+                         .version = TACTUS_VERSION};
     TextOutput output(out_path);
-    FrameWriter writer(output.stream(), format == "json", engine,
-                       actuator ? *actuator : load_actuator(resolve_actuator(kDefaultActuator)));
+    FrameWriter writer(output.stream(), format == "json", engine, metered, how);
     // A block brings at most one frame per hop; the shortest hop (analysis.hop_ms at its least,
     // 0.5 ms, at the lowest rate) is 4 samples: the queue holds every frame of a block.
     constexpr int kShortestHopSamples = static_cast<int>(0.5e-3 * Engine::kMinSampleRateHz);

@@ -62,7 +62,12 @@ void meter(const MeterOptions& o) {
     std::optional<TextOutput> csv;
     if (!o.output.empty()) {
         csv.emplace(o.output);
-        csv->stream() << "time_s";
+        const RenderInfo how{.source = std::filesystem::path(o.input).filename().string(),
+                             .preset = {},
+                             .changes = {},
+                             .actuator = actuator.name,
+                             .version = TACTUS_VERSION};
+        csv->stream() << "# " << how.comment() << '\n' << "time_s";
         for (const auto& c : kChannels) csv->stream() << ',' << c.name << "_sl_db";
         csv->stream() << ",combined_sl_db\n";
     }

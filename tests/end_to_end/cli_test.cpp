@@ -84,8 +84,13 @@ TEST_F(Cli, RenderWritesFloatWavWithChannelsAtInputRate) {
 TEST_F(Cli, AnalyzeCsvAndJson) {
     const Result csv = run("analyze " + kAmen);
     ASSERT_EQ(csv.exit_code, 0) << csv.err;
-    EXPECT_EQ(csv.out.rfind("time_s,loudness_db,brightness_hz,noisiness,pitch_hz", 0), 0u);
-    const auto rows = std::count(csv.out.begin(), csv.out.end(), '\n') - 1;
+    // How it was made, as a comment line, then the header.
+    EXPECT_EQ(csv.out.rfind("# tactus=" TACTUS_VERSION "; source=loop_amen_full.flac; preset=tfd; "
+                            "actuator=voice-coil\ntime_s,loudness_db,brightness_hz,noisiness,pitch_hz",
+                            0),
+              0u)
+        << csv.out.substr(0, 200);
+    const auto rows = std::count(csv.out.begin(), csv.out.end(), '\n') - 2;
     const double seconds = static_cast<double>(info_of(kAmen).frames) / info_of(kAmen).samplerate;
     EXPECT_NEAR(rows, seconds / 0.0029, 0.02 * rows);  // one row per 2.9 ms frame
 
@@ -93,9 +98,14 @@ TEST_F(Cli, AnalyzeCsvAndJson) {
     ASSERT_EQ(run("analyze " + kAmen + " -o " + json.string()).exit_code, 0);
     std::ifstream f(json);
     std::string text((std::istreambuf_iterator<char>(f)), {});
-    EXPECT_EQ(text.front(), '[');
+    EXPECT_EQ(text.rfind("{\"tactus\": {\"version\":\"" TACTUS_VERSION "\",\"source\":"
+                         "\"loop_amen_full.flac\",\"preset\":\"tfd\",\"set\":[],",
+                         0),
+              0u)
+        << text.substr(0, 200);
+    EXPECT_NE(text.find("\"frames\": [\n{\"time_s\""), std::string::npos);
     EXPECT_NE(text.find("\"frequency_hz\""), std::string::npos);
-    EXPECT_EQ(text.substr(text.size() - 2), "]\n");
+    EXPECT_EQ(text.substr(text.size() - 3), "]}\n");
 }
 
 TEST_F(Cli, OnsetsAreAscendingTriples) {
@@ -304,7 +314,9 @@ TEST_F(Cli, MeterAmenThroughTheVoiceCoil) {
     EXPECT_EQ(rows["NPIII"].first, 0.0) << r.out;  // a voice coil holds no offset
     EXPECT_NE(rows["NPIII"].second.find("not engaged"), std::string::npos);
     std::ifstream f(csv);
-    std::string header;
+    std::string comment, header;
+    std::getline(f, comment);
+    EXPECT_EQ(comment, "# tactus=" TACTUS_VERSION "; source=amen.wav; actuator=voice-coil");
     std::getline(f, header);
     EXPECT_EQ(header, "time_s,P_sl_db,NPI_sl_db,NPII_sl_db,NPIII_sl_db,combined_sl_db");
     int count = 0;
@@ -348,7 +360,8 @@ TEST_F(Cli, AnalyzeSensationColumnsAgreeWithTheMeter) {
     const Result csv = run("analyze " + kAmen + " --actuator voice-coil");
     ASSERT_EQ(csv.exit_code, 0) << csv.err;
     std::istringstream rows(csv.out);
-    std::string header, line;
+    std::string comment, header, line;
+    std::getline(rows, comment);
     std::getline(rows, header);
     EXPECT_NE(header.find(",P_sl_db,NPI_sl_db,NPII_sl_db,NPIII_sl_db,combined_sl_db"),
               std::string::npos)
@@ -365,7 +378,7 @@ TEST_F(Cli, AnalyzeSensationColumnsAgreeWithTheMeter) {
     std::ifstream f(meter_csv);
     std::vector<double> metered;
     while (std::getline(f, line))
-        if (line[0] != 't' && (metered = csv_numbers(line))[0] >= 3.0 - 1e-9) break;
+        if (line[0] != 't' && line[0] != '#' && (metered = csv_numbers(line))[0] >= 3.0 - 1e-9) break;
     ASSERT_EQ(metered.size(), 6u);
     EXPECT_GT(metered[1], 10.0);  // P engaged
     for (size_t c = 0; c < 5; ++c)
