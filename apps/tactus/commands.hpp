@@ -12,5 +12,6 @@ void add_presets(CLI::App& app);
 void add_placement(CLI::App& app);
 void add_meter(CLI::App& app);
 void add_export(CLI::App& app);
+void add_actuators(CLI::App& app);
 
 }  // namespace tactus::cli
