@@ -13,7 +13,9 @@
 
 #include "actuator_option.hpp"
 #include "commands.hpp"
+#include "batch_plan.hpp"
 #include "common.hpp"
+#include "global_options.hpp"
 #include "pipeline_options.hpp"
 #include "tactus/io/actuator_file.hpp"
 #include "tactus/io/render_info.hpp"
@@ -26,6 +28,7 @@ namespace {
 struct AnalyzeOptions {
     std::string input, output, format, actuator;
     bool force = false;
+    BatchOptions batch;
     PipelineOptions pipeline;
 };
 
@@ -175,9 +178,8 @@ void analyze(const AnalyzeOptions& o) {
     writer.finish();
     output.commit();
     if (!is_stdout(o.output))
-        std::cerr << fmt::format(
-            "{}: {} frames every {:.2f} ms, {} onsets\n", o.output, writer.rows(),
-            1e3 * engine.hop_samples() / engine.sample_rate_hz(), writer.onsets());
+        note(fmt::format("{}: {} frames every {:.2f} ms, {} onsets", o.output, writer.rows(),
+                         1e3 * engine.hop_samples() / engine.sample_rate_hz(), writer.onsets()));
 }
 
 }  // namespace
@@ -186,19 +188,25 @@ void add_analyze(CLI::App& app) {
     auto options = std::make_shared<AnalyzeOptions>();
     CLI::App* command = app.add_subcommand(
         "analyze", "print features and vibration parameters for every analysis frame");
-    command->add_option("input", options->input, "audio file")
-        ->required()
-        ->check(input_file());
-    command->add_option("-o,--output", options->output,
-                        "FILE.csv or FILE.json (default: CSV on stdout)");
+    options->batch.add_to(*command, "FILE.csv or FILE.json, one input (default: CSV on stdout)",
+                          ".features.csv (.json with --format json)");
     command->add_option("--format", options->format, "csv or json (default: from -o's extension)")
         ->check(CLI::IsMember({"csv", "json"}));
     add_actuator_option(*command, options->actuator,
                         "actuator profile (name or FILE.toml): compensate for it as render does "
                         "and meter through it (default: meter through voice-coil)");
-    add_force_option(*command, options->force);
     options->pipeline.add_to(*command);
-    command->callback([options] { analyze(*options); });
+    command->callback([options] {
+        size_t skipped = 0;
+        const auto jobs = plan_batch(
+            options->batch, options->format == "json" ? ".features.json" : ".features.csv", skipped);
+        run_jobs(options->batch, jobs, "analyze", [&](const BatchJob& job) {
+            AnalyzeOptions one = *options;
+            one.input = job.input.string(), one.output = job.output.string();
+            one.force = options->batch.force;
+            analyze(one);
+        });
+    });
 }
 
 }  // namespace tactus::cli

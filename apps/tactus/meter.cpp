@@ -5,9 +5,11 @@
 #include <fmt/format.h>
 
 #include <iostream>
+#include <sstream>
 
 #include "actuator_option.hpp"
 #include "commands.hpp"
+#include "batch_plan.hpp"
 #include "common.hpp"
 #include "global_options.hpp"
 #include "tactus/io/audio_reader.hpp"
@@ -24,6 +26,7 @@ using perception::kChannels;
 struct MeterOptions {
     std::string input, output, actuator;  // empty: the one the file was rendered for
     bool force = false;
+    BatchOptions batch;
     double contact_area_cm2 = Settings()[P::perception_contact_area_cm2];
 };
 
@@ -100,9 +103,11 @@ void meter(const MeterOptions& o) {
         with_progress(progress));
     meter.finish(on_reading);
     if (csv) csv->commit();
-    // The summary is data, on stdout, unless the CSV went there.
-    print_summary(csv && is_stdout(o.output) ? std::cerr : std::cout, o, actuator,
-                  run.frames / run.sample_rate_hz, summariser.summary());
+    // The summary is data, on stdout, unless the CSV went there; written at once, so files
+    // metered in parallel do not mix their lines.
+    std::ostringstream summary;
+    print_summary(summary, o, actuator, run.frames / run.sample_rate_hz, summariser.summary());
+    (csv && is_stdout(o.output) ? std::cerr : std::cout) << summary.str() << std::flush;
 }
 
 }  // namespace
@@ -113,12 +118,10 @@ void add_meter(CLI::App& app) {
         app.add_subcommand("meter",
                            "sensation level of each channel of touch (P, NPI, NPII, NPIII) for a "
                            "vibration file driving an actuator");
-    command->add_option("input", options->input, "vibration file (e.g. from `tactus render`)")
-        ->required()
-        ->check(input_file());
-    command->add_option("-o,--output", options->output,
-                        "FILE.csv: sensation levels every 10 ms (dB SL, 0 = not engaged)");
-    add_force_option(*command, options->force);
+    options->batch.add_to(*command,
+                          "FILE.csv: sensation levels every 10 ms (dB SL, 0 = not engaged), one "
+                          "input",
+                          ".meter.csv");
     add_actuator_option(*command, options->actuator,
                         "actuator profile (name in actuators/ or FILE.toml; default: the one the file was "
                         "rendered for, as its comment says, else voice-coil)");
@@ -128,7 +131,16 @@ void add_meter(CLI::App& app) {
         ->check(CLI::Range(spec(P::perception_contact_area_cm2).min,
                            spec(P::perception_contact_area_cm2).max))
         ->capture_default_str();
-    command->callback([options] { meter(*options); });
+    command->callback([options] {
+        size_t skipped = 0;
+        const auto jobs = plan_batch(options->batch, ".meter.csv", skipped);
+        run_jobs(options->batch, jobs, "meter", [&](const BatchJob& job) {
+            MeterOptions one = *options;
+            one.input = job.input.string(), one.output = job.output.string();
+            one.force = options->batch.force;
+            meter(one);
+        });
+    });
 }
 
 }  // namespace tactus::cli

@@ -12,6 +12,7 @@
 
 #include "actuator_option.hpp"
 #include "batch.hpp"
+#include "batch_plan.hpp"
 #include "commands.hpp"
 #include "common.hpp"
 #include "global_options.hpp"
@@ -30,19 +31,14 @@ namespace fs = std::filesystem;
 constexpr const char* kOutputSuffix = ".vibration.wav";
 
 struct RenderOptions {
-    std::vector<std::string> inputs;
-    std::string output, output_dir;
+    BatchOptions batch;
     SampleFormat sample_format = SampleFormat::automatic;
     int channels = 1;
-    int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     std::string actuator;
-    bool force = false;
     PipelineOptions pipeline;
 };
 
-struct Job {
-    fs::path input, output;
-};
+using Job = BatchJob;
 
 class OnsetCounter final : public FrameObserver {
   public:
@@ -53,32 +49,15 @@ class OnsetCounter final : public FrameObserver {
     int onsets = 0;
 };
 
-// Where each input's vibration goes: -o for one input, DIR/<stem>.vibration.wav with -O. Refuses
-// (before any audio is read) an output that is its input, that two inputs would share, or that
-// exists already (unless --force).
+// Where each input's vibration goes (batch_plan.hpp: -o for one input, with -O the input's
+// folders mirrored, DIR/.../<stem>.vibration.wav), each in a container libsndfile writes; all
+// refused before any audio is read.
 std::vector<Job> plan(const RenderOptions& o) {
-    if (o.output.empty() == o.output_dir.empty())
+    if (o.batch.output.empty() && o.batch.output_dir.empty())
         throw std::runtime_error("render: give either -o FILE (one input) or -O DIR");
-    if (!o.output.empty() && o.inputs.size() > 1)
-        throw std::runtime_error(fmt::format(
-            "render: -o names one output but {} inputs were given; use -O DIR", o.inputs.size()));
-    std::vector<Job> jobs;
-    std::map<fs::path, fs::path> input_of_output;
-    for (const fs::path input : o.inputs) {
-        const fs::path output =
-            o.output.empty() ? fs::path(o.output_dir) / (input.stem().string() + kOutputSuffix)
-                             : fs::path(o.output);
-        if (const auto [it, added] = input_of_output.emplace(output, input); !added)
-            throw std::runtime_error(fmt::format("{}: both {} and {} would write it",
-                                                 output.string(), it->second.string(),
-                                                 input.string()));
-        if (o.output_dir.empty() || fs::is_directory(o.output_dir))
-            check_output(input, output, o.force);
-        else
-            refuse_overwriting_input(input, output);  // DIR is made below: it holds nothing yet
-        writable_sound_format(output, o.sample_format);  // a container libsndfile writes
-        jobs.push_back({input, output});
-    }
+    size_t skipped = 0;
+    std::vector<Job> jobs = plan_batch(o.batch, kOutputSuffix, skipped);
+    for (const Job& job : jobs) writable_sound_format(job.output, o.sample_format);
     return jobs;
 }
 
@@ -137,14 +116,17 @@ void render(const RenderOptions& o) {
                          .changes = o.pipeline.assignments,
                          .actuator = actuator ? actuator->name : std::string(),
                          .version = TACTUS_VERSION};
-    if (std::error_code error; !o.output_dir.empty() && !fs::is_directory(o.output_dir) &&
-                               !fs::create_directories(o.output_dir, error))
-        throw std::runtime_error(fmt::format("{}: cannot create the output directory: {}",
-                                             o.output_dir, error.message()));
+    for (const Job& job : jobs)
+        if (std::error_code error; job.output.has_parent_path() &&
+                                   !fs::is_directory(job.output.parent_path()) &&
+                                   !fs::create_directories(job.output.parent_path(), error))
+            throw std::runtime_error(fmt::format("{}: cannot create the output directory: {}",
+                                                 job.output.parent_path().string(),
+                                                 error.message()));
     std::vector<std::string> summaries(jobs.size());
     // Each worker writes through one tracked temporary file.
     const std::vector<std::exception_ptr> errors = run_batch(
-        jobs.size(), std::min(o.jobs, kMaxTrackedTemporaries), [&] { return total_frames(jobs); },
+        jobs.size(), std::min(o.batch.jobs, kMaxTrackedTemporaries), [&] { return total_frames(jobs); },
         jobs.size() == 1 ? "render" : fmt::format("render {} files", jobs.size()),
         [&](size_t i, const AddFrames& add_frames) {
             int64_t reported = 0;
@@ -179,14 +161,10 @@ void render(const RenderOptions& o) {
 void add_render(CLI::App& app) {
     auto options = std::make_shared<RenderOptions>();
     CLI::App* command = app.add_subcommand("render", "render the vibration for audio files");
-    command
-        ->add_option("inputs", options->inputs,
-                     "audio files (anything libsndfile reads; - for stdin); several need -O")
-        ->required()
-        ->check(input_file());
-    command->add_option("-o,--output", options->output,
-                        "vibration file to write, one input: its extension names the format (" +
-                            writable_sound_extensions() + "); - writes WAV to stdout");
+    options->batch.add_to(*command,
+                          "vibration file to write, one input: its extension names the format (" +
+                              writable_sound_extensions() + "); - writes WAV to stdout",
+                          kOutputSuffix);
     command
         ->add_option("--sample-format", options->sample_format,
                      "16, 24 (bit integer) or float (default: float; FLAC 24; none for .ogg/.mp3)")
@@ -194,19 +172,12 @@ void add_render(CLI::App& app) {
             std::map<std::string, SampleFormat>{{"16", SampleFormat::pcm16},
                                                 {"24", SampleFormat::pcm24},
                                                 {"float", SampleFormat::float32}}));
-    command->add_option("-O,--output-dir", options->output_dir,
-                        "directory for the vibration files: DIR/<input name without its "
-                        "extension>.vibration.wav (created if missing)");
-    command->add_option("-j,--jobs", options->jobs, "files rendered at once, one per thread")
-        ->check(CLI::Range(1, 1024))
-        ->capture_default_str();
     command->add_option("--channels,-c", options->channels, "identical actuator channels")
         ->check(CLI::Range(1, 64))
         ->capture_default_str();
     add_actuator_option(*command, options->actuator,
                         "actuator profile (name in actuators/ or FILE.toml): compensate its "
                         "response, respect its max drive, warn about what it cannot do");
-    add_force_option(*command, options->force);
     options->pipeline.add_to(*command);
     command->callback([options] { render(*options); });
 }

@@ -220,3 +220,54 @@ TEST_F(Cli, RenderCarriesHowItWasMadeAndMeterReadsTheActuator) {
 }
 
 }  // namespace
+
+namespace {
+
+// Every command takes folders and many files the same way: with -O the input folder's tree is
+// mirrored, and --skip-existing resumes a batch without touching what exists.
+TEST_F(Cli, EveryCommandBatchesMirroringFoldersAndSkippingExistingOutputs) {
+    const fs::path tree = dir_ / "sounds", out = dir_ / "out";
+    fs::create_directories(tree / "kicks");
+    fs::create_directories(tree / "snares" / "soft");
+    fs::copy_file("/usr/share/sonic-pi/samples/bd_808.flac", tree / "kicks" / "bd_808.flac");
+    fs::copy_file("/usr/share/sonic-pi/samples/bd_zome.flac", tree / "kicks" / "bd_zome.flac");
+    fs::copy_file("/usr/share/sonic-pi/samples/sn_dolf.flac", tree / "snares" / "soft" / "sn.flac");
+    const std::vector<std::string> stems = {"kicks/bd_808", "kicks/bd_zome", "snares/soft/sn"};
+    for (const auto& [command, suffix] :
+         {std::pair{"render", ".vibration.wav"}, std::pair{"analyze", ".features.csv"},
+          std::pair{"onsets", ".onsets.txt"}}) {
+        const Result r = run(std::string(command) + " " + tree.string() + " -O " + out.string());
+        ASSERT_EQ(r.exit_code, 0) << command << ": " << r.err;
+        for (const auto& stem : stems) EXPECT_TRUE(fs::exists(out / (stem + suffix))) << stem;
+    }
+    // meter takes the rendered tree.
+    const Result m = run("meter " + out.string() + " -O " + (dir_ / "metered").string());
+    ASSERT_EQ(m.exit_code, 0) << m.err;
+    for (const auto& stem : stems)
+        EXPECT_TRUE(fs::exists(dir_ / "metered" / (stem + ".vibration.meter.csv"))) << stem;
+    EXPECT_EQ(std::count(m.out.begin(), m.out.end(), '\n'), 3 * 7) << m.out;  // 3 summaries
+
+    // Again: existing outputs are refused without --force, left as they are with --skip-existing.
+    const fs::path kept = out / "kicks" / "bd_808.onsets.txt";
+    std::ofstream(kept) << "kept";
+    fs::remove(out / "snares" / "soft" / "sn.onsets.txt");
+    const Result again = run("onsets " + tree.string() + " -O " + out.string());
+    EXPECT_NE(again.exit_code, 0);
+    EXPECT_NE(again.err.find("already exists"), std::string::npos) << again.err;
+    const Result resumed = run("onsets " + tree.string() + " -O " + out.string() + " --skip-existing");
+    ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+    EXPECT_NE(resumed.err.find("2 output(s) exist: skipped"), std::string::npos) << resumed.err;
+    std::ifstream k(kept);
+    std::string text((std::istreambuf_iterator<char>(k)), {});
+    EXPECT_EQ(text, "kept");
+    EXPECT_TRUE(fs::exists(out / "snares" / "soft" / "sn.onsets.txt"));
+    // Several files without -O are refused for every command.
+    for (const char* command : {"render", "analyze", "onsets", "meter"}) {
+        const Result many = run(std::string(command) + " " + kTick + " " + kTick + " -o x");
+        EXPECT_NE(many.exit_code, 0) << command;
+        EXPECT_NE(many.err.find("use -O DIR"), std::string::npos) << command << many.err;
+    }
+    expect_no_temporaries();
+}
+
+}  // namespace
