@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
     tactus::cli::add_meter(app);
     tactus::cli::add_export(app);
     tactus::cli::add_actuators(app);
+    tactus::cli::add_report(app);
     if (const auto unknown = tactus::cli::unknown_command(app, argc, argv)) {
         std::cerr << "tactus: error: " << *unknown << '\n';
         return 2;

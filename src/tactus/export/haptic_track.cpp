@@ -52,7 +52,8 @@ double sharpness_of(double frequency_hz) {
 }
 
 HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engine,
-                                const AlignedSink& sink, const RunCallbacks& callbacks) {
+                                const AlignedSink& sink, const RunCallbacks& callbacks,
+                                const FrameSink& frames) {
     engine.enable_frame_queue();
     std::optional<FeltEnvelope> envelope;
     CarrierTrack carrier;
@@ -64,6 +65,7 @@ HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engi
 
     const auto take_frames = [&] {
         for (AnalysisFrame frame; engine.pop_frame(frame);) {
+            if (frames) frames(frame);
             carrier.add(frame.control.sample, frame.control.frequency_hz);
             if (frame.features.onset)
                 onsets.emplace_back(frame.features.onset_sample, frame.control.frequency_hz);

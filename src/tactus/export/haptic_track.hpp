@@ -44,10 +44,15 @@ double sharpness_of(double frequency_hz);
 using AlignedSink = std::function<void(const float* const* audio, int audio_channels,
                                        const float* const* vibration, int actuators, int frames)>;
 
+// Every analysis frame (features and vibration program), as the engine's frame queue gives it.
+using FrameSink = std::function<void(const AnalysisFrame& frame)>;
+
 // Runs `engine` (actuators set) over `input` and its tail and returns the track; `sink`, if
-// given, receives the sound and the vibration lined up, block by block.
+// given, receives the sound and the vibration lined up, block by block, and `frames` every
+// analysis frame.
 HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engine,
-                                const AlignedSink& sink = {}, const RunCallbacks& callbacks = {});
+                                const AlignedSink& sink = {}, const RunCallbacks& callbacks = {},
+                                const FrameSink& frames = {});
 
 // A piecewise-linear approximation of values[i] at time i * step_s (Ramer-Douglas-Peucker):
 // the fewest breakpoints that stay within `tolerance` of every value; first and last kept.
