@@ -35,7 +35,8 @@ std::vector<std::string> names_in(const fs::path& dir) {
 
 TEST_F(Cli, HelpEverywhere) {
     for (const char* command :
-         {"", "render ", "analyze ", "onsets ", "presets ", "placement ", "meter "}) {
+         {"", "render ", "analyze ", "onsets ", "presets ", "placement ", "meter ", "export ",
+          "report ", "actuators "}) {
         const Result r = run(std::string(command) + "--help");
         EXPECT_EQ(r.exit_code, 0) << command;
         EXPECT_NE(r.out.find("Usage"), std::string::npos) << command;
