@@ -6,11 +6,15 @@
 #include <fmt/format.h>
 
 #include <iostream>
+#include <map>
 #include <optional>
+#include <thread>
 
 #include "actuator_option.hpp"
 #include "commands.hpp"
+#include "batch_plan.hpp"
 #include "common.hpp"
+#include "global_options.hpp"
 #include "pipeline_options.hpp"
 #include "tactus/export/haptic_formats.hpp"
 #include "tactus/export/vorbis_writer.hpp"
@@ -28,6 +32,12 @@ struct ExportOptions {
     int channels = 1;
     bool force = false;
     PipelineOptions pipeline;
+    // A batch (batch_plan.hpp): inputs, -O DIR, the formats each input is written in.
+    std::vector<std::string> inputs;
+    std::string output_dir;
+    std::vector<std::string> formats{".ahap", ".haptic", ".android.json", ".ogg"};
+    bool skip_existing = false;
+    int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 };
 
 void export_files(const ExportOptions& o) {
@@ -87,30 +97,74 @@ void export_files(const ExportOptions& o) {
                                                        : android_waveform_text(track));
             out.commit();
         }
-        std::cerr << fmt::format("{}: {:.3f} s, {} onsets{}\n", o.outputs[i], track.duration_s(),
+        note(fmt::format("{}: {:.3f} s, {} onsets{}", o.outputs[i], track.duration_s(),
                                  track.onsets.size(),
                                  formats[i] == ".ogg"
                                      ? fmt::format(", {:g} Hz, {} haptic channel(s)",
                                                    sample_rate_hz, o.channels)
-                                     : std::string());
+                                     : std::string()));
     }
 }
 
 }  // namespace
 
+// One input to -o, or every input (folders walked) to DIR/.../<name><format> for each --formats.
+void export_batch(const ExportOptions& o) {
+    if (o.output_dir.empty() == o.outputs.empty())
+        throw std::runtime_error("export: give -o OUT (one input; repeatable) or -O DIR");
+    if (o.output_dir.empty()) {
+        if (o.inputs.size() != 1)
+            throw std::runtime_error(fmt::format(
+                "-o names one input's outputs but {} inputs were given; use -O DIR",
+                o.inputs.size()));
+        ExportOptions one = o;
+        one.input = o.inputs[0];
+        return export_files(one);
+    }
+    for (const auto& format : o.formats)
+        if (haptic_format_of(format) != format)
+            throw std::runtime_error(fmt::format(
+                "--formats: unknown format '{}' (.ahap, .haptic, .android.json, .ogg)", format));
+    BatchOptions batch{.inputs = o.inputs, .output = {}, .output_dir = o.output_dir,
+                       .skip_existing = o.skip_existing, .force = o.force, .jobs = o.jobs};
+    std::map<std::filesystem::path, std::vector<std::string>> outputs_of;
+    for (const auto& format : o.formats) {
+        size_t skipped = 0;
+        for (const BatchJob& job : plan_batch(batch, format, skipped))
+            outputs_of[job.input].push_back(job.output.string());
+    }
+    std::vector<BatchJob> jobs;
+    for (const auto& [input, outputs] : outputs_of) jobs.push_back({input, outputs.front()});
+    run_jobs(batch, jobs, "export", [&](const BatchJob& job) {
+        ExportOptions one = o;
+        one.input = job.input.string();
+        one.outputs = outputs_of.at(job.input);
+        export_files(one);
+    });
+}
+
 void add_export(CLI::App& app) {
     auto options = std::make_shared<ExportOptions>();
     CLI::App* command = app.add_subcommand(
         "export", "write the vibration as haptic files: .ahap, .haptic, .android.json, .ogg");
-    command->add_option("input", options->input, "audio file")
+    command->add_option("inputs", options->inputs, "audio files or folders (- for stdin)")
         ->required()
-        ->check(input_file());
+        ->check(input_file() | CLI::ExistingDirectory);
     command
         ->add_option("-o,--output", options->outputs,
                      "OUT.ahap (Core Haptics), OUT.haptic (Meta Haptics SDK), OUT.android.json "
                      "(VibrationEffect.createWaveform, API 26), OUT.ogg (sound + haptic channels, "
-                     "ANDROID_HAPTIC); repeat -o for several from one render")
-        ->required();
+                     "ANDROID_HAPTIC); repeat -o for several from one render");
+    command->add_option("-O,--output-dir", options->output_dir,
+                        "folder for the outputs: DIR/<input's folder below the given one>/<name "
+                        "without extension><format> for each of --formats (created if missing)");
+    command->add_option("--formats", options->formats, "with -O: the formats to write")
+        ->delimiter(',')
+        ->capture_default_str();
+    command->add_option("-j,--jobs", options->jobs, "files exported at once, one per thread")
+        ->check(CLI::Range(1, 1024));
+    command->add_flag("--skip-existing", options->skip_existing,
+                      "with -O: leave outputs that exist (resume a batch)");
     command->add_option("--channels,-c", options->channels, "haptic channels in the .ogg")
         ->check(CLI::Range(1, kMaxAndroidHapticChannels))
         ->capture_default_str();
@@ -119,7 +173,7 @@ void add_export(CLI::App& app) {
                         "rendered for");
     add_force_option(*command, options->force);
     options->pipeline.add_to(*command);
-    command->callback([options] { export_files(*options); });
+    command->callback([options] { export_batch(*options); });
 }
 
 }  // namespace tactus::cli

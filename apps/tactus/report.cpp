@@ -11,6 +11,7 @@
 
 #include "actuator_option.hpp"
 #include "commands.hpp"
+#include "batch_plan.hpp"
 #include "common.hpp"
 #include "global_options.hpp"
 #include "pipeline_options.hpp"
@@ -29,6 +30,7 @@ struct ReportOptions {
     std::string input, output, actuator;
     bool force = false;
     PipelineOptions pipeline;
+    BatchOptions batch;
 };
 
 // Min and max of a signal per bucket, at most kMaxPlotRows buckets: the waveform plots.
@@ -212,15 +214,24 @@ void add_report(CLI::App& app) {
     auto options = std::make_shared<ReportOptions>();
     CLI::App* command = app.add_subcommand(
         "report", "write one self-contained HTML page of plots, figures and players");
-    command->add_option("input", options->input, "audio file")->required()->check(input_file());
-    command->add_option("-o,--output", options->output,
-                        "report.html (default: <input name>.report.html; - for stdout)");
+    options->batch.add_to(*command,
+                          "report.html, one input (default: <input name>.report.html; - for "
+                          "stdout)",
+                          ".report.html");
     add_actuator_option(*command, options->actuator,
                         "actuator profile (name or FILE.toml): render for it and meter through it "
                         "(default: none, metered through voice-coil)");
-    add_force_option(*command, options->force);
     options->pipeline.add_to(*command);
-    command->callback([options] { report(*options); });
+    command->callback([options] {
+        size_t skipped = 0;
+        const auto jobs = plan_batch(options->batch, ".report.html", skipped);
+        run_jobs(options->batch, jobs, "report", [&](const BatchJob& job) {
+            ReportOptions one = *options;
+            one.input = job.input.string(), one.output = job.output.string();
+            one.force = options->batch.force;
+            report(one);
+        });
+    });
 }
 
 }  // namespace tactus::cli

@@ -235,13 +235,18 @@ TEST_F(Cli, EveryCommandBatchesMirroringFoldersAndSkippingExistingOutputs) {
     const std::vector<std::string> stems = {"kicks/bd_808", "kicks/bd_zome", "snares/soft/sn"};
     for (const auto& [command, suffix] :
          {std::pair{"render", ".vibration.wav"}, std::pair{"analyze", ".features.csv"},
-          std::pair{"onsets", ".onsets.txt"}}) {
+          std::pair{"onsets", ".onsets.txt"}, std::pair{"export", ".ahap"},
+          std::pair{"report", ".report.html"}}) {
         const Result r = run(std::string(command) + " " + tree.string() + " -O " + out.string());
         ASSERT_EQ(r.exit_code, 0) << command << ": " << r.err;
         for (const auto& stem : stems) EXPECT_TRUE(fs::exists(out / (stem + suffix))) << stem;
     }
+    for (const char* format : {".haptic", ".android.json", ".ogg"})  // export: every format
+        for (const auto& stem : stems) EXPECT_TRUE(fs::exists(out / (stem + format))) << stem;
     // meter takes the rendered tree.
-    const Result m = run("meter " + out.string() + " -O " + (dir_ / "metered").string());
+    const fs::path rendered = dir_ / "rendered";
+    ASSERT_EQ(run("render " + tree.string() + " -O " + rendered.string()).exit_code, 0);
+    const Result m = run("meter " + rendered.string() + " -O " + (dir_ / "metered").string());
     ASSERT_EQ(m.exit_code, 0) << m.err;
     for (const auto& stem : stems)
         EXPECT_TRUE(fs::exists(dir_ / "metered" / (stem + ".vibration.meter.csv"))) << stem;
@@ -262,7 +267,7 @@ TEST_F(Cli, EveryCommandBatchesMirroringFoldersAndSkippingExistingOutputs) {
     EXPECT_EQ(text, "kept");
     EXPECT_TRUE(fs::exists(out / "snares" / "soft" / "sn.onsets.txt"));
     // Several files without -O are refused for every command.
-    for (const char* command : {"render", "analyze", "onsets", "meter"}) {
+    for (const char* command : {"render", "analyze", "onsets", "meter", "export", "report"}) {
         const Result many = run(std::string(command) + " " + kTick + " " + kTick + " -o x");
         EXPECT_NE(many.exit_code, 0) << command;
         EXPECT_NE(many.err.find("use -O DIR"), std::string::npos) << command << many.err;
