@@ -5,8 +5,8 @@
 #include <string>
 
 #include "global_options.hpp"
-#include "tactus/io/actuator_file.hpp"
 #include "tactus/actuator/warnings.hpp"
+#include "tactus/io/actuator_file.hpp"
 
 namespace tactus::cli {
 

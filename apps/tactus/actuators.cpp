@@ -26,8 +26,8 @@ void show(const ActuatorProfile& a, const std::filesystem::path& path) {
     row("file", path.string());
     row("type", std::string(type_name(a.type)));
     row("description", a.description);
-    row("displacement_um", fmt::format("{:g} um peak at {:g} Hz, full scale", a.displacement_um,
-                                       a.reference_hz));
+    row("displacement_um",
+        fmt::format("{:g} um peak at {:g} Hz, full scale", a.displacement_um, a.reference_hz));
     row("usable band", fmt::format("{:g}-{:g} Hz, {:g} dB/octave outside", a.band_low_hz,
                                    a.band_high_hz, a.rolloff_db_per_octave));
     row("resonance", resonance_text(a));
@@ -35,9 +35,10 @@ void show(const ActuatorProfile& a, const std::filesystem::path& path) {
     row("dc", a.dc ? "yes: holds an offset (NPIII pressure)" : "no");
     row("rise_ms", fmt::format("{:g}", a.rise_ms));
     if (a.type == ActuatorType::erm)
-        row("erm frequency", fmt::format("{:g}-{:g} Hz with drive", a.erm_min_drive_hz,
-                                         a.erm_max_drive_hz));
-    for (const auto& [hz, db] : a.points) row("response point", fmt::format("{:g} Hz {:+g} dB", hz, db));
+        row("erm frequency",
+            fmt::format("{:g}-{:g} Hz with drive", a.erm_min_drive_hz, a.erm_max_drive_hz));
+    for (const auto& [hz, db] : a.points)
+        row("response point", fmt::format("{:g} Hz {:+g} dB", hz, db));
 }
 
 void list() {
@@ -45,11 +46,10 @@ void list() {
                              "resonance", "max_drive", "dc", "description");
     for (const auto& [name, path] : toml_files(actuator_search_path())) {
         const ActuatorProfile a = load_actuator(path);
-        std::cout << fmt::format("{:<14}{:<12}{:<14}{:<26}{:<10g}{:<4}{}\n", name,
-                                 type_name(a.type),
-                                 fmt::format("{:g}-{:g}", a.band_low_hz, a.band_high_hz),
-                                 resonance_text(a), a.max_drive, a.dc ? "yes" : "no",
-                                 a.description);
+        std::cout << fmt::format(
+            "{:<14}{:<12}{:<14}{:<26}{:<10g}{:<4}{}\n", name, type_name(a.type),
+            fmt::format("{:g}-{:g}", a.band_low_hz, a.band_high_hz), resonance_text(a), a.max_drive,
+            a.dc ? "yes" : "no", a.description);
     }
 }
 
@@ -57,8 +57,8 @@ void list() {
 
 void add_actuators(CLI::App& app) {
     auto name = std::make_shared<std::string>();
-    CLI::App* command = app.add_subcommand(
-        "actuators", "list the actuator profiles, or show every value of one");
+    CLI::App* command =
+        app.add_subcommand("actuators", "list the actuator profiles, or show every value of one");
     command->add_option("name", *name, "a profile's name or FILE.toml: show its values");
     command->callback([name] {
         if (name->empty()) return list();

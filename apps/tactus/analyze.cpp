@@ -1,7 +1,8 @@
 // tactus analyze IN [-o FILE.csv|FILE.json]: how it was made (version, preset, settings,
-// actuator), then every analysis frame's features, the vibration parameters mapped from them, and the sensation level each channel of touch receives from the
-// vibration through an actuator (perception/meter.hpp; readings are causal, every 10 ms).
-// Streams: constant memory for any length.
+// actuator), then every analysis frame's features, the vibration parameters mapped from them, and
+// the sensation level each channel of touch receives from the vibration through an actuator
+// (perception/meter.hpp; readings are causal, every 10 ms). Streams: constant memory for any
+// length.
 #include <fmt/format.h>
 
 #include <array>
@@ -12,8 +13,8 @@
 #include <optional>
 
 #include "actuator_option.hpp"
-#include "commands.hpp"
 #include "batch_plan.hpp"
+#include "commands.hpp"
 #include "common.hpp"
 #include "global_options.hpp"
 #include "pipeline_options.hpp"
@@ -198,8 +199,9 @@ void add_analyze(CLI::App& app) {
     options->pipeline.add_to(*command);
     command->callback([options] {
         size_t skipped = 0;
-        const auto jobs = plan_batch(
-            options->batch, options->format == "json" ? ".features.json" : ".features.csv", skipped);
+        const auto jobs =
+            plan_batch(options->batch,
+                       options->format == "json" ? ".features.json" : ".features.csv", skipped);
         run_jobs(options->batch, jobs, "analyze", [&](const BatchJob& job) {
             AnalyzeOptions one = *options;
             one.input = job.input.string(), one.output = job.output.string();

@@ -36,7 +36,8 @@ void BatchOptions::add_to(CLI::App& command, const std::string& output_help,
     command.add_option("-o,--output", output, output_help);
     command.add_option("-O,--output-dir", output_dir,
                        "folder for the outputs: DIR/<input's folder below the given one>/<name "
-                       "without extension>" + suffix + " (created if missing)");
+                       "without extension>" +
+                           suffix + " (created if missing)");
     command.add_option("-j,--jobs", jobs, "files processed at once, one per thread")
         ->check(CLI::Range(1, 1024))
         ->capture_default_str();
@@ -69,15 +70,16 @@ std::vector<BatchJob> plan_batch(const BatchOptions& o, const std::string& suffi
         }
         std::sort(files.begin(), files.end());
         if (files.empty())
-            throw std::runtime_error(fmt::format("{}: a directory with no sound files in it", given.string()));
+            throw std::runtime_error(
+                fmt::format("{}: a directory with no sound files in it", given.string()));
         for (const auto& file : files) {
             const fs::path relative = fs::relative(file, given);
             found.emplace_back(file, relative.parent_path() / relative.stem());
         }
     }
     if (o.output_dir.empty() && found.size() > 1)
-        throw std::runtime_error(fmt::format(
-            "-o names one output but {} inputs were given; use -O DIR", found.size()));
+        throw std::runtime_error(
+            fmt::format("-o names one output but {} inputs were given; use -O DIR", found.size()));
     std::vector<BatchJob> jobs;
     std::map<fs::path, fs::path> input_of_output;
     for (const auto& [input, below] : found) {
@@ -119,9 +121,8 @@ void run_jobs(const BatchOptions& o, const std::vector<BatchJob>& jobs, const st
     if (jobs.size() == 1) return one(jobs[0]);
     const std::vector<std::exception_ptr> errors = run_batch(
         jobs.size(), std::min(o.jobs, kMaxTrackedTemporaries), [] { return int64_t{0}; },
-        fmt::format("{} {} files", label, jobs.size()), [&](size_t i, const AddFrames&) {
-            one(jobs[i]);
-        });
+        fmt::format("{} {} files", label, jobs.size()),
+        [&](size_t i, const AddFrames&) { one(jobs[i]); });
     size_t failed = 0;
     for (size_t i = 0; i < jobs.size(); ++i) {
         if (!errors[i]) continue;

@@ -32,8 +32,7 @@ struct BatchJob {
 // The jobs: every input (folders walked), its output, checked (check_output: never the input,
 // an existing output only with --force) before any audio is read. Skipped outputs are left out
 // and counted in `skipped`.
-std::vector<BatchJob> plan_batch(const BatchOptions& o, const std::string& suffix,
-                                 size_t& skipped);
+std::vector<BatchJob> plan_batch(const BatchOptions& o, const std::string& suffix, size_t& skipped);
 
 // Runs `one` for every job (in parallel with -O; folders of outputs created), then reports
 // failures as render does; throws when any failed.

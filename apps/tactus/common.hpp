@@ -46,9 +46,7 @@ inline void check_output(const std::filesystem::path& input, const std::filesyst
 // An input: an existing file, or "-" for standard input.
 inline CLI::Validator input_file() {
     return CLI::Validator(
-        [](std::string& path) {
-            return path == "-" ? std::string() : CLI::ExistingFile(path);
-        },
+        [](std::string& path) { return path == "-" ? std::string() : CLI::ExistingFile(path); },
         "FILE or - (stdin)");
 }
 

@@ -11,8 +11,8 @@
 #include <thread>
 
 #include "actuator_option.hpp"
-#include "commands.hpp"
 #include "batch_plan.hpp"
+#include "commands.hpp"
 #include "common.hpp"
 #include "global_options.hpp"
 #include "pipeline_options.hpp"
@@ -97,12 +97,11 @@ void export_files(const ExportOptions& o) {
                                                        : android_waveform_text(track));
             out.commit();
         }
-        note(fmt::format("{}: {:.3f} s, {} onsets{}", o.outputs[i], track.duration_s(),
-                                 track.onsets.size(),
-                                 formats[i] == ".ogg"
-                                     ? fmt::format(", {:g} Hz, {} haptic channel(s)",
-                                                   sample_rate_hz, o.channels)
-                                     : std::string()));
+        note(fmt::format(
+            "{}: {:.3f} s, {} onsets{}", o.outputs[i], track.duration_s(), track.onsets.size(),
+            formats[i] == ".ogg"
+                ? fmt::format(", {:g} Hz, {} haptic channel(s)", sample_rate_hz, o.channels)
+                : std::string()));
     }
 }
 
@@ -114,9 +113,9 @@ void export_batch(const ExportOptions& o) {
         throw std::runtime_error("export: give -o OUT (one input; repeatable) or -O DIR");
     if (o.output_dir.empty()) {
         if (o.inputs.size() != 1)
-            throw std::runtime_error(fmt::format(
-                "-o names one input's outputs but {} inputs were given; use -O DIR",
-                o.inputs.size()));
+            throw std::runtime_error(
+                fmt::format("-o names one input's outputs but {} inputs were given; use -O DIR",
+                            o.inputs.size()));
         ExportOptions one = o;
         one.input = o.inputs[0];
         return export_files(one);
@@ -125,8 +124,12 @@ void export_batch(const ExportOptions& o) {
         if (haptic_format_of(format) != format)
             throw std::runtime_error(fmt::format(
                 "--formats: unknown format '{}' (.ahap, .haptic, .android.json, .ogg)", format));
-    BatchOptions batch{.inputs = o.inputs, .output = {}, .output_dir = o.output_dir,
-                       .skip_existing = o.skip_existing, .force = o.force, .jobs = o.jobs};
+    BatchOptions batch{.inputs = o.inputs,
+                       .output = {},
+                       .output_dir = o.output_dir,
+                       .skip_existing = o.skip_existing,
+                       .force = o.force,
+                       .jobs = o.jobs};
     std::map<std::filesystem::path, std::vector<std::string>> outputs_of;
     for (const auto& format : o.formats) {
         size_t skipped = 0;
@@ -150,11 +153,11 @@ void add_export(CLI::App& app) {
     command->add_option("inputs", options->inputs, "audio files or folders (- for stdin)")
         ->required()
         ->check(input_file() | CLI::ExistingDirectory);
-    command
-        ->add_option("-o,--output", options->outputs,
-                     "OUT.ahap (Core Haptics), OUT.haptic (Meta Haptics SDK), OUT.android.json "
-                     "(VibrationEffect.createWaveform, API 26), OUT.ogg (sound + haptic channels, "
-                     "ANDROID_HAPTIC); repeat -o for several from one render");
+    command->add_option(
+        "-o,--output", options->outputs,
+        "OUT.ahap (Core Haptics), OUT.haptic (Meta Haptics SDK), OUT.android.json "
+        "(VibrationEffect.createWaveform, API 26), OUT.ogg (sound + haptic channels, "
+        "ANDROID_HAPTIC); repeat -o for several from one render");
     command->add_option("-O,--output-dir", options->output_dir,
                         "folder for the outputs: DIR/<input's folder below the given one>/<name "
                         "without extension><format> for each of --formats (created if missing)");

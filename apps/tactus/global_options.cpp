@@ -15,11 +15,11 @@ void add_global_options(CLI::App& app) {
     app.fallthrough();  // the flags above also after the command
 }
 
-std::optional<std::string> unknown_command(const CLI::App& app, int argc,
-                                           const char* const* argv) {
+std::optional<std::string> unknown_command(const CLI::App& app, int argc, const char* const* argv) {
     if (argc < 2) return std::nullopt;
     int first = 1;
-    while (first < argc && (std::string(argv[first]) == "-q" || std::string(argv[first]) == "--quiet"))
+    while (first < argc &&
+           (std::string(argv[first]) == "-q" || std::string(argv[first]) == "--quiet"))
         ++first;
     if (first >= argc || argv[first][0] == '-') return std::nullopt;
     std::vector<std::string> names;
@@ -34,7 +34,9 @@ std::optional<std::string> unknown_command(const CLI::App& app, int argc,
            (nearest.empty() ? "" : "did you mean '" + nearest + "'? ") + "commands: " + known + ")";
 }
 
-bool quiet() { return g_quiet; }
+bool quiet() {
+    return g_quiet;
+}
 
 void note(const std::string& line) {
     if (!g_quiet) std::cerr << line << '\n';

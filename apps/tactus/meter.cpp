@@ -8,14 +8,14 @@
 #include <sstream>
 
 #include "actuator_option.hpp"
-#include "commands.hpp"
 #include "batch_plan.hpp"
+#include "commands.hpp"
 #include "common.hpp"
 #include "global_options.hpp"
-#include "tactus/io/audio_reader.hpp"
-#include "tactus/io/render_info.hpp"
 #include "tactus/dsp/downmix.hpp"
 #include "tactus/io/actuator_file.hpp"
+#include "tactus/io/audio_reader.hpp"
+#include "tactus/io/render_info.hpp"
 #include "tactus/io/text_output.hpp"
 
 namespace tactus::cli {
@@ -122,9 +122,10 @@ void add_meter(CLI::App& app) {
                           "FILE.csv: sensation levels every 10 ms (dB SL, 0 = not engaged), one "
                           "input",
                           ".meter.csv");
-    add_actuator_option(*command, options->actuator,
-                        "actuator profile (name in actuators/ or FILE.toml; default: the one the file was "
-                        "rendered for, as its comment says, else voice-coil)");
+    add_actuator_option(
+        *command, options->actuator,
+        "actuator profile (name in actuators/ or FILE.toml; default: the one the file was "
+        "rendered for, as its comment says, else voice-coil)");
     command
         ->add_option("--contact-area", options->contact_area_cm2,
                      "skin contact area, cm2 (P channel spatial summation)")

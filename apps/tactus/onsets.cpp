@@ -2,8 +2,8 @@
 // an onset list as aubioonset prints it and as onset evaluation tools read it.
 #include <fmt/format.h>
 
-#include "commands.hpp"
 #include "batch_plan.hpp"
+#include "commands.hpp"
 #include "common.hpp"
 #include "pipeline_options.hpp"
 #include "tactus/io/text_output.hpp"

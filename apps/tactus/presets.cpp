@@ -96,7 +96,8 @@ void add_presets(CLI::App& app) {
     add_force_option(*command, options->force);
     command->callback([options] {
         if (options->params) return print_params();
-        if (!options->show.empty()) return show_preset(options->show, options->pipeline.assignments);
+        if (!options->show.empty())
+            return show_preset(options->show, options->pipeline.assignments);
         if (!options->save.empty()) return save_preset(*options);
         for (const auto& p : list_presets())
             std::cout << fmt::format("{:<16} {}  ({})\n", p.name, p.description, p.path.string());

@@ -1,7 +1,7 @@
 // tactus render IN... (-o OUT | -O DIR) [-j N]: audio files -> vibration files (N identical
 // channels, the container the output's extension names, the vibration's tail included, how it
-// was made in the file's comment). Several inputs are rendered in parallel, one file per worker, each with
-// its own Engine.
+// was made in the file's comment). Several inputs are rendered in parallel, one file per worker,
+// each with its own Engine.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -89,11 +89,10 @@ std::string render_one(const Job& job, const Settings& settings,
         job.input, engine, {.on_output = write, .on_progress = on_progress, .on_start = open},
         RunTail::ring_out);
     writer->commit();
-    return fmt::format("{}: {:.2f} s at {:g} Hz, {} pulses, peak {:.1f} dBFS, {} channel(s)",
-                       job.output.string(),
-                       (summary.frames + summary.tail_frames) / summary.sample_rate_hz,
-                       summary.sample_rate_hz, counter.onsets,
-                       peak > 0 ? 20 * std::log10(peak) : -INFINITY, channels);
+    return fmt::format(
+        "{}: {:.2f} s at {:g} Hz, {} pulses, peak {:.1f} dBFS, {} channel(s)", job.output.string(),
+        (summary.frames + summary.tail_frames) / summary.sample_rate_hz, summary.sample_rate_hz,
+        counter.onsets, peak > 0 ? 20 * std::log10(peak) : -INFINITY, channels);
 }
 
 // Frames in all inputs, for the progress bar (unreadable inputs count 0 and fail later).
@@ -126,16 +125,16 @@ void render(const RenderOptions& o) {
     std::vector<std::string> summaries(jobs.size());
     // Each worker writes through one tracked temporary file.
     const std::vector<std::exception_ptr> errors = run_batch(
-        jobs.size(), std::min(o.batch.jobs, kMaxTrackedTemporaries), [&] { return total_frames(jobs); },
+        jobs.size(), std::min(o.batch.jobs, kMaxTrackedTemporaries),
+        [&] { return total_frames(jobs); },
         jobs.size() == 1 ? "render" : fmt::format("render {} files", jobs.size()),
         [&](size_t i, const AddFrames& add_frames) {
             int64_t reported = 0;
-            summaries[i] =
-                render_one(jobs[i], settings, actuator, o.channels, o.sample_format, how,
-                           [&](int64_t done, int64_t) {
-                    add_frames(done - reported);
-                    reported = done;
-                });
+            summaries[i] = render_one(jobs[i], settings, actuator, o.channels, o.sample_format, how,
+                                      [&](int64_t done, int64_t) {
+                                          add_frames(done - reported);
+                                          reported = done;
+                                      });
         });
     size_t failed = 0;
     for (size_t i = 0; i < jobs.size(); ++i) {

@@ -10,8 +10,8 @@
 #include <optional>
 
 #include "actuator_option.hpp"
-#include "commands.hpp"
 #include "batch_plan.hpp"
+#include "commands.hpp"
 #include "common.hpp"
 #include "global_options.hpp"
 #include "pipeline_options.hpp"
@@ -39,7 +39,8 @@ class Waveform {
     explicit Waveform(double sample_rate_hz) : rate_(sample_rate_hz) {}
     void add(float x) { samples_.push_back(x); }
     std::vector<std::vector<double>> rows() const {
-        const size_t bucket = std::max<size_t>(1, (samples_.size() + kMaxPlotRows - 1) / kMaxPlotRows);
+        const size_t bucket =
+            std::max<size_t>(1, (samples_.size() + kMaxPlotRows - 1) / kMaxPlotRows);
         std::vector<std::vector<double>> out;
         for (size_t i = 0; i < samples_.size(); i += bucket) {
             const auto end = std::min(samples_.size(), i + bucket);
@@ -93,8 +94,8 @@ void report(const ReportOptions& o) {
     std::vector<std::vector<double>> features, program, levels;
     const auto on_reading = [&](const perception::MeterReading& r) {
         summariser.add(r);
-        levels.push_back({r.time_s, r.level_db[0], r.level_db[1], r.level_db[2], r.level_db[3],
-                          r.combined_db});
+        levels.push_back(
+            {r.time_s, r.level_db[0], r.level_db[1], r.level_db[2], r.level_db[3], r.combined_db});
     };
     std::vector<float> mono;
     const AlignedSink sink = [&](const float* const* audio, int audio_channels,
@@ -136,14 +137,13 @@ void report(const ReportOptions& o) {
     data.title = "tactus report: " + name;
     std::string changes;
     for (const auto& a : o.pipeline.assignments) changes += " " + a;
-    data.summary = {
-        {"input", fmt::format("{} ({:.2f} s at {:g} Hz)", o.input,
-                              static_cast<double>(sound->size()) / rate, rate)},
-        {"preset", o.pipeline.preset + (changes.empty() ? "" : ", --set" + changes)},
-        {"actuator", actuator ? actuator->name + " (compensated, metered through it)"
-                              : "none (metered through " + metered.name + ")"},
-        {"onsets", fmt::format("{}", track.onsets.size())},
-        {"tactus", TACTUS_VERSION}};
+    data.summary = {{"input", fmt::format("{} ({:.2f} s at {:g} Hz)", o.input,
+                                          static_cast<double>(sound->size()) / rate, rate)},
+                    {"preset", o.pipeline.preset + (changes.empty() ? "" : ", --set" + changes)},
+                    {"actuator", actuator ? actuator->name + " (compensated, metered through it)"
+                                          : "none (metered through " + metered.name + ")"},
+                    {"onsets", fmt::format("{}", track.onsets.size())},
+                    {"tactus", TACTUS_VERSION}};
     for (const auto& c : perception::kChannels)
         data.summary.emplace_back(fmt::format("{} ({})", c.name, c.sensation),
                                   channel_text(summary.channels[static_cast<int>(c.channel)]));
@@ -165,19 +165,18 @@ void report(const ReportOptions& o) {
         p.labels = std::move(labels), p.rows = std::move(rows);
         return p;
     };
-    ReportPlot waveform = plot("waveform", "Sound, with its onsets", "full scale", {"sound"},
-                               sound->rows());
+    ReportPlot waveform =
+        plot("waveform", "Sound, with its onsets", "full scale", {"sound"}, sound->rows());
     waveform.onsets = waveform.band = true;
     ReportPlot loudness = plot("loudness", "Loudness", "dB LKFS", {"loudness_db"}, column(1));
     loudness.onsets = true;
-    ReportPlot brightness = plot("brightness", "Brightness (spectral centroid)", "Hz",
-                                 {"brightness_hz"}, column(2));
+    ReportPlot brightness =
+        plot("brightness", "Brightness (spectral centroid)", "Hz", {"brightness_hz"}, column(2));
     brightness.log_y = true;
     ReportPlot pitch = plot("pitch", "Pitch (where found)", "Hz", {"pitch_hz"}, column(4));
     pitch.log_y = pitch.points = true;
-    ReportPlot vibration_program =
-        plot("program", "Vibration program: frequency and amplitude", "Hz",
-             {"frequency_hz", "amplitude"}, thinned(program));
+    ReportPlot vibration_program = plot("program", "Vibration program: frequency and amplitude",
+                                        "Hz", {"frequency_hz", "amplitude"}, thinned(program));
     vibration_program.right_axis = {"amplitude"};
     ReportPlot drive = plot("vibration", "Vibration (the actuator's drive)", "full scale",
                             {"vibration"}, vibration->rows());
@@ -185,18 +184,18 @@ void report(const ReportOptions& o) {
     ReportPlot felt_plot = plot("felt", "Felt envelope (P-weighted, as the exports carry it)",
                                 "0 ... 1", {"felt"}, thinned(felt));
     felt_plot.onsets = true;
-    data.plots = {waveform,
-                  loudness,
-                  brightness,
-                  plot("noisiness", "Noisiness (spectral flatness)", "0 tonal ... 1 noise",
-                       {"noisiness"}, column(3)),
-                  pitch,
-                  vibration_program,
-                  drive,
-                  felt_plot,
-                  plot("sensation",
-                       "Sensation level per channel of touch (through " + metered.name + ")",
-                       "dB SL", {"P", "NPI", "NPII", "NPIII", "combined"}, thinned(levels))};
+    data.plots = {
+        waveform,
+        loudness,
+        brightness,
+        plot("noisiness", "Noisiness (spectral flatness)", "0 tonal ... 1 noise", {"noisiness"},
+             column(3)),
+        pitch,
+        vibration_program,
+        drive,
+        felt_plot,
+        plot("sensation", "Sensation level per channel of touch (through " + metered.name + ")",
+             "dB SL", {"P", "NPI", "NPII", "NPIII", "combined"}, thinned(levels))};
     data.sound_wav = wav_file_bytes(sound->first_seconds(kMaxEmbeddedSeconds), rate);
     data.vibration_wav = wav_file_bytes(vibration->first_seconds(kMaxEmbeddedSeconds), rate);
     if (static_cast<double>(sound->size()) / rate > kMaxEmbeddedSeconds)

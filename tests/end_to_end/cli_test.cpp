@@ -34,9 +34,8 @@ std::vector<std::string> names_in(const fs::path& dir) {
 }
 
 TEST_F(Cli, HelpEverywhere) {
-    for (const char* command :
-         {"", "render ", "analyze ", "onsets ", "presets ", "placement ", "meter ", "export ",
-          "report ", "actuators "}) {
+    for (const char* command : {"", "render ", "analyze ", "onsets ", "presets ", "placement ",
+                                "meter ", "export ", "report ", "actuators "}) {
         const Result r = run(std::string(command) + "--help");
         EXPECT_EQ(r.exit_code, 0) << command;
         EXPECT_NE(r.out.find("Usage"), std::string::npos) << command;
@@ -86,10 +85,11 @@ TEST_F(Cli, AnalyzeCsvAndJson) {
     const Result csv = run("analyze " + kAmen);
     ASSERT_EQ(csv.exit_code, 0) << csv.err;
     // How it was made, as a comment line, then the header.
-    EXPECT_EQ(csv.out.rfind("# tactus=" TACTUS_VERSION "; source=loop_amen_full.flac; preset=tfd; "
-                            "actuator=voice-coil\ntime_s,loudness_db,brightness_hz,noisiness,pitch_hz",
-                            0),
-              0u)
+    EXPECT_EQ(
+        csv.out.rfind("# tactus=" TACTUS_VERSION "; source=loop_amen_full.flac; preset=tfd; "
+                      "actuator=voice-coil\ntime_s,loudness_db,brightness_hz,noisiness,pitch_hz",
+                      0),
+        0u)
         << csv.out.substr(0, 200);
     const auto rows = std::count(csv.out.begin(), csv.out.end(), '\n') - 2;
     const double seconds = static_cast<double>(info_of(kAmen).frames) / info_of(kAmen).samplerate;
@@ -379,7 +379,8 @@ TEST_F(Cli, AnalyzeSensationColumnsAgreeWithTheMeter) {
     std::ifstream f(meter_csv);
     std::vector<double> metered;
     while (std::getline(f, line))
-        if (line[0] != 't' && line[0] != '#' && (metered = csv_numbers(line))[0] >= 3.0 - 1e-9) break;
+        if (line[0] != 't' && line[0] != '#' && (metered = csv_numbers(line))[0] >= 3.0 - 1e-9)
+            break;
     ASSERT_EQ(metered.size(), 6u);
     EXPECT_GT(metered[1], 10.0);  // P engaged
     for (size_t c = 0; c < 5; ++c)

@@ -82,8 +82,9 @@ TEST_F(Cli, RenderWritesTheFormatItsOutputNames) {
 TEST_F(Cli, RenderStreamsWavThroughPipesBothWays) {
     const fs::path file = dir_ / "file.wav", piped = dir_ / "piped.wav";
     ASSERT_EQ(run("render " + kAmen + " -o " + file.string()).exit_code, 0);
-    const Result r = run("render - -o - 2>/dev/null < " + kAmen + " | " + kProgram + " render - -o - -q | cat > " +
-                         piped.string(), "cd " + dir_.string() + " && ");
+    const Result r = run("render - -o - 2>/dev/null < " + kAmen + " | " + kProgram +
+                             " render - -o - -q | cat > " + piped.string(),
+                         "cd " + dir_.string() + " && ");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_FALSE(fs::exists(dir_ / "-"));
     // Rendering twice renders the vibration of the vibration: compare one pass instead.
@@ -155,16 +156,18 @@ TEST_F(Cli, VersionSuggestionsAndLooselyTypedNames) {
     EXPECT_NE(typo.exit_code, 0);
     EXPECT_NE(typo.err.find("unknown command 'rendr' (did you mean 'render'?"), std::string::npos)
         << typo.err;
-    const Result preset = run("render " + kTick + " -o " + (dir_ / "x.wav").string() + " -p four_chanel");
+    const Result preset =
+        run("render " + kTick + " -o " + (dir_ / "x.wav").string() + " -p four_chanel");
     EXPECT_NE(preset.exit_code, 0);
     EXPECT_NE(preset.err.find("no preset named 'four_chanel' (did you mean 'four-channel'?"),
               std::string::npos)
         << preset.err;
-    const Result actuator = run("render " + kTick + " -o " + (dir_ / "x.wav").string() + " -a lra-157");
+    const Result actuator =
+        run("render " + kTick + " -o " + (dir_ / "x.wav").string() + " -a lra-157");
     EXPECT_NE(actuator.err.find("did you mean 'lra-175'?"), std::string::npos) << actuator.err;
     // Case and '_' for '-' do not matter.
-    const Result loose = run("render " + kTick + " -o " + (dir_ / "y.wav").string() +
-                             " -p Four_Channel -a LRA_175");
+    const Result loose =
+        run("render " + kTick + " -o " + (dir_ / "y.wav").string() + " -p Four_Channel -a LRA_175");
     EXPECT_EQ(loose.exit_code, 0) << loose.err;
     EXPECT_NE(comment_of(dir_ / "y.wav").find("actuator=lra-175"), std::string::npos);
 }
@@ -187,7 +190,8 @@ TEST_F(Cli, ActuatorsListedAndPresetValuesShown) {
 // Expected warnings (an actuator that cannot follow the preset) are silenced by --quiet, before
 // or after the command; errors are not.
 TEST_F(Cli, QuietSilencesWarningsAndSummariesNotErrors) {
-    const std::string render = "render " + kTick + " -a lra-175 --force -o " + (dir_ / "q.wav").string();
+    const std::string render =
+        "render " + kTick + " -a lra-175 --force -o " + (dir_ / "q.wav").string();
     EXPECT_NE(run(render).err.find("warning"), std::string::npos);
     for (const std::string& command : {"-q " + render, render + " --quiet"}) {
         const Result r = run(command);
@@ -205,10 +209,10 @@ TEST_F(Cli, RenderCarriesHowItWasMadeAndMeterReadsTheActuator) {
     const std::string keep = " --set mapping.frequency.out_min=160 mapping.frequency.out_max=220";
     ASSERT_EQ(run("render " + kAmen + " -o " + lra.string() + " -a lra-175" + keep).exit_code, 0);
     EXPECT_EQ(comment_of(lra, SF_STR_SOFTWARE).rfind("tactus " TACTUS_VERSION, 0), 0u);
-    EXPECT_EQ(comment_of(lra),
-              "tactus=" TACTUS_VERSION "; source=loop_amen_full.flac; preset=tfd; "
-              "set=mapping.frequency.out_min=160 mapping.frequency.out_max=220; "
-              "actuator=lra-175");
+    EXPECT_EQ(comment_of(lra), "tactus=" TACTUS_VERSION
+                               "; source=loop_amen_full.flac; preset=tfd; "
+                               "set=mapping.frequency.out_min=160 mapping.frequency.out_max=220; "
+                               "actuator=lra-175");
     const Result read = run("meter " + lra.string());
     const Result named = run("meter " + lra.string() + " -a lra-175");
     const Result voice_coil = run("meter " + lra.string() + " -a voice-coil");
@@ -259,7 +263,8 @@ TEST_F(Cli, EveryCommandBatchesMirroringFoldersAndSkippingExistingOutputs) {
     const Result again = run("onsets " + tree.string() + " -O " + out.string());
     EXPECT_NE(again.exit_code, 0);
     EXPECT_NE(again.err.find("already exists"), std::string::npos) << again.err;
-    const Result resumed = run("onsets " + tree.string() + " -O " + out.string() + " --skip-existing");
+    const Result resumed =
+        run("onsets " + tree.string() + " -O " + out.string() + " --skip-existing");
     ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
     EXPECT_NE(resumed.err.find("2 output(s) exist: skipped"), std::string::npos) << resumed.err;
     std::ifstream k(kept);

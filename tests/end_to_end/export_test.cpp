@@ -32,7 +32,9 @@ struct Sound {
     const char* name;
     const char* path;
 };
-void PrintTo(const Sound& sound, std::ostream* out) { *out << sound.name; }
+void PrintTo(const Sound& sound, std::ostream* out) {
+    *out << sound.name;
+}
 const Sound kSounds[] = {{"amen", "/usr/share/sonic-pi/samples/loop_amen_full.flac"},
                          {"tick", "/usr/share/sonic-pi/samples/elec_tick.flac"}};
 
@@ -56,7 +58,8 @@ EngineRun run_engine(const fs::path& input) {
     const auto on_output = [&](const float* const* v, int n) {
         for (tactus::AnalysisFrame f; engine.pop_frame(f);) {
             carrier.emplace_back(f.control.sample, f.control.frequency_hz);
-            if (f.features.onset) run.onsets_s.push_back(static_cast<double>(f.features.onset_sample));
+            if (f.features.onset)
+                run.onsets_s.push_back(static_cast<double>(f.features.onset_sample));
         }
         drive.insert(drive.end(), v[0], v[0] + n);
     };
@@ -167,7 +170,8 @@ TEST_P(Export, AhapFollowsAppleSpecAndTheFeltEnvelope) {
             std::vector<std::pair<double, double>> drawn;
             double last = 0;
             for (const Json& p : points) {
-                const double t = p.at("Time").get<double>(), v = p.at("ParameterValue").get<double>();
+                const double t = p.at("Time").get<double>(),
+                             v = p.at("ParameterValue").get<double>();
                 EXPECT_GE(t, last);
                 last = t;
                 EXPECT_GE(v, id == "HapticIntensityControl" ? 0.0 : -1.0);
@@ -175,9 +179,12 @@ TEST_P(Export, AhapFollowsAppleSpecAndTheFeltEnvelope) {
                 drawn.emplace_back(start + t, v);
             }
             // Inside one continuous event.
-            EXPECT_TRUE(std::any_of(continuous.begin(), continuous.end(), [&](const auto& span) {
-                return start >= span.first - 1e-9 && start + last <= span.second + 1e-4;
-            })) << "curve at " << start;
+            EXPECT_TRUE(std::any_of(continuous.begin(), continuous.end(),
+                                    [&](const auto& span) {
+                                        return start >= span.first - 1e-9 &&
+                                               start + last <= span.second + 1e-4;
+                                    }))
+                << "curve at " << start;
             if (id == "HapticIntensityControl") {
                 draw(intensity, drawn);
                 ++curves;
@@ -277,7 +284,8 @@ std::vector<std::string> vorbis_comments(const fs::path& path) {
     size_t p = at + 7;
     const auto u32 = [&] {
         uint32_t v = 0;
-        for (int i = 0; i < 4; ++i) v |= static_cast<uint32_t>(static_cast<uint8_t>(bytes[p + i])) << (8 * i);
+        for (int i = 0; i < 4; ++i)
+            v |= static_cast<uint32_t>(static_cast<uint8_t>(bytes[p + i])) << (8 * i);
         p += 4;
         return v;
     };
@@ -333,7 +341,8 @@ INSTANTIATE_TEST_SUITE_P(Sounds, Export, ::testing::ValuesIn(kSounds),
                          [](const auto& info) { return std::string(info.param.name); });
 
 TEST_F(Cli, ExportRefusesAnUnknownFormatBeforeReadingAudio) {
-    const auto r = run("export " + std::string(kSounds[0].path) + " -o " + (dir_ / "x.wav").string());
+    const auto r =
+        run("export " + std::string(kSounds[0].path) + " -o " + (dir_ / "x.wav").string());
     EXPECT_NE(r.exit_code, 0);
     EXPECT_NE(r.err.find("x.wav: unknown export format"), std::string::npos) << r.err;
     EXPECT_TRUE(fs::is_empty(dir_ / "") || !fs::exists(dir_ / "x.wav"));

@@ -19,15 +19,17 @@ std::vector<double> felt_of_sine(double frequency_hz, double amplitude, double s
     FeltEnvelope envelope(kRateHz);
     std::vector<float> sine(static_cast<size_t>(seconds * kRateHz));
     for (size_t i = 0; i < sine.size(); ++i)
-        sine[i] = static_cast<float>(amplitude * std::sin(2 * std::numbers::pi * frequency_hz * i / kRateHz));
+        sine[i] = static_cast<float>(amplitude *
+                                     std::sin(2 * std::numbers::pi * frequency_hz * i / kRateHz));
     envelope.write(sine.data(), static_cast<int>(sine.size()), frequency_hz);
     return envelope.felt();
 }
 
 TEST(FeltEnvelope, SineReadsItsAmplitudeWeightedByThePThreshold) {
     for (const double f : {40.0, 80.0, 250.0, 400.0}) {
-        const double expected = 0.5 * std::pow(10.0, (perception::p_threshold_db(250) -
-                                                      perception::p_threshold_db(f)) / 20);
+        const double expected =
+            0.5 *
+            std::pow(10.0, (perception::p_threshold_db(250) - perception::p_threshold_db(f)) / 20);
         const std::vector<double> felt = felt_of_sine(f, 0.5, 0.5);
         ASSERT_EQ(felt.size(), 500u);
         for (size_t i = 0; i < felt.size(); ++i)

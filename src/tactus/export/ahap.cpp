@@ -10,16 +10,24 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-// x to `per_unit` steps, divided back by a whole number: prints short (0.0676, not 0.06760000000000001).
-double rounded(double x, double per_unit) { return std::round(x * per_unit) / per_unit; }
-double time_value(double t) { return rounded(t, 1e4); }
-double level(double v) { return rounded(std::clamp(v, 0.0, 1.0), 1e3); }
+// x to `per_unit` steps, divided back by a whole number: prints short (0.0676, not
+// 0.06760000000000001).
+double rounded(double x, double per_unit) {
+    return std::round(x * per_unit) / per_unit;
+}
+double time_value(double t) {
+    return rounded(t, 1e4);
+}
+double level(double v) {
+    return rounded(std::clamp(v, 0.0, 1.0), 1e3);
+}
 
 // The breakpoints within [begin, end], with the envelope's values at both ends.
 std::vector<Breakpoint> window(const std::vector<Breakpoint>& points, double begin, double end) {
     const auto value_at = [&](double t) {
-        const auto after = std::lower_bound(points.begin(), points.end(), t,
-                                            [](const Breakpoint& p, double x) { return p.time_s < x; });
+        const auto after =
+            std::lower_bound(points.begin(), points.end(), t,
+                             [](const Breakpoint& p, double x) { return p.time_s < x; });
         if (after == points.begin()) return points.front().value;
         if (after == points.end()) return points.back().value;
         const auto before = after - 1;
@@ -69,14 +77,13 @@ std::string ahap_text(const HapticTrack& track) {
         const double end = std::min(duration_s, begin + kAhapMaxEventS);
         // The event plays at full intensity and zero sharpness; the curves set both (intensity
         // control multiplies, sharpness control adds).
-        pattern.push_back(
-            {{"Event",
-              {{"Time", time_value(begin)},
-               {"EventType", "HapticContinuous"},
-               {"EventDuration", time_value(end - begin)},
-               {"EventParameters",
-                {{{"ParameterID", "HapticIntensity"}, {"ParameterValue", 1.0}},
-                 {{"ParameterID", "HapticSharpness"}, {"ParameterValue", 0.0}}}}}}});
+        pattern.push_back({{"Event",
+                            {{"Time", time_value(begin)},
+                             {"EventType", "HapticContinuous"},
+                             {"EventDuration", time_value(end - begin)},
+                             {"EventParameters",
+                              {{{"ParameterID", "HapticIntensity"}, {"ParameterValue", 1.0}},
+                               {{"ParameterID", "HapticSharpness"}, {"ParameterValue", 0.0}}}}}}});
         add_curves(pattern, "HapticIntensityControl", window(intensity, begin, end));
         add_curves(pattern, "HapticSharpnessControl", window(sharpness, begin, end));
     }

@@ -17,7 +17,8 @@ double FeltEnvelope::weight(double frequency_hz) {
 
 void FeltEnvelope::write(const float* vibration, int count, double carrier_hz) {
     for (int i = 0; i < count; ++i, ++samples_) {
-        const auto step = static_cast<size_t>(static_cast<double>(samples_) / sample_rate_hz_ / kStepS);
+        const auto step =
+            static_cast<size_t>(static_cast<double>(samples_) / sample_rate_hz_ / kStepS);
         if (step >= step_peak_.size()) {
             step_peak_.resize(step + 1, 0.0);
             carrier_hz_.resize(step + 1, carrier_hz);

@@ -21,8 +21,8 @@
 
 namespace tactus {
 
-inline constexpr double kAhapMaxEventS = 30.0;   // a continuous event's longest duration
-inline constexpr int kAhapMaxCurvePoints = 16;   // control points per ParameterCurve
+inline constexpr double kAhapMaxEventS = 30.0;       // a continuous event's longest duration
+inline constexpr int kAhapMaxCurvePoints = 16;       // control points per ParameterCurve
 inline constexpr int kAndroidWaveformApiLevel = 26;  // VibrationEffect.createWaveform
 inline constexpr int kAndroidMaxAmplitude = 255;
 

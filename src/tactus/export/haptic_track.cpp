@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <optional>
 
 #include "tactus/export/felt_envelope.hpp"
 #include "tactus/io/audio_reader.hpp"
@@ -133,8 +134,9 @@ HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engi
     for (const auto& [sample, frequency_hz] : onsets) {
         const double time_s = static_cast<double>(sample) / summary.sample_rate_hz;
         const auto first = static_cast<size_t>(std::max(0.0, time_s / HapticTrack::kStepS));
-        const size_t last = std::min(track.intensity.size(),
-                                     first + static_cast<size_t>(kOnsetPeakWindowS / HapticTrack::kStepS));
+        const size_t last =
+            std::min(track.intensity.size(),
+                     first + static_cast<size_t>(kOnsetPeakWindowS / HapticTrack::kStepS));
         double peak = 0;
         for (size_t i = first; i < last; ++i) peak = std::max(peak, track.intensity[i]);
         track.onsets.push_back({time_s, peak, sharpness_of(frequency_hz)});
@@ -157,7 +159,7 @@ std::vector<Breakpoint> simplify(const std::vector<double>& values, double step_
         size_t at = a;
         for (size_t i = a + 1; i < b; ++i) {
             const double line = values[a] + (values[b] - values[a]) * static_cast<double>(i - a) /
-                                                 static_cast<double>(b - a);
+                                                static_cast<double>(b - a);
             if (const double d = std::abs(values[i] - line); d > worst) {
                 worst = d;
                 at = i;

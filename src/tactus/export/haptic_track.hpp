@@ -16,7 +16,6 @@
 
 namespace tactus {
 
-
 struct HapticOnset {
     double time_s = 0;
     double intensity = 0;  // 0 ... 1: the felt peak of its pulse, on the envelope's scale

@@ -22,9 +22,10 @@ constexpr const char* kDygraphsDir = "/usr/share/javascript/dygraphs";  // libjs
 std::string read_text(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in)
-        throw std::runtime_error(fmt::format(
-            "{}: cannot read dygraphs (install Debian's libjs-dygraphs, or set TACTUS_DYGRAPHS_DIR)",
-            path.string()));
+        throw std::runtime_error(
+            fmt::format("{}: cannot read dygraphs (install Debian's libjs-dygraphs, or set "
+                        "TACTUS_DYGRAPHS_DIR)",
+                        path.string()));
     std::stringstream s;
     s << in.rdbuf();
     return s.str();
@@ -34,7 +35,7 @@ std::string read_text(const fs::path& path) {
 std::string inlined(std::string text, const std::string& closing_tag) {
     for (size_t at; (at = text.find("//# sourceMappingURL=")) != std::string::npos;)
         text.erase(at, text.find('\n', at) == std::string::npos ? std::string::npos
-                                                                 : text.find('\n', at) - at);
+                                                                : text.find('\n', at) - at);
     for (size_t at = 0; (at = text.find(closing_tag, at)) != std::string::npos;)
         text.replace(at, 2, "<\\/");
     return text;
@@ -44,11 +45,20 @@ std::string escaped(const std::string& text) {
     std::string out;
     for (const char c : text) {
         switch (c) {
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '&': out += "&amp;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '&':
+                out += "&amp;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            default:
+                out += c;
         }
     }
     return out;
@@ -179,13 +189,20 @@ std::string report_html(const ReportData& data, const Dygraphs& dygraphs) {
             for (const double x : row) r.push_back(number(x));
             rows.push_back(std::move(r));
         }
-        plots.push_back({{"id", p.id}, {"title", p.title}, {"ylabel", p.y_label},
-                         {"labels", p.labels}, {"rows", std::move(rows)}, {"log", p.log_y},
-                         {"onsets", p.onsets}, {"band", p.band}, {"points", p.points},
+        plots.push_back({{"id", p.id},
+                         {"title", p.title},
+                         {"ylabel", p.y_label},
+                         {"labels", p.labels},
+                         {"rows", std::move(rows)},
+                         {"log", p.log_y},
+                         {"onsets", p.onsets},
+                         {"band", p.band},
+                         {"points", p.points},
                          {"right", p.right_axis}});
-        divs += fmt::format("<div class=\"legend\" id=\"{0}-legend\"></div>\n"
-                            "<div class=\"plot\" id=\"{0}\"></div>\n",
-                            p.id);
+        divs += fmt::format(
+            "<div class=\"legend\" id=\"{0}-legend\"></div>\n"
+            "<div class=\"plot\" id=\"{0}\"></div>\n",
+            p.id);
     }
     Json onsets = Json::array();
     for (const double t : data.onsets_s) onsets.push_back(number(t));
@@ -194,9 +211,10 @@ std::string report_html(const ReportData& data, const Dygraphs& dygraphs) {
         summary += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", escaped(what), escaped(value));
     const auto player = [](const char* label, const std::string& wav) {
         if (wav.empty()) return std::string();
-        return fmt::format("<p><span>{}</span><audio controls src=\"data:audio/wav;base64,{}\">"
-                           "</audio></p>\n",
-                           label, base64(wav));
+        return fmt::format(
+            "<p><span>{}</span><audio controls src=\"data:audio/wav;base64,{}\">"
+            "</audio></p>\n",
+            label, base64(wav));
     };
     std::string page;
     page += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
@@ -218,8 +236,9 @@ audio { vertical-align: middle; margin-left: 8px; width: 480px; }
     page += fmt::format("<h1>{}</h1>\n<table>\n{}</table>\n", escaped(data.title), summary);
     page += player("sound", data.sound_wav) + player("vibration", data.vibration_wav);
     if (!data.note.empty()) page += fmt::format("<p><small>{}</small></p>\n", escaped(data.note));
-    page += "<p><small>Drag to zoom (every plot follows), double-click to zoom out; red lines: "
-            "onsets.</small></p>\n";
+    page +=
+        "<p><small>Drag to zoom (every plot follows), double-click to zoom out; red lines: "
+        "onsets.</small></p>\n";
     page += "<div id=\"status\">not drawn</div><div id=\"errors\"></div>\n";
     page += divs;
     page += "<script type=\"application/json\" id=\"plot-data\">" +

@@ -15,13 +15,13 @@ namespace tactus {
 
 struct ReportPlot {
     std::string id, title, y_label;
-    std::vector<std::string> labels;         // the series' names, after "time_s"
-    std::vector<std::vector<double>> rows;   // time_s, then one value per series (NaN: a gap)
+    std::vector<std::string> labels;        // the series' names, after "time_s"
+    std::vector<std::vector<double>> rows;  // time_s, then one value per series (NaN: a gap)
     bool log_y = false;
-    bool onsets = false;                     // draw the onsets as lines under it
-    bool band = false;                       // one series as min/max rows: [t, min, max]
-    bool points = false;                     // draw each value as a dot (sparse series)
-    std::vector<std::string> right_axis;     // series drawn against a second y axis
+    bool onsets = false;                  // draw the onsets as lines under it
+    bool band = false;                    // one series as min/max rows: [t, min, max]
+    bool points = false;                  // draw each value as a dot (sparse series)
+    std::vector<std::string> right_axis;  // series drawn against a second y axis
 };
 
 struct ReportData {

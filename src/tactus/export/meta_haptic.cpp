@@ -10,10 +10,17 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-// x to `per_unit` steps, divided back by a whole number: prints short (0.0676, not 0.06760000000000001).
-double rounded(double x, double per_unit) { return std::round(x * per_unit) / per_unit; }
-double time_value(double t) { return rounded(t, 1e4); }
-double level(double v) { return rounded(std::clamp(v, 0.0, 1.0), 1e3); }
+// x to `per_unit` steps, divided back by a whole number: prints short (0.0676, not
+// 0.06760000000000001).
+double rounded(double x, double per_unit) {
+    return std::round(x * per_unit) / per_unit;
+}
+double time_value(double t) {
+    return rounded(t, 1e4);
+}
+double level(double v) {
+    return rounded(std::clamp(v, 0.0, 1.0), 1e3);
+}
 
 }  // namespace
 
@@ -27,7 +34,8 @@ std::string meta_haptic_text(const HapticTrack& track) {
         const HapticOnset* emphasis;
     };
     std::vector<Row> rows;
-    for (const Breakpoint& p : points) rows.push_back({time_value(p.time_s), level(p.value), nullptr});
+    for (const Breakpoint& p : points)
+        rows.push_back({time_value(p.time_s), level(p.value), nullptr});
     for (const HapticOnset& onset : track.onsets) {
         const double t = time_value(std::min(onset.time_s, points.back().time_s));
         const auto at = std::lower_bound(rows.begin(), rows.end(), t,
@@ -51,7 +59,8 @@ std::string meta_haptic_text(const HapticTrack& track) {
         if (time_value(p.time_s) <= end_s)
             frequency.push_back({{"time", time_value(p.time_s)}, {"frequency", level(p.value)}});
     if (frequency.size() < 2)
-        frequency = Json::array({{{"time", 0.0}, {"frequency", 0.0}}, {{"time", end_s}, {"frequency", 0.0}}});
+        frequency = Json::array(
+            {{{"time", 0.0}, {"frequency", 0.0}}, {{"time", end_s}, {"frequency", 0.0}}});
 
     const Json haptic = {
         {"version", {{"major", 1}, {"minor", 0}, {"patch", 0}}},
@@ -61,7 +70,8 @@ std::string meta_haptic_text(const HapticTrack& track) {
           {"project", ""},
           {"tags", Json::array()},
           {"description", track.info.describe()}}},
-        {"signals", {{"continuous", {{"envelopes", {{"amplitude", amplitude}, {"frequency", frequency}}}}}}}};
+        {"signals",
+         {{"continuous", {{"envelopes", {{"amplitude", amplitude}, {"frequency", frequency}}}}}}}};
     return haptic.dump(1) + "\n";
 }
 
@@ -80,8 +90,10 @@ std::string android_waveform_text(const HapticTrack& track) {
             low = l;
             high = h;
         }
-        const int amplitude = static_cast<int>(std::lround(0.5 * (low + high) * kAndroidMaxAmplitude));
-        const auto ms = static_cast<int64_t>(std::lround(static_cast<double>(end - first) * ms_per_step));
+        const int amplitude =
+            static_cast<int>(std::lround(0.5 * (low + high) * kAndroidMaxAmplitude));
+        const auto ms =
+            static_cast<int64_t>(std::lround(static_cast<double>(end - first) * ms_per_step));
         if (!amplitudes.empty() && amplitudes.back().get<int>() == amplitude) {
             timings.back() = timings.back().get<int64_t>() + ms;
         } else {
@@ -96,7 +108,8 @@ std::string android_waveform_text(const HapticTrack& track) {
     const Json waveform = {
         {"api_level", kAndroidWaveformApiLevel},
         {"call", "VibrationEffect.createWaveform(timings, amplitudes, repeat)"},
-        {"requires", "Vibrator.hasAmplitudeControl() (else amplitudes other than 0 play at the default)"},
+        {"requires",
+         "Vibrator.hasAmplitudeControl() (else amplitudes other than 0 play at the default)"},
         {"repeat", -1},
         {"duration_ms", total_ms},
         {"timings", timings},

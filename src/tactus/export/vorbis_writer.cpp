@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <vorbis/vorbisenc.h>
 
+#include <cerrno>
 #include <cstring>
 #include <random>
 #include <stdexcept>
@@ -21,11 +22,14 @@ struct VorbisWriter::State {
 
 VorbisWriter::VorbisWriter(const std::filesystem::path& path, double sample_rate_hz, int channels,
                            const std::vector<std::pair<std::string, std::string>>& comments)
-    : path_(path), temporary_(temporary_path_for(path)), channels_(channels),
+    : path_(path),
+      temporary_(temporary_path_for(path)),
+      channels_(channels),
       state_(std::make_unique<State>()) {
     State& s = *state_;
     vorbis_info_init(&s.info);
-    if (vorbis_encode_init_vbr(&s.info, channels, static_cast<long>(sample_rate_hz), kQuality) != 0) {
+    if (vorbis_encode_init_vbr(&s.info, channels, static_cast<long>(sample_rate_hz), kQuality) !=
+        0) {
         vorbis_info_clear(&s.info);
         state_.reset();
         throw std::runtime_error(fmt::format("{}: Vorbis cannot encode {} channels at {:g} Hz",
@@ -41,7 +45,8 @@ VorbisWriter::VorbisWriter(const std::filesystem::path& path, double sample_rate
         throw std::runtime_error(fmt::format("{}: cannot write: {}", path.string(), reason));
     }
     vorbis_comment_init(&s.comment);
-    for (const auto& [tag, value] : comments) vorbis_comment_add_tag(&s.comment, tag.c_str(), value.c_str());
+    for (const auto& [tag, value] : comments)
+        vorbis_comment_add_tag(&s.comment, tag.c_str(), value.c_str());
     vorbis_analysis_init(&s.dsp, &s.info);
     vorbis_block_init(&s.dsp, &s.block);
     ogg_stream_init(&s.stream, static_cast<int>(std::random_device{}() & 0x7fffffff));

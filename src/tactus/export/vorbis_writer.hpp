@@ -14,7 +14,8 @@ namespace tactus {
 
 class VorbisWriter {
   public:
-    static constexpr float kQuality = 0.6f;  // libvorbis VBR quality, -0.1 ... 1 (~ 160 kb/s stereo)
+    static constexpr float kQuality =
+        0.6f;  // libvorbis VBR quality, -0.1 ... 1 (~ 160 kb/s stereo)
 
     // comments: (TAG, value) pairs. Throws std::runtime_error naming the file.
     VorbisWriter(const std::filesystem::path& path, double sample_rate_hz, int channels,

@@ -1,19 +1,18 @@
 #include "tactus/io/audio_reader.hpp"
 
-#include "tactus/dsp/downmix.hpp"
-
-#include <fmt/format.h>
-
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
-#include <cstring>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+
+#include "tactus/dsp/downmix.hpp"
 
 namespace tactus {
 namespace {
@@ -47,7 +46,8 @@ std::string truncation(SNDFILE* file) {
 int stdin_descriptor() {
     static const int spooled = [] {
         if (::lseek(STDIN_FILENO, 0, SEEK_CUR) >= 0) return STDIN_FILENO;  // a file: as it is
-        std::string name = (std::filesystem::temp_directory_path() / "tactus-stdin-XXXXXX").string();
+        std::string name =
+            (std::filesystem::temp_directory_path() / "tactus-stdin-XXXXXX").string();
         const int fd = ::mkstemp(name.data());
         if (fd < 0) return -1;
         ::unlink(name.c_str());
@@ -145,7 +145,8 @@ int AudioReader::read(float* const* out, int max_frames) {
 
 ChannelBlock::ChannelBlock(int channels, int frames)
     : samples_(static_cast<size_t>(channels) * frames), pointers_(static_cast<size_t>(channels)) {
-    for (int c = 0; c < channels; ++c) pointers_[c] = samples_.data() + static_cast<size_t>(c) * frames;
+    for (int c = 0; c < channels; ++c)
+        pointers_[c] = samples_.data() + static_cast<size_t>(c) * frames;
 }
 
 MonoAudio read_mono(const std::filesystem::path& path) {

@@ -34,7 +34,8 @@ constexpr Container kContainers[] = {
 
 std::string writable_sound_extensions() {
     std::string text;
-    for (const Container& c : kContainers) text += (text.empty() ? "" : ", ") + std::string(c.extension);
+    for (const Container& c : kContainers)
+        text += (text.empty() ? "" : ", ") + std::string(c.extension);
     return text;
 }
 
@@ -53,9 +54,9 @@ int writable_sound_format(const std::filesystem::path& path, SampleFormat sample
     switch (container->samples) {
         case Samples::compressed:
             if (sample != SampleFormat::automatic)
-                throw std::runtime_error(fmt::format(
-                    "{}: {} is compressed and has no sample format to choose", path.string(),
-                    extension));
+                throw std::runtime_error(
+                    fmt::format("{}: {} is compressed and has no sample format to choose",
+                                path.string(), extension));
             return container->format;
         case Samples::pcm_only:
             if (sample == SampleFormat::float32)
@@ -67,8 +68,8 @@ int writable_sound_format(const std::filesystem::path& path, SampleFormat sample
             break;
     }
     return container->format | (sample == SampleFormat::pcm16   ? SF_FORMAT_PCM_16
-                                 : sample == SampleFormat::pcm24 ? SF_FORMAT_PCM_24
-                                                                 : SF_FORMAT_FLOAT);
+                                : sample == SampleFormat::pcm24 ? SF_FORMAT_PCM_24
+                                                                : SF_FORMAT_FLOAT);
 }
 
 AudioWriter::AudioWriter(const std::filesystem::path& path, double sample_rate_hz, int channels,

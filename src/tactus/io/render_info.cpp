@@ -36,10 +36,14 @@ RenderInfo RenderInfo::from_comment(const std::string& text) {
         const size_t equals = field.find('=');
         if (equals == std::string::npos) continue;
         const std::string key = field.substr(0, equals), value = field.substr(equals + 1);
-        if (key == "tactus") info.version = value;
-        else if (key == "source") info.source = value;
-        else if (key == "preset") info.preset = value;
-        else if (key == "actuator") info.actuator = value;
+        if (key == "tactus")
+            info.version = value;
+        else if (key == "source")
+            info.source = value;
+        else if (key == "preset")
+            info.preset = value;
+        else if (key == "actuator")
+            info.actuator = value;
         else if (key == "set") {
             std::istringstream words(value);
             for (std::string w; words >> w;) info.changes.push_back(w);

@@ -80,10 +80,9 @@ std::filesystem::path resolve_toml(std::string_view name_or_path,
         names.push_back(name);
     }
     const std::string nearest = nearest_name(name_or_path, names);
-    throw std::runtime_error(fmt::format("no {} named '{}' ({}known: {})", kind,
-                                         printable(name_or_path),
-                                         nearest.empty() ? "" : "did you mean '" + nearest + "'? ",
-                                         known));
+    throw std::runtime_error(
+        fmt::format("no {} named '{}' ({}known: {})", kind, printable(name_or_path),
+                    nearest.empty() ? "" : "did you mean '" + nearest + "'? ", known));
 }
 
 }  // namespace tactus

@@ -1,7 +1,7 @@
 #include "tactus/io/temporary_path.hpp"
 
-#include <fmt/format.h>
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <limits.h>
 #include <signal.h>
 #include <unistd.h>
@@ -42,8 +42,7 @@ void untrack(const std::filesystem::path& temporary) noexcept {
 // The file writing `target` replaces: a symlink's final target (the link stays), else target.
 std::filesystem::path replaced_file(const std::filesystem::path& target) {
     std::error_code error;
-    if (!std::filesystem::is_symlink(std::filesystem::symlink_status(target, error)))
-        return target;
+    if (!std::filesystem::is_symlink(std::filesystem::symlink_status(target, error))) return target;
     const std::filesystem::path resolved = std::filesystem::weakly_canonical(target, error);
     return error ? target : resolved;
 }
@@ -79,8 +78,8 @@ bool written_in_place(const std::filesystem::path& target) {
     if (target == "-") return true;
     std::error_code error;
     const auto status = std::filesystem::status(target, error);  // follows symlinks
-    return !error && std::filesystem::exists(status) &&
-           !std::filesystem::is_regular_file(status) && !std::filesystem::is_directory(status);
+    return !error && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
+           !std::filesystem::is_directory(status);
 }
 
 std::filesystem::path temporary_path_for(const std::filesystem::path& target) {

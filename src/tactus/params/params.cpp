@@ -212,7 +212,6 @@ constexpr bool ids_unique() {
 }
 static_assert(ids_unique(), "stable ids are unique");
 
-
 }  // namespace
 
 std::span<const ParamSpec> param_table() {
