@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config clang-format clang libclang-rt-14-dev
-  libsndfile1-dev libfftw3-dev libtomlplusplus-dev libreaderwriterqueue-dev nlohmann-json3-dev libcli11-dev libfmt-dev
+  libsndfile1-dev libvorbis-dev libogg-dev libfftw3-dev libtomlplusplus-dev libreaderwriterqueue-dev nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   sonic-pi-samples aubio-tools sox puredata-core puredata-extra puredata-dev time
   python3 python3-numpy python3-scipy python3-soundfile python3-mir-eval
@@ -13,6 +13,7 @@ packages=(
   dpf-source liblilv-dev lv2-dev lilv-utils sordi jackd2 ardour
   python3-dev pybind11-dev python3-pytest python3-matplotlib python3-distributed
   vamp-plugin-sdk vamp-examples
+  libjs-dygraphs chromium python3-pil
 )
 
 missing=()

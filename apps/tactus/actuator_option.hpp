@@ -2,11 +2,11 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
-#include <iostream>
 #include <string>
 
-#include "tactus/io/actuator_file.hpp"
+#include "global_options.hpp"
 #include "tactus/actuator/warnings.hpp"
+#include "tactus/io/actuator_file.hpp"
 
 namespace tactus::cli {
 
@@ -15,12 +15,12 @@ inline void add_actuator_option(CLI::App& command, std::string& actuator, const 
 }
 
 // Loads the profile (one-line error if it is missing or invalid) and prints on stderr, one
-// line each, what the settings ask of it that it cannot do.
+// line each, what the settings ask of it that it cannot do (unless --quiet).
 inline ActuatorProfile load_actuator_for(const std::string& name_or_path,
                                          const Settings& settings) {
     ActuatorProfile actuator = load_actuator(resolve_actuator(name_or_path));
     for (const auto& warning : actuator_warnings(actuator, settings))
-        std::cerr << "tactus: warning: " << warning << '\n';
+        note("tactus: warning: " + warning);
     return actuator;
 }
 

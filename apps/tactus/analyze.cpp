@@ -1,7 +1,8 @@
-// tactus analyze IN [-o FILE.csv|FILE.json]: every analysis frame's features, the vibration
-// parameters mapped from them, and the sensation level each channel of touch receives from the
-// vibration through an actuator (perception/meter.hpp; readings are causal, every 10 ms).
-// Streams: constant memory for any length.
+// tactus analyze IN [-o FILE.csv|FILE.json]: how it was made (version, preset, settings,
+// actuator), then every analysis frame's features, the vibration parameters mapped from them, and
+// the sensation level each channel of touch receives from the vibration through an actuator
+// (perception/meter.hpp; readings are causal, every 10 ms). Streams: constant memory for any
+// length.
 #include <fmt/format.h>
 
 #include <iostream>
@@ -9,11 +10,14 @@
 #include <optional>
 
 #include "actuator_option.hpp"
+#include "batch_plan.hpp"
 #include "commands.hpp"
 #include "common.hpp"
+#include "global_options.hpp"
 #include "pipeline_options.hpp"
 #include "tactus/engine/analysis_rows.hpp"
 #include "tactus/io/actuator_file.hpp"
+#include "tactus/io/render_info.hpp"
 #include "tactus/io/text_output.hpp"
 
 namespace tactus::cli {
@@ -22,16 +26,24 @@ namespace {
 struct AnalyzeOptions {
     std::string input, output, format, actuator;
     bool force = false;
+    BatchOptions batch;
     PipelineOptions pipeline;
 };
 
-// Writes AnalysisRows as CSV or JSON.
+// Writes AnalysisRows as CSV or JSON. How the frames were made heads the output: a comment line
+// atop the CSV, the "tactus" field of the JSON object (its rows in "frames").
 class RowWriter {
   public:
-    RowWriter(std::ostream& out, bool json) : out_(out), json_(json) {
+    RowWriter(std::ostream& out, bool json, const RenderInfo& how) : out_(out), json_(json) {
         if (json_) {
-            out_ << "[\n";
+            const nlohmann::ordered_json info = {{"version", how.version},
+                                                 {"source", how.source},
+                                                 {"preset", how.preset},
+                                                 {"set", how.changes},
+                                                 {"actuator", how.actuator}};
+            out_ << "{\"tactus\": " << info.dump() << ",\n\"frames\": [\n";
         } else {
+            out_ << "# " << how.comment() << '\n';
             for (size_t i = 0; i < AnalysisRows::kColumns.size(); ++i)
                 out_ << (i ? "," : "") << AnalysisRows::kColumns[i];
             out_ << '\n';
@@ -51,7 +63,7 @@ class RowWriter {
         ++rows_;
     }
     void finish() {
-        if (json_) out_ << "\n]\n";
+        if (json_) out_ << "\n]}\n";
     }
 
   private:
@@ -73,11 +85,16 @@ void analyze(const AnalyzeOptions& o) {
     std::optional<ActuatorProfile> actuator;
     if (!o.actuator.empty()) actuator = load_actuator_for(o.actuator, settings);
     engine.set_actuator(actuator);
+    const ActuatorProfile metered =
+        actuator ? *actuator : load_actuator(resolve_actuator(kDefaultActuator));
+    const RenderInfo how{.source = std::filesystem::path(o.input).filename().string(),
+                         .preset = o.pipeline.preset,
+                         .changes = o.pipeline.assignments,
+                         .actuator = metered.name,
+                         .version = TACTUS_VERSION};
     TextOutput output(out_path);
-    RowWriter writer(output.stream(), format == "json");
-    AnalysisRows rows(engine,
-                      actuator ? *actuator : load_actuator(resolve_actuator(kDefaultActuator)),
-                      [&](const AnalysisRows::Row& row) { writer.write(row); });
+    RowWriter writer(output.stream(), format == "json", how);
+    AnalysisRows rows(engine, metered, [&](const AnalysisRows::Row& row) { writer.write(row); });
     // A block brings at most one frame per hop; the shortest hop (analysis.hop_ms at its least,
     // 0.5 ms, at the lowest rate) is 4 samples: the queue holds every frame of a block.
     constexpr int kShortestHopSamples = static_cast<int>(0.5e-3 * Engine::kMinSampleRateHz);
@@ -95,9 +112,8 @@ void analyze(const AnalyzeOptions& o) {
     writer.finish();
     output.commit();
     if (!is_stdout(o.output))
-        std::cerr << fmt::format("{}: {} frames every {:.2f} ms, {} onsets\n", o.output,
-                                 rows.rows(), 1e3 * engine.hop_samples() / engine.sample_rate_hz(),
-                                 rows.onsets());
+        note(fmt::format("{}: {} frames every {:.2f} ms, {} onsets", o.output, rows.rows(),
+                         1e3 * engine.hop_samples() / engine.sample_rate_hz(), rows.onsets()));
 }
 
 }  // namespace
@@ -106,19 +122,26 @@ void add_analyze(CLI::App& app) {
     auto options = std::make_shared<AnalyzeOptions>();
     CLI::App* command = app.add_subcommand(
         "analyze", "print features and vibration parameters for every analysis frame");
-    command->add_option("input", options->input, "audio file")
-        ->required()
-        ->check(CLI::ExistingFile);
-    command->add_option("-o,--output", options->output,
-                        "FILE.csv or FILE.json (default: CSV on stdout)");
+    options->batch.add_to(*command, "FILE.csv or FILE.json, one input (default: CSV on stdout)",
+                          ".features.csv (.json with --format json)");
     command->add_option("--format", options->format, "csv or json (default: from -o's extension)")
         ->check(CLI::IsMember({"csv", "json"}));
     add_actuator_option(*command, options->actuator,
                         "actuator profile (name or FILE.toml): compensate for it as render does "
                         "and meter through it (default: meter through voice-coil)");
-    add_force_option(*command, options->force);
     options->pipeline.add_to(*command);
-    command->callback([options] { analyze(*options); });
+    command->callback([options] {
+        size_t skipped = 0;
+        const auto jobs =
+            plan_batch(options->batch,
+                       options->format == "json" ? ".features.json" : ".features.csv", skipped);
+        run_jobs(options->batch, jobs, "analyze", [&](const BatchJob& job) {
+            AnalyzeOptions one = *options;
+            one.input = job.input.string(), one.output = job.output.string();
+            one.force = options->batch.force;
+            analyze(one);
+        });
+    });
 }
 
 }  // namespace tactus::cli

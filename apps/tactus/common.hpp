@@ -10,6 +10,7 @@
 
 #include "progress.hpp"
 #include "tactus/io/run_file.hpp"
+#include "tactus/io/temporary_path.hpp"
 
 namespace tactus::cli {
 
@@ -23,10 +24,13 @@ inline void refuse_overwriting_input(const std::filesystem::path& input,
 }
 
 // Every command that writes a file checks its output with this before reading any audio: never
-// the input itself, never an existing file unless `force`, and a directory that exists.
+// the input itself, never an existing file unless `force`, and a directory that exists. Stdout,
+// devices and pipes (also behind a symlink such as /dev/stdout) are written into, never
+// replaced.
 inline void check_output(const std::filesystem::path& input, const std::filesystem::path& output,
                          bool force) {
     refuse_overwriting_input(input, output);
+    if (written_in_place(output)) return;  // stdout, a device or a pipe: written into
     std::error_code error;
     if (std::filesystem::is_directory(output, error))
         throw std::runtime_error(fmt::format("{}: is a directory", output.string()));
@@ -37,6 +41,13 @@ inline void check_output(const std::filesystem::path& input, const std::filesyst
     if (!std::filesystem::is_directory(dir, error))
         throw std::runtime_error(fmt::format("{}: cannot write: directory '{}' does not exist",
                                              output.string(), dir.string()));
+}
+
+// An input: an existing file, or "-" for standard input.
+inline CLI::Validator input_file() {
+    return CLI::Validator(
+        [](std::string& path) { return path == "-" ? std::string() : CLI::ExistingFile(path); },
+        "FILE or - (stdin)");
 }
 
 // The --force flag of every command that writes a file.

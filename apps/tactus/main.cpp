@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "global_options.hpp"
 #include "tactus/io/temporary_path.hpp"
 
 int main(int argc, char** argv) {
@@ -12,6 +13,7 @@ int main(int argc, char** argv) {
     app.failure_message([](const CLI::App*, const CLI::Error& e) {  // one line, like every error
         return std::string("tactus: error: ") + e.what() + '\n';
     });
+    tactus::cli::add_global_options(app);
     tactus::remove_temporaries_on_signals();  // Ctrl-C or kill leaves no partial output
     tactus::cli::add_render(app);
     tactus::cli::add_analyze(app);
@@ -19,6 +21,13 @@ int main(int argc, char** argv) {
     tactus::cli::add_presets(app);
     tactus::cli::add_placement(app);
     tactus::cli::add_meter(app);
+    tactus::cli::add_export(app);
+    tactus::cli::add_actuators(app);
+    tactus::cli::add_report(app);
+    if (const auto unknown = tactus::cli::unknown_command(app, argc, argv)) {
+        std::cerr << "tactus: error: " << *unknown << '\n';
+        return 2;
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

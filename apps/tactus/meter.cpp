@@ -5,12 +5,17 @@
 #include <fmt/format.h>
 
 #include <iostream>
+#include <sstream>
 
 #include "actuator_option.hpp"
+#include "batch_plan.hpp"
 #include "commands.hpp"
 #include "common.hpp"
+#include "global_options.hpp"
 #include "tactus/dsp/downmix.hpp"
 #include "tactus/io/actuator_file.hpp"
+#include "tactus/io/audio_reader.hpp"
+#include "tactus/io/render_info.hpp"
 #include "tactus/io/text_output.hpp"
 
 namespace tactus::cli {
@@ -19,8 +24,9 @@ namespace {
 using perception::kChannels;
 
 struct MeterOptions {
-    std::string input, output, actuator = std::string(kDefaultActuator);
+    std::string input, output, actuator;  // empty: the one the file was rendered for
     bool force = false;
+    BatchOptions batch;
     double contact_area_cm2 = Settings()[P::perception_contact_area_cm2];
 };
 
@@ -46,11 +52,25 @@ void print_summary(std::ostream& out, const MeterOptions& o, const ActuatorProfi
 
 void meter(const MeterOptions& o) {
     if (!is_stdout(o.output)) check_output(o.input, o.output, o.force);
-    const ActuatorProfile actuator = load_actuator(resolve_actuator(o.actuator));
+    // The actuator named, else the one the file says it was rendered for, else the default.
+    std::string actuator_name = o.actuator;
+    if (actuator_name.empty()) {
+        actuator_name = RenderInfo::from_comment(AudioReader(o.input).comment()).actuator;
+        if (!actuator_name.empty())
+            note(fmt::format("{}: rendered for {}: metered through it", o.input, actuator_name));
+        else
+            actuator_name = kDefaultActuator;
+    }
+    const ActuatorProfile actuator = load_actuator(resolve_actuator(actuator_name));
     std::optional<TextOutput> csv;
     if (!o.output.empty()) {
         csv.emplace(o.output);
-        csv->stream() << "time_s";
+        const RenderInfo how{.source = std::filesystem::path(o.input).filename().string(),
+                             .preset = {},
+                             .changes = {},
+                             .actuator = actuator.name,
+                             .version = TACTUS_VERSION};
+        csv->stream() << "# " << how.comment() << '\n' << "time_s";
         for (const auto& c : kChannels) csv->stream() << ',' << c.name << "_sl_db";
         csv->stream() << ",combined_sl_db\n";
     }
@@ -83,9 +103,11 @@ void meter(const MeterOptions& o) {
         with_progress(progress));
     meter.finish(on_reading);
     if (csv) csv->commit();
-    // The summary is data, on stdout, unless the CSV went there.
-    print_summary(csv && is_stdout(o.output) ? std::cerr : std::cout, o, actuator,
-                  run.frames / run.sample_rate_hz, summariser.summary());
+    // The summary is data, on stdout, unless the CSV went there; written at once, so files
+    // metered in parallel do not mix their lines.
+    std::ostringstream summary;
+    print_summary(summary, o, actuator, run.frames / run.sample_rate_hz, summariser.summary());
+    (csv && is_stdout(o.output) ? std::cerr : std::cout) << summary.str() << std::flush;
 }
 
 }  // namespace
@@ -96,21 +118,30 @@ void add_meter(CLI::App& app) {
         app.add_subcommand("meter",
                            "sensation level of each channel of touch (P, NPI, NPII, NPIII) for a "
                            "vibration file driving an actuator");
-    command->add_option("input", options->input, "vibration file (e.g. from `tactus render`)")
-        ->required()
-        ->check(CLI::ExistingFile);
-    command->add_option("-o,--output", options->output,
-                        "FILE.csv: sensation levels every 10 ms (dB SL, 0 = not engaged)");
-    add_force_option(*command, options->force);
-    add_actuator_option(*command, options->actuator,
-                        "actuator profile (name in actuators/ or FILE.toml; default voice-coil)");
+    options->batch.add_to(*command,
+                          "FILE.csv: sensation levels every 10 ms (dB SL, 0 = not engaged), one "
+                          "input",
+                          ".meter.csv");
+    add_actuator_option(
+        *command, options->actuator,
+        "actuator profile (name in actuators/ or FILE.toml; default: the one the file was "
+        "rendered for, as its comment says, else voice-coil)");
     command
         ->add_option("--contact-area", options->contact_area_cm2,
                      "skin contact area, cm2 (P channel spatial summation)")
         ->check(CLI::Range(spec(P::perception_contact_area_cm2).min,
                            spec(P::perception_contact_area_cm2).max))
         ->capture_default_str();
-    command->callback([options] { meter(*options); });
+    command->callback([options] {
+        size_t skipped = 0;
+        const auto jobs = plan_batch(options->batch, ".meter.csv", skipped);
+        run_jobs(options->batch, jobs, "meter", [&](const BatchJob& job) {
+            MeterOptions one = *options;
+            one.input = job.input.string(), one.output = job.output.string();
+            one.force = options->batch.force;
+            meter(one);
+        });
+    });
 }
 
 }  // namespace tactus::cli

@@ -2,6 +2,7 @@
 // an onset list as aubioonset prints it and as onset evaluation tools read it.
 #include <fmt/format.h>
 
+#include "batch_plan.hpp"
 #include "commands.hpp"
 #include "common.hpp"
 #include "pipeline_options.hpp"
@@ -13,6 +14,7 @@ namespace {
 struct OnsetsOptions {
     std::string input, output;
     bool force = false;
+    BatchOptions batch;
     PipelineOptions pipeline;
 };
 
@@ -44,13 +46,18 @@ void add_onsets(CLI::App& app) {
     auto options = std::make_shared<OnsetsOptions>();
     CLI::App* command =
         app.add_subcommand("onsets", "print one onset per line: onset_s decided_s strength");
-    command->add_option("input", options->input, "audio file")
-        ->required()
-        ->check(CLI::ExistingFile);
-    command->add_option("-o,--output", options->output, "file to write (default: stdout)");
-    add_force_option(*command, options->force);
+    options->batch.add_to(*command, "file to write, one input (default: stdout)", ".onsets.txt");
     options->pipeline.add_to(*command);
-    command->callback([options] { onsets(*options); });
+    command->callback([options] {
+        size_t skipped = 0;
+        const auto jobs = plan_batch(options->batch, ".onsets.txt", skipped);
+        run_jobs(options->batch, jobs, "onsets", [&](const BatchJob& job) {
+            OnsetsOptions one = *options;
+            one.input = job.input.string(), one.output = job.output.string();
+            one.force = options->batch.force;
+            onsets(one);
+        });
+    });
 }
 
 }  // namespace tactus::cli

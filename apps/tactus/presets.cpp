@@ -1,5 +1,6 @@
-// tactus presets [--params | --save FILE]: the presets found, the parameter table they draw
-// on, or a preset (--preset and --set applied) saved with every parameter.
+// tactus presets [--params | --show NAME | --save FILE]: the presets found, the parameter table
+// they draw on, one preset's values, or a preset (--preset and --set applied) saved with every
+// parameter.
 #include <fmt/format.h>
 
 #include <iostream>
@@ -31,8 +32,26 @@ void print_params() {
     }
 }
 
+// Every parameter's value in a preset (with --set applied), its unit, and '*' where it differs
+// from the parameter's default.
+void show_preset(const std::string& name, const std::vector<std::string>& assignments) {
+    const std::filesystem::path path = resolve_preset(name);
+    Settings settings;
+    apply_preset_file(settings, path);
+    for (const auto& a : assignments) apply_assignment(settings, a);
+    std::cout << fmt::format("# {} ({}); * = not the default\n", name, path.string());
+    const Settings defaults;
+    for (const ParamSpec& s : param_table()) {
+        const bool changed = settings[s.param] != defaults[s.param];
+        std::cout << fmt::format("{} {:<36} {:>12} {:<4} {}\n", changed ? '*' : ' ', s.key,
+                                 settings.text_of(s.param), s.unit,
+                                 changed ? "(default " + defaults.text_of(s.param) + ")" : "");
+    }
+}
+
 struct Options {
     bool params = false;
+    std::string show;
     std::filesystem::path save;
     std::string description;
     bool force = false;
@@ -67,12 +86,18 @@ void add_presets(CLI::App& app) {
                      "write --preset with --set applied, every parameter, to FILE.toml (- for "
                      "stdout)")
         ->excludes("--params");
+    command
+        ->add_option("--show", options->show,
+                     "every parameter's value in preset NAME (or FILE.toml), --set applied")
+        ->excludes("--params");
     command->add_option("--description", options->description,
                         "the saved preset's description (default: how it was made)");
     options->pipeline.add_to(*command);
     add_force_option(*command, options->force);
     command->callback([options] {
         if (options->params) return print_params();
+        if (!options->show.empty())
+            return show_preset(options->show, options->pipeline.assignments);
         if (!options->save.empty()) return save_preset(*options);
         for (const auto& p : list_presets())
             std::cout << fmt::format("{:<16} {}  ({})\n", p.name, p.description, p.path.string());

@@ -1,6 +1,7 @@
-// tactus render IN... (-o OUT.wav | -O DIR) [-j N]: audio files -> vibration files (float WAV, N
-// identical channels). Several inputs are rendered in parallel, one file per worker, each with
-// its own Engine.
+// tactus render IN... (-o OUT | -O DIR) [-j N]: audio files -> vibration files (N identical
+// channels, the container the output's extension names, the vibration's tail included, how it
+// was made in the file's comment). Several inputs are rendered in parallel, one file per worker,
+// each with its own Engine.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -11,12 +12,15 @@
 
 #include "actuator_option.hpp"
 #include "batch.hpp"
+#include "batch_plan.hpp"
 #include "commands.hpp"
 #include "common.hpp"
+#include "global_options.hpp"
 #include "pipeline_options.hpp"
 #include "tactus/io/actuator_file.hpp"
 #include "tactus/io/audio_reader.hpp"
 #include "tactus/io/audio_writer.hpp"
+#include "tactus/io/render_info.hpp"
 #include "tactus/io/temporary_path.hpp"
 
 namespace tactus::cli {
@@ -27,18 +31,14 @@ namespace fs = std::filesystem;
 constexpr const char* kOutputSuffix = ".vibration.wav";
 
 struct RenderOptions {
-    std::vector<std::string> inputs;
-    std::string output, output_dir;
+    BatchOptions batch;
+    SampleFormat sample_format = SampleFormat::automatic;
     int channels = 1;
-    int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     std::string actuator;
-    bool force = false;
     PipelineOptions pipeline;
 };
 
-struct Job {
-    fs::path input, output;
-};
+using Job = BatchJob;
 
 // The pulses a render triggers and the loudest its input got (for the summary and the warning
 // that audible input gave no vibration).
@@ -55,37 +55,22 @@ class RenderStats final : public FrameObserver {
     double loudest_db = -INFINITY;
 };
 
-// Where each input's vibration goes: -o for one input, DIR/<stem>.vibration.wav with -O. Refuses
-// (before any audio is read) an output that is its input, that two inputs would share, or that
-// exists already (unless --force).
+// Where each input's vibration goes (batch_plan.hpp: -o for one input, with -O the input's
+// folders mirrored, DIR/.../<stem>.vibration.wav), each in a container libsndfile writes; all
+// refused before any audio is read.
 std::vector<Job> plan(const RenderOptions& o) {
-    if (o.output.empty() == o.output_dir.empty())
+    if (o.batch.output.empty() && o.batch.output_dir.empty())
         throw std::runtime_error("render: give either -o FILE (one input) or -O DIR");
-    if (!o.output.empty() && o.inputs.size() > 1)
-        throw std::runtime_error(fmt::format(
-            "render: -o names one output but {} inputs were given; use -O DIR", o.inputs.size()));
-    std::vector<Job> jobs;
-    std::map<fs::path, fs::path> input_of_output;
-    for (const fs::path input : o.inputs) {
-        const fs::path output =
-            o.output.empty() ? fs::path(o.output_dir) / (input.stem().string() + kOutputSuffix)
-                             : fs::path(o.output);
-        if (const auto [it, added] = input_of_output.emplace(output, input); !added)
-            throw std::runtime_error(fmt::format("{}: both {} and {} would write it",
-                                                 output.string(), it->second.string(),
-                                                 input.string()));
-        if (o.output_dir.empty() || fs::is_directory(o.output_dir))
-            check_output(input, output, o.force);
-        else
-            refuse_overwriting_input(input, output);  // DIR is made below: it holds nothing yet
-        jobs.push_back({input, output});
-    }
+    size_t skipped = 0;
+    std::vector<Job> jobs = plan_batch(o.batch, kOutputSuffix, skipped);
+    for (const Job& job : jobs) writable_sound_format(job.output, o.sample_format);
     return jobs;
 }
 
 // Renders one file; returns its one-line summary. On failure the output is not written.
 std::string render_one(const Job& job, const Settings& settings,
                        const std::optional<ActuatorProfile>& actuator, int channels,
+                       SampleFormat sample_format, const RenderInfo& how,
                        const std::function<void(int64_t done, int64_t total)>& on_progress) {
     Engine engine(settings);
     engine.set_actuators(std::vector<ActuatorOutput>(static_cast<size_t>(channels),
@@ -99,24 +84,29 @@ std::string render_one(const Job& job, const Settings& settings,
             for (int i = 0; i < n; ++i) peak = std::max(peak, std::abs(v[c][i]));
         writer->write(v, n);
     };
+    RenderInfo info = how;
+    info.source = job.input.filename().string();
     const auto open = [&](double sample_rate_hz, int) {
-        writer.emplace(job.output, sample_rate_hz, channels);
+        writer.emplace(job.output, sample_rate_hz, channels, sample_format,
+                       SoundTags{.software = "tactus " + info.version, .comment = info.comment()});
     };
+    // The vibration rings out after the input: a short sound keeps its whole pulse.
     const RunSummary summary = run_file(
-        job.input, engine, {.on_output = write, .on_progress = on_progress, .on_start = open});
+        job.input, engine, {.on_output = write, .on_progress = on_progress, .on_start = open},
+        RunTail::ring_out);
     writer->commit();
     // A drone or a tone that fades in has no onset: a preset that pulses only at onsets leaves it
     // silent. Say so rather than hand back digital silence without a word.
     if (peak == 0 && stats.loudest_db > settings[P::mapping_gate_db])
-        std::cerr << fmt::format(
+        note(fmt::format(
             "tactus: warning: {}: the input is audible (loudness up to {:.0f} dB) but gave no "
             "vibration: it has no onset for the pulses; for sustained sounds try --preset "
-            "sustained\n",
-            job.input.string(), stats.loudest_db);
-    return fmt::format("{}: {:.2f} s at {:g} Hz, {} pulses, peak {:.1f} dBFS, {} channel(s)",
-                       job.output.string(), summary.frames / summary.sample_rate_hz,
-                       summary.sample_rate_hz, stats.onsets,
-                       peak > 0 ? 20 * std::log10(peak) : -INFINITY, channels);
+            "sustained",
+            job.input.string(), stats.loudest_db));
+    return fmt::format(
+        "{}: {:.2f} s at {:g} Hz, {} pulses, peak {:.1f} dBFS, {} channel(s)", job.output.string(),
+        (summary.frames + summary.tail_frames) / summary.sample_rate_hz, summary.sample_rate_hz,
+        stats.onsets, peak > 0 ? 20 * std::log10(peak) : -INFINITY, channels);
 }
 
 // Frames in all inputs, for the progress bar (unreadable inputs count 0 and fail later).
@@ -134,27 +124,36 @@ void render(const RenderOptions& o) {
     const std::vector<Job> jobs = plan(o);
     std::optional<ActuatorProfile> actuator;
     if (!o.actuator.empty()) actuator = load_actuator_for(o.actuator, settings);
-    if (std::error_code error; !o.output_dir.empty() && !fs::is_directory(o.output_dir) &&
-                               !fs::create_directories(o.output_dir, error))
-        throw std::runtime_error(fmt::format("{}: cannot create the output directory: {}",
-                                             o.output_dir, error.message()));
+    const RenderInfo how{.source = {},
+                         .preset = o.pipeline.preset,
+                         .changes = o.pipeline.assignments,
+                         .actuator = actuator ? actuator->name : std::string(),
+                         .version = TACTUS_VERSION};
+    for (const Job& job : jobs)
+        if (std::error_code error; job.output.has_parent_path() &&
+                                   !fs::is_directory(job.output.parent_path()) &&
+                                   !fs::create_directories(job.output.parent_path(), error))
+            throw std::runtime_error(fmt::format("{}: cannot create the output directory: {}",
+                                                 job.output.parent_path().string(),
+                                                 error.message()));
     std::vector<std::string> summaries(jobs.size());
     // Each worker writes through one tracked temporary file.
     const std::vector<std::exception_ptr> errors = run_batch(
-        jobs.size(), std::min(o.jobs, kMaxTrackedTemporaries), [&] { return total_frames(jobs); },
+        jobs.size(), std::min(o.batch.jobs, kMaxTrackedTemporaries),
+        [&] { return total_frames(jobs); },
         jobs.size() == 1 ? "render" : fmt::format("render {} files", jobs.size()),
         [&](size_t i, const AddFrames& add_frames) {
             int64_t reported = 0;
-            summaries[i] =
-                render_one(jobs[i], settings, actuator, o.channels, [&](int64_t done, int64_t) {
-                    add_frames(done - reported);
-                    reported = done;
-                });
+            summaries[i] = render_one(jobs[i], settings, actuator, o.channels, o.sample_format, how,
+                                      [&](int64_t done, int64_t) {
+                                          add_frames(done - reported);
+                                          reported = done;
+                                      });
         });
     size_t failed = 0;
     for (size_t i = 0; i < jobs.size(); ++i) {
         if (!errors[i]) {
-            std::cerr << summaries[i] << '\n';
+            note(summaries[i]);
             continue;
         }
         if (jobs.size() == 1) std::rethrow_exception(errors[i]);
@@ -175,26 +174,23 @@ void render(const RenderOptions& o) {
 void add_render(CLI::App& app) {
     auto options = std::make_shared<RenderOptions>();
     CLI::App* command = app.add_subcommand("render", "render the vibration for audio files");
+    options->batch.add_to(*command,
+                          "vibration file to write, one input: its extension names the format (" +
+                              writable_sound_extensions() + "); - writes WAV to stdout",
+                          kOutputSuffix);
     command
-        ->add_option("inputs", options->inputs,
-                     "audio files (anything libsndfile reads); several need -O")
-        ->required()
-        ->check(CLI::ExistingFile);
-    command->add_option("-o,--output", options->output,
-                        "vibration file to write (.wav), one input");
-    command->add_option("-O,--output-dir", options->output_dir,
-                        "directory for the vibration files: DIR/<input name without its "
-                        "extension>.vibration.wav (created if missing)");
-    command->add_option("-j,--jobs", options->jobs, "files rendered at once, one per thread")
-        ->check(CLI::Range(1, 1024))
-        ->capture_default_str();
+        ->add_option("--sample-format", options->sample_format,
+                     "16, 24 (bit integer) or float (default: float; FLAC 24; none for .ogg/.mp3)")
+        ->transform(CLI::CheckedTransformer(
+            std::map<std::string, SampleFormat>{{"16", SampleFormat::pcm16},
+                                                {"24", SampleFormat::pcm24},
+                                                {"float", SampleFormat::float32}}));
     command->add_option("--channels,-c", options->channels, "identical actuator channels")
         ->check(CLI::Range(1, 64))
         ->capture_default_str();
     add_actuator_option(*command, options->actuator,
                         "actuator profile (name in actuators/ or FILE.toml): compensate its "
                         "response, respect its max drive, warn about what it cannot do");
-    add_force_option(*command, options->force);
     options->pipeline.add_to(*command);
     command->callback([options] { render(*options); });
 }

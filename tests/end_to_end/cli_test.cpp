@@ -36,8 +36,8 @@ std::vector<std::string> names_in(const fs::path& dir) {
 }
 
 TEST_F(Cli, HelpEverywhere) {
-    for (const char* command :
-         {"", "render ", "analyze ", "onsets ", "presets ", "placement ", "meter "}) {
+    for (const char* command : {"", "render ", "analyze ", "onsets ", "presets ", "placement ",
+                                "meter ", "export ", "report ", "actuators "}) {
         const Result r = run(std::string(command) + "--help");
         EXPECT_EQ(r.exit_code, 0) << command;
         EXPECT_NE(r.out.find("Usage"), std::string::npos) << command;
@@ -76,7 +76,7 @@ TEST_F(Cli, RenderWritesFloatWavWithChannelsAtInputRate) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const SF_INFO in = info_of(kAmen), written = info_of(out);
     EXPECT_EQ(written.samplerate, in.samplerate);
-    EXPECT_EQ(written.frames, in.frames);
+    tactus::test::expect_input_plus_tail(written.frames, in.frames, in.samplerate);
     EXPECT_EQ(written.channels, 3);
     EXPECT_EQ(written.format & SF_FORMAT_SUBMASK, SF_FORMAT_FLOAT);
     EXPECT_TRUE(r.out.empty()) << "messages belong on stderr";
@@ -86,8 +86,14 @@ TEST_F(Cli, RenderWritesFloatWavWithChannelsAtInputRate) {
 TEST_F(Cli, AnalyzeCsvAndJson) {
     const Result csv = run("analyze " + kAmen);
     ASSERT_EQ(csv.exit_code, 0) << csv.err;
-    EXPECT_EQ(csv.out.rfind("time_s,loudness_db,brightness_hz,noisiness,pitch_hz", 0), 0u);
-    const auto rows = std::count(csv.out.begin(), csv.out.end(), '\n') - 1;
+    // How it was made, as a comment line, then the header.
+    EXPECT_EQ(
+        csv.out.rfind("# tactus=" TACTUS_VERSION "; source=loop_amen_full.flac; preset=tfd; "
+                      "actuator=voice-coil\ntime_s,loudness_db,brightness_hz,noisiness,pitch_hz",
+                      0),
+        0u)
+        << csv.out.substr(0, 200);
+    const auto rows = std::count(csv.out.begin(), csv.out.end(), '\n') - 2;
     const double seconds = static_cast<double>(info_of(kAmen).frames) / info_of(kAmen).samplerate;
     EXPECT_NEAR(rows, seconds / 0.0029, 0.02 * rows);  // one row per 2.9 ms frame
 
@@ -95,9 +101,14 @@ TEST_F(Cli, AnalyzeCsvAndJson) {
     ASSERT_EQ(run("analyze " + kAmen + " -o " + json.string()).exit_code, 0);
     std::ifstream f(json);
     std::string text((std::istreambuf_iterator<char>(f)), {});
-    EXPECT_EQ(text.front(), '[');
+    EXPECT_EQ(text.rfind("{\"tactus\": {\"version\":\"" TACTUS_VERSION "\",\"source\":"
+                         "\"loop_amen_full.flac\",\"preset\":\"tfd\",\"set\":[],",
+                         0),
+              0u)
+        << text.substr(0, 200);
+    EXPECT_NE(text.find("\"frames\": [\n{\"time_s\""), std::string::npos);
     EXPECT_NE(text.find("\"frequency_hz\""), std::string::npos);
-    EXPECT_EQ(text.substr(text.size() - 2), "]\n");
+    EXPECT_EQ(text.substr(text.size() - 3), "]}\n");
 }
 
 TEST_F(Cli, OnsetsAreAscendingTriples) {
@@ -245,7 +256,9 @@ TEST_F(Cli, RendersSeveralFilesIntoADirectory) {
         const fs::path alone = dir_ / "alone.wav";
         ASSERT_EQ(run("render " + input + " -o " + alone.string() + " --force").exit_code, 0);
         const fs::path batched = out / (fs::path(input).stem().string() + ".vibration.wav");
-        EXPECT_EQ(info_of(batched).frames, info_of(input).frames) << input;
+        EXPECT_EQ(info_of(batched).frames, info_of(alone).frames) << input;
+        tactus::test::expect_input_plus_tail(info_of(batched).frames, info_of(input).frames,
+                                             info_of(input).samplerate);
         const std::vector<float> expected = tactus::read_mono(alone).samples;
         ASSERT_FALSE(expected.empty());
         EXPECT_TRUE(tactus::read_mono(batched).samples == expected) << input;
@@ -340,12 +353,15 @@ TEST_F(Cli, MeterAmenThroughTheVoiceCoil) {
     EXPECT_EQ(rows["NPIII"].first, 0.0) << r.out;  // a voice coil holds no offset
     EXPECT_NE(rows["NPIII"].second.find("not engaged"), std::string::npos);
     std::ifstream f(csv);
-    std::string header;
+    std::string comment, header;
+    std::getline(f, comment);
+    EXPECT_EQ(comment, "# tactus=" TACTUS_VERSION "; source=amen.wav; actuator=voice-coil");
     std::getline(f, header);
     EXPECT_EQ(header, "time_s,P_sl_db,NPI_sl_db,NPII_sl_db,NPIII_sl_db,combined_sl_db");
     int count = 0;
     while (std::getline(f, line)) ++count;
-    const double seconds = static_cast<double>(info_of(kAmen).frames) / info_of(kAmen).samplerate;
+    const double seconds =
+        static_cast<double>(info_of(vibration).frames) / info_of(vibration).samplerate;
     EXPECT_NEAR(count, seconds / 0.01 + 40, 2);  // every 10 ms, and 0.4 s of tail
     expect_no_temporaries();
 }
@@ -383,7 +399,8 @@ TEST_F(Cli, AnalyzeSensationColumnsAgreeWithTheMeter) {
     const Result csv = run("analyze " + kAmen + " --actuator voice-coil");
     ASSERT_EQ(csv.exit_code, 0) << csv.err;
     std::istringstream rows(csv.out);
-    std::string header, line;
+    std::string comment, header, line;
+    std::getline(rows, comment);
     std::getline(rows, header);
     EXPECT_NE(header.find(",P_sl_db,NPI_sl_db,NPII_sl_db,NPIII_sl_db,combined_sl_db"),
               std::string::npos)
@@ -396,7 +413,7 @@ TEST_F(Cli, AnalyzeSensationColumnsAgreeWithTheMeter) {
     std::ifstream f(meter_csv);
     std::vector<std::vector<double>> metered;  // time_s, four channels, combined
     while (std::getline(f, line))
-        if (line[0] != 't') metered.push_back(csv_numbers(line));
+        if (line[0] != 't' && line[0] != '#') metered.push_back(csv_numbers(line));
     ASSERT_GT(metered.size(), 500u);
     // Every row from 1 to 5 s carries the meter's levels at the row's own time (between its
     // 10 ms readings, interpolated): the two time courses line up.

@@ -36,4 +36,13 @@ inline SF_INFO info_of(const std::filesystem::path& path) {
     return info;
 }
 
+// A render is its input plus the vibration's tail (io/run_file.hpp, RunTail::ring_out): at least
+// the limiter's look-ahead longer, and never more than the last pulse's decay (150 ms under tfd)
+// and the silence that ends it later: within half a second.
+inline void expect_input_plus_tail(int64_t rendered_frames, int64_t input_frames,
+                                   double sample_rate_hz) {
+    EXPECT_GT(rendered_frames, input_frames);
+    EXPECT_LT(rendered_frames, input_frames + static_cast<int64_t>(0.5 * sample_rate_hz));
+}
+
 }  // namespace tactus::test

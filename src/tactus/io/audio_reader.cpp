@@ -1,14 +1,18 @@
 #include "tactus/io/audio_reader.hpp"
 
-#include "tactus/dsp/downmix.hpp"
-
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+
+#include "tactus/dsp/downmix.hpp"
 
 namespace tactus {
 namespace {
@@ -36,6 +40,33 @@ std::string truncation(SNDFILE* file) {
     return {};
 }
 
+// Standard input as a seekable file: copied once (libsndfile reads few formats from a pipe,
+// and a pipe can be read only once) into a temporary file that is unlinked at once, so it
+// leaves nothing behind. Every reader of "-" gets its own descriptor on it.
+int stdin_descriptor() {
+    static const int spooled = [] {
+        if (::lseek(STDIN_FILENO, 0, SEEK_CUR) >= 0) return STDIN_FILENO;  // a file: as it is
+        std::string name =
+            (std::filesystem::temp_directory_path() / "tactus-stdin-XXXXXX").string();
+        const int fd = ::mkstemp(name.data());
+        if (fd < 0) return -1;
+        ::unlink(name.c_str());
+        char buffer[1 << 16];
+        for (ssize_t n; (n = ::read(STDIN_FILENO, buffer, sizeof buffer)) != 0;) {
+            if (n < 0 && errno == EINTR) continue;
+            if (n < 0 || ::write(fd, buffer, static_cast<size_t>(n)) != n) {
+                ::close(fd);
+                return -1;
+            }
+        }
+        return fd;
+    }();
+    if (spooled < 0) return -1;
+    const int fd = ::dup(spooled);
+    if (fd >= 0) ::lseek(fd, 0, SEEK_SET);
+    return fd;
+}
+
 }  // namespace
 
 AudioReader::AudioReader(const std::filesystem::path& path) : path_(path) {
@@ -43,7 +74,15 @@ AudioReader::AudioReader(const std::filesystem::path& path) : path_(path) {
     if (std::filesystem::is_regular_file(path, error) &&
         std::filesystem::file_size(path, error) == 0)
         throw std::runtime_error(fmt::format("{}: empty file", path.string()));
-    file_ = sf_open(path.c_str(), SFM_READ, &info_);
+    if (path == "-") {
+        const int fd = stdin_descriptor();
+        if (fd < 0)
+            throw std::runtime_error(
+                fmt::format("standard input: cannot read: {}", std::strerror(errno)));
+        file_ = sf_open_fd(fd, SFM_READ, &info_, SF_TRUE);
+    } else {
+        file_ = sf_open(path.c_str(), SFM_READ, &info_);
+    }
     if (!file_)
         throw std::runtime_error(
             fmt::format("{}: cannot read audio: {}", path.string(), sf_strerror(nullptr)));
@@ -106,7 +145,8 @@ int AudioReader::read(float* const* out, int max_frames) {
 
 ChannelBlock::ChannelBlock(int channels, int frames)
     : samples_(static_cast<size_t>(channels) * frames), pointers_(static_cast<size_t>(channels)) {
-    for (int c = 0; c < channels; ++c) pointers_[c] = samples_.data() + static_cast<size_t>(c) * frames;
+    for (int c = 0; c < channels; ++c)
+        pointers_[c] = samples_.data() + static_cast<size_t>(c) * frames;
 }
 
 MonoAudio read_mono(const std::filesystem::path& path) {

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace tactus {
@@ -21,6 +22,11 @@ class AudioReader {
     double sample_rate_hz() const { return info_.samplerate; }
     int channels() const { return info_.channels; }
     int64_t frames() const { return info_.frames; }  // may be unknown (<= 0) for some formats
+    // The file's comment (WAV ICMT, Vorbis COMMENT: render writes RenderInfo::comment()), or "".
+    std::string comment() const {
+        const char* text = sf_get_string(file_, SF_STR_COMMENT);
+        return text ? text : "";
+    }
     // Reads up to `max_frames` frames into channels()[c][0 ... max_frames); returns how many
     // (0 at the end). Throws std::runtime_error for undecodable data or a stream that ends
     // before its header says.

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -48,10 +50,32 @@ RunSummary stream_file(const std::filesystem::path& input,
     return summary;
 }
 
+int64_t run_tail(Engine& engine, int input_channels,
+                 const std::function<void(const float* const* vibration, int frames)>& on_output) {
+    const double rate_hz = engine.sample_rate_hz();
+    const int block = std::max(1, static_cast<int>(rate_hz * 0.005));  // 5 ms
+    const int64_t silent_needed = static_cast<int64_t>(std::ceil(kTailSilenceS * rate_hz));
+    const int64_t min_frames = engine.latency();
+    const int64_t max_frames = static_cast<int64_t>(kMaxTailS * rate_hz);
+    ChannelBlock in(input_channels, block), out(engine.actuators(), block);
+    for (int c = 0; c < input_channels; ++c) std::fill_n(in[c], block, 0.0f);
+    int64_t fed = 0, silent = 0;
+    while (fed < max_frames && (fed < min_frames || silent < silent_needed)) {
+        engine.process(in.data(), out.data(), block);
+        fed += block;
+        float peak = 0.0f;
+        for (int c = 0; c < engine.actuators(); ++c)
+            for (int i = 0; i < block; ++i) peak = std::max(peak, std::abs(out[c][i]));
+        silent = peak < kTailSilenceLevel ? silent + block : 0;
+        if (on_output) on_output(out.data(), block);
+    }
+    return fed;
+}
+
 RunSummary run_file(const std::filesystem::path& input, Engine& engine,
-                    const RunCallbacks& callbacks) {
+                    const RunCallbacks& callbacks, RunTail tail) {
     std::optional<ChannelBlock> out;
-    return stream_file(
+    RunSummary summary = stream_file(
         input,
         [&](const ProcessSpec& spec) {
             engine.prepare(spec);
@@ -62,6 +86,9 @@ RunSummary run_file(const std::filesystem::path& input, Engine& engine,
             if (callbacks.on_output) callbacks.on_output(out->data(), frames);
         },
         callbacks);
+    if (tail == RunTail::ring_out)
+        summary.tail_frames = run_tail(engine, summary.input_channels, callbacks.on_output);
+    return summary;
 }
 
 void prepare_analysis(Analyzer& analyzer, const ProcessSpec& spec, const Settings& settings,

@@ -28,8 +28,26 @@ struct RunCallbacks {
 struct RunSummary {
     double sample_rate_hz = 0;
     int input_channels = 0;
-    int64_t frames = 0;
+    int64_t frames = 0;       // input frames
+    int64_t tail_frames = 0;  // silence fed after them (run_file with RunTail::ring_out)
 };
+
+// What follows the input's last frame. ring_out feeds silence until the vibration has died
+// away: a pulse triggered near the end of a short sound (a 19 ms tick, a 2 ms click) is
+// rendered whole, not cut at the input's length.
+enum class RunTail { none, ring_out };
+
+// The tail: silence is fed until every output has stayed below kTailSilenceLevel (-80 dBFS,
+// far below any felt level) for kTailSilenceS, and for at least the engine's latency; never
+// more than kMaxTailS.
+inline constexpr double kTailSilenceLevel = 1e-4;
+inline constexpr double kTailSilenceS = 0.05;
+inline constexpr double kMaxTailS = 10.0;
+
+// Feeds `engine` (prepared, input_channels wide) the tail, handing every block to on_output;
+// returns the frames fed.
+int64_t run_tail(Engine& engine, int input_channels,
+                 const std::function<void(const float* const* vibration, int frames)>& on_output);
 
 // Opens `input`, calls prepare(its sample rate and channel count, blocks of
 // kStreamBlockFrames) (an std::invalid_argument becomes a std::runtime_error naming the file),
@@ -41,9 +59,9 @@ RunSummary stream_file(const std::filesystem::path& input,
                        const RunCallbacks& callbacks = {});
 
 // Opens `input`, prepares `engine` at the file's sample rate and channel count (the engine
-// downmixes), runs it to the end.
+// downmixes), runs it to the end, then through the tail.
 RunSummary run_file(const std::filesystem::path& input, Engine& engine,
-                    const RunCallbacks& callbacks = {});
+                    const RunCallbacks& callbacks = {}, RunTail tail = RunTail::none);
 
 // Opens `input`, prepares `analyzer` at the file's sample rate with `settings` and computes
 // `features` (and the onsets) of the channels' mean, and calls on_frame for every analysis

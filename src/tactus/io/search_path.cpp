@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "tactus/core/nearest.hpp"
 #include "tactus/core/printable.hpp"
 
 namespace tactus {
@@ -95,10 +96,20 @@ std::filesystem::path resolve_toml(std::string_view name_or_path,
     for (const auto& dir : dirs)
         if (fs::is_regular_file(dir / (given.string() + ".toml"), error))
             return dir / (given.string() + ".toml");
+    // Named as people type it: "LRA-175", "four_channel".
+    const auto files = toml_files(dirs);
+    for (const auto& [name, path] : files)
+        if (folded_name(name) == folded_name(name_or_path)) return path;
     std::string known;
-    for (const auto& [name, path] : toml_files(dirs)) known += (known.empty() ? "" : ", ") + name;
+    std::vector<std::string> names;
+    for (const auto& [name, path] : files) {
+        known += (known.empty() ? "" : ", ") + name;
+        names.push_back(name);
+    }
+    const std::string nearest = nearest_name(name_or_path, names);
     throw std::runtime_error(
-        fmt::format("no {} named '{}' (known: {})", kind, printable(name_or_path), known));
+        fmt::format("no {} named '{}' ({}known: {})", kind, printable(name_or_path),
+                    nearest.empty() ? "" : "did you mean '" + nearest + "'? ", known));
 }
 
 }  // namespace tactus

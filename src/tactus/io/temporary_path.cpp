@@ -1,11 +1,13 @@
 #include "tactus/io/temporary_path.hpp"
 
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <limits.h>
 #include <signal.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <cstring>
 #include <stdexcept>
 
@@ -37,11 +39,57 @@ void untrack(const std::filesystem::path& temporary) noexcept {
         }
 }
 
+// The file writing `target` replaces: a symlink's final target (the link stays), else target.
+std::filesystem::path replaced_file(const std::filesystem::path& target) {
+    std::error_code error;
+    if (!std::filesystem::is_symlink(std::filesystem::symlink_status(target, error))) return target;
+    const std::filesystem::path resolved = std::filesystem::weakly_canonical(target, error);
+    return error ? target : resolved;
+}
+
+// Copies the bytes of `from` into `target` (stdout for "-"), opened for writing as it is.
+bool copy_into(const std::filesystem::path& from, const std::filesystem::path& target) {
+    const int in = ::open(from.c_str(), O_RDONLY | O_CLOEXEC);
+    if (in < 0) return false;
+    const int out = target == "-" ? STDOUT_FILENO : ::open(target.c_str(), O_WRONLY | O_CLOEXEC);
+    bool ok = out >= 0;
+    char buffer[1 << 16];
+    for (ssize_t n; ok && (n = ::read(in, buffer, sizeof buffer)) != 0;) {
+        if (n < 0) {
+            ok = errno == EINTR;
+            continue;
+        }
+        for (ssize_t done = 0; ok && done < n;) {
+            const ssize_t w = ::write(out, buffer + done, static_cast<size_t>(n - done));
+            if (w < 0 && errno != EINTR) ok = false;
+            if (w > 0) done += w;
+        }
+    }
+    const int reason = errno;
+    ::close(in);
+    if (out >= 0 && out != STDOUT_FILENO) ::close(out);
+    errno = reason;
+    return ok;
+}
+
 }  // namespace
 
+bool written_in_place(const std::filesystem::path& target) {
+    if (target == "-") return true;
+    std::error_code error;
+    const auto status = std::filesystem::status(target, error);  // follows symlinks
+    return !error && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
+           !std::filesystem::is_directory(status);
+}
+
 std::filesystem::path temporary_path_for(const std::filesystem::path& target) {
-    const auto name = fmt::format(".{}.tmp-{}", target.filename().string(), getpid());
-    return target.parent_path() / name;
+    if (written_in_place(target)) {
+        static std::atomic<int> count{0};
+        return std::filesystem::temp_directory_path() /
+               fmt::format(".tactus-out.tmp-{}-{}", getpid(), count++);
+    }
+    const std::filesystem::path file = replaced_file(target);
+    return file.parent_path() / fmt::format(".{}.tmp-{}", file.filename().string(), getpid());
 }
 
 void track_temporary(const std::filesystem::path& temporary) {
@@ -61,8 +109,17 @@ void track_temporary(const std::filesystem::path& temporary) {
 }
 
 void commit_temporary(const std::filesystem::path& temporary, const std::filesystem::path& target) {
+    if (written_in_place(target)) {
+        const bool copied = copy_into(temporary, target);
+        const int reason = errno;
+        discard_temporary(temporary);
+        if (!copied)
+            throw std::runtime_error(
+                fmt::format("{}: cannot write: {}", target.string(), std::strerror(reason)));
+        return;
+    }
     std::error_code error;
-    std::filesystem::rename(temporary, target, error);
+    std::filesystem::rename(temporary, replaced_file(target), error);
     if (error) {
         discard_temporary(temporary);
         throw std::runtime_error(

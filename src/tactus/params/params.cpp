@@ -8,8 +8,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "tactus/perception/channels.hpp"
+#include "tactus/core/nearest.hpp"
 #include "tactus/core/printable.hpp"
+#include "tactus/perception/channels.hpp"
 
 namespace tactus {
 namespace {
@@ -210,21 +211,6 @@ constexpr bool ids_unique() {
     return true;
 }
 static_assert(ids_unique(), "stable ids are unique");
-
-size_t edit_distance(std::string_view a, std::string_view b) {
-    std::vector<size_t> row(b.size() + 1);
-    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (size_t i = 1; i <= a.size(); ++i) {
-        size_t diagonal = row[0];
-        row[0] = i;
-        for (size_t j = 1; j <= b.size(); ++j) {
-            const size_t above = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-            diagonal = above;
-        }
-    }
-    return row[b.size()];
-}
 
 }  // namespace
 

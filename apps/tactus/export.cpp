@@ -1,0 +1,182 @@
+// tactus export IN -o OUT... : the vibration as the platforms' haptic formats, each named by
+// its output's ending: .ahap (Apple Core Haptics), .haptic (Meta Haptics SDK), .android.json
+// (Android VibrationEffect.createWaveform), .ogg (the sound with the vibration as its last
+// channels and ANDROID_HAPTIC=<n>, for Android's haptic-coupled playback). One render feeds
+// every output (src/tactus/export).
+#include <fmt/format.h>
+
+#include <iostream>
+#include <map>
+#include <optional>
+#include <thread>
+
+#include "actuator_option.hpp"
+#include "batch_plan.hpp"
+#include "commands.hpp"
+#include "common.hpp"
+#include "global_options.hpp"
+#include "pipeline_options.hpp"
+#include "tactus/export/haptic_formats.hpp"
+#include "tactus/export/vorbis_writer.hpp"
+#include "tactus/io/text_output.hpp"
+
+namespace tactus::cli {
+namespace {
+
+// Android plays at most two haptic channels (AudioFormat haptic channel masks A and B).
+constexpr int kMaxAndroidHapticChannels = 2;
+
+struct ExportOptions {
+    std::string input, actuator;
+    std::vector<std::string> outputs;
+    int channels = 1;
+    bool force = false;
+    PipelineOptions pipeline;
+    // A batch (batch_plan.hpp): inputs, -O DIR, the formats each input is written in.
+    std::vector<std::string> inputs;
+    std::string output_dir;
+    std::vector<std::string> formats{".ahap", ".haptic", ".android.json", ".ogg"};
+    bool skip_existing = false;
+    int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+};
+
+void export_files(const ExportOptions& o) {
+    const Settings settings = o.pipeline.resolve();
+    std::vector<std::string> formats;
+    std::optional<std::string> ogg_path;
+    for (const auto& output : o.outputs) {
+        const std::string format = haptic_format_of(output);
+        if (format.empty())
+            throw std::runtime_error(fmt::format(
+                "{}: unknown export format (name it .ahap, .haptic, .android.json or .ogg)",
+                output));
+        check_output(o.input, output, o.force);
+        if (format == ".ogg") ogg_path = output;
+        formats.push_back(format);
+    }
+    if (ogg_path && o.channels > kMaxAndroidHapticChannels)
+        throw std::runtime_error(fmt::format("{}: Android plays at most {} haptic channels, not {}",
+                                             *ogg_path, kMaxAndroidHapticChannels, o.channels));
+    std::optional<ActuatorProfile> actuator;
+    if (!o.actuator.empty()) actuator = load_actuator_for(o.actuator, settings);
+
+    Engine engine(settings);
+    engine.set_actuators(std::vector<ActuatorOutput>(static_cast<size_t>(o.channels),
+                                                     ActuatorOutput{.profile = actuator}));
+    std::optional<VorbisWriter> ogg;
+    double sample_rate_hz = 0;
+    std::vector<const float*> channels;
+    AlignedSink sink;
+    if (ogg_path)
+        sink = [&](const float* const* audio, int audio_channels, const float* const* vibration,
+                   int actuators, int frames) {
+            if (!ogg)
+                ogg.emplace(*ogg_path, engine.sample_rate_hz(), audio_channels + actuators,
+                            std::vector<std::pair<std::string, std::string>>{
+                                {"ANDROID_HAPTIC", std::to_string(actuators)},
+                                {"ENCODER", "tactus " TACTUS_VERSION}});
+            channels.assign(audio, audio + audio_channels);
+            channels.insert(channels.end(), vibration, vibration + actuators);
+            ogg->write(channels.data(), frames);
+        };
+    Progress progress("export");
+    HapticTrack track = render_haptic_track(o.input, engine, sink, with_progress(progress));
+    sample_rate_hz = engine.sample_rate_hz();
+    track.info = {.source = std::filesystem::path(o.input).filename().string(),
+                  .preset = o.pipeline.preset,
+                  .changes = o.pipeline.assignments,
+                  .actuator = actuator ? actuator->name : std::string(),
+                  .version = TACTUS_VERSION};
+    for (size_t i = 0; i < o.outputs.size(); ++i) {
+        if (formats[i] == ".ogg") {
+            ogg->commit();
+        } else {
+            TextOutput out(o.outputs[i]);
+            out.stream() << (formats[i] == ".ahap"     ? ahap_text(track)
+                             : formats[i] == ".haptic" ? meta_haptic_text(track)
+                                                       : android_waveform_text(track));
+            out.commit();
+        }
+        note(fmt::format(
+            "{}: {:.3f} s, {} onsets{}", o.outputs[i], track.duration_s(), track.onsets.size(),
+            formats[i] == ".ogg"
+                ? fmt::format(", {:g} Hz, {} haptic channel(s)", sample_rate_hz, o.channels)
+                : std::string()));
+    }
+}
+
+}  // namespace
+
+// One input to -o, or every input (folders walked) to DIR/.../<name><format> for each --formats.
+void export_batch(const ExportOptions& o) {
+    if (o.output_dir.empty() == o.outputs.empty())
+        throw std::runtime_error("export: give -o OUT (one input; repeatable) or -O DIR");
+    if (o.output_dir.empty()) {
+        if (o.inputs.size() != 1)
+            throw std::runtime_error(
+                fmt::format("-o names one input's outputs but {} inputs were given; use -O DIR",
+                            o.inputs.size()));
+        ExportOptions one = o;
+        one.input = o.inputs[0];
+        return export_files(one);
+    }
+    for (const auto& format : o.formats)
+        if (haptic_format_of(format) != format)
+            throw std::runtime_error(fmt::format(
+                "--formats: unknown format '{}' (.ahap, .haptic, .android.json, .ogg)", format));
+    BatchOptions batch{.inputs = o.inputs,
+                       .output = {},
+                       .output_dir = o.output_dir,
+                       .skip_existing = o.skip_existing,
+                       .force = o.force,
+                       .jobs = o.jobs};
+    std::map<std::filesystem::path, std::vector<std::string>> outputs_of;
+    for (const auto& format : o.formats) {
+        size_t skipped = 0;
+        for (const BatchJob& job : plan_batch(batch, format, skipped))
+            outputs_of[job.input].push_back(job.output.string());
+    }
+    std::vector<BatchJob> jobs;
+    for (const auto& [input, outputs] : outputs_of) jobs.push_back({input, outputs.front()});
+    run_jobs(batch, jobs, "export", [&](const BatchJob& job) {
+        ExportOptions one = o;
+        one.input = job.input.string();
+        one.outputs = outputs_of.at(job.input);
+        export_files(one);
+    });
+}
+
+void add_export(CLI::App& app) {
+    auto options = std::make_shared<ExportOptions>();
+    CLI::App* command = app.add_subcommand(
+        "export", "write the vibration as haptic files: .ahap, .haptic, .android.json, .ogg");
+    command->add_option("inputs", options->inputs, "audio files or folders (- for stdin)")
+        ->required()
+        ->check(input_file() | CLI::ExistingDirectory);
+    command->add_option(
+        "-o,--output", options->outputs,
+        "OUT.ahap (Core Haptics), OUT.haptic (Meta Haptics SDK), OUT.android.json "
+        "(VibrationEffect.createWaveform, API 26), OUT.ogg (sound + haptic channels, "
+        "ANDROID_HAPTIC); repeat -o for several from one render");
+    command->add_option("-O,--output-dir", options->output_dir,
+                        "folder for the outputs: DIR/<input's folder below the given one>/<name "
+                        "without extension><format> for each of --formats (created if missing)");
+    command->add_option("--formats", options->formats, "with -O: the formats to write")
+        ->delimiter(',')
+        ->capture_default_str();
+    command->add_option("-j,--jobs", options->jobs, "files exported at once, one per thread")
+        ->check(CLI::Range(1, 1024));
+    command->add_flag("--skip-existing", options->skip_existing,
+                      "with -O: leave outputs that exist (resume a batch)");
+    command->add_option("--channels,-c", options->channels, "haptic channels in the .ogg")
+        ->check(CLI::Range(1, kMaxAndroidHapticChannels))
+        ->capture_default_str();
+    add_actuator_option(*command, options->actuator,
+                        "actuator profile (name in actuators/ or FILE.toml) the vibration is "
+                        "rendered for");
+    add_force_option(*command, options->force);
+    options->pipeline.add_to(*command);
+    command->callback([options] { export_batch(*options); });
+}
+
+}  // namespace tactus::cli

@@ -1,0 +1,180 @@
+#include "tactus/export/haptic_track.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <optional>
+
+#include "tactus/export/felt_envelope.hpp"
+#include "tactus/io/audio_reader.hpp"
+#include "tactus/perception/threshold.hpp"
+
+namespace tactus {
+namespace {
+
+// An onset's intensity is its pulse's felt peak within this time of it.
+constexpr double kOnsetPeakWindowS = 0.03;
+
+// The carrier in effect at each input sample, from the ControlFrames in order.
+class CarrierTrack {
+  public:
+    void add(int64_t sample, double frequency_hz) { changes_.push_back({sample, frequency_hz}); }
+    // The carrier at `sample` (samples asked for in increasing order).
+    double at(int64_t sample) {
+        while (!changes_.empty() && changes_.front().first <= sample) {
+            current_ = changes_.front().second;
+            changes_.pop_front();
+        }
+        return current_;
+    }
+
+  private:
+    std::deque<std::pair<int64_t, double>> changes_;
+    double current_ = 0;
+};
+
+}  // namespace
+
+double HapticTrack::intensity_at(double time_s) const {
+    if (intensity.empty()) return 0;
+    const double x = std::clamp(time_s / kStepS, 0.0, static_cast<double>(intensity.size() - 1));
+    const auto i = static_cast<size_t>(x);
+    if (i + 1 >= intensity.size()) return intensity.back();
+    return intensity[i] + (x - static_cast<double>(i)) * (intensity[i + 1] - intensity[i]);
+}
+
+double sharpness_of(double frequency_hz) {
+    using perception::kPHighEdgeHz, perception::kPLowEdgeHz;
+    if (frequency_hz <= 0) return 0;
+    return std::clamp(std::log(frequency_hz / kPLowEdgeHz) / std::log(kPHighEdgeHz / kPLowEdgeHz),
+                      0.0, 1.0);
+}
+
+HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engine,
+                                const AlignedSink& sink, const RunCallbacks& callbacks,
+                                const FrameSink& frames) {
+    engine.enable_frame_queue();
+    std::optional<FeltEnvelope> envelope;
+    CarrierTrack carrier;
+    std::vector<std::pair<int64_t, double>> onsets;  // input sample, carrier
+    int audio_channels = 0;
+    int64_t latency = 0, skipped = 0, aligned = 0;
+    std::deque<float> audio;  // interleaved input frames the vibration has not reached yet
+    std::vector<std::vector<float>> audio_block, vibration_block;
+
+    const auto take_frames = [&] {
+        for (AnalysisFrame frame; engine.pop_frame(frame);) {
+            if (frames) frames(frame);
+            carrier.add(frame.control.sample, frame.control.frequency_hz);
+            if (frame.features.onset)
+                onsets.emplace_back(frame.features.onset_sample, frame.control.frequency_hz);
+        }
+    };
+    // Vibration sample k (after the latency) lines up with input sample k.
+    const auto on_output = [&](const float* const* vibration, int frames) {
+        take_frames();
+        const int skip = static_cast<int>(std::min<int64_t>(frames, latency - skipped));
+        skipped += skip;
+        const int count = frames - skip;
+        if (count <= 0) return;
+        // The carrier changes at hop boundaries at most; the envelope takes it per hop.
+        for (int done = 0; done < count;) {
+            const int64_t at = aligned + done;
+            const int chunk = std::min(count - done, std::max(1, engine.hop_samples()));
+            envelope->write(vibration[0] + skip + done, chunk, carrier.at(at));
+            done += chunk;
+        }
+        if (sink) {
+            for (int c = 0; c < audio_channels; ++c) audio_block[c].resize(count);
+            for (int i = 0; i < count; ++i)
+                for (int c = 0; c < audio_channels; ++c) {
+                    audio_block[c][i] = audio.empty() ? 0.0f : audio.front();
+                    if (!audio.empty()) audio.pop_front();
+                }
+            std::vector<const float*> a(audio_channels), v(engine.actuators());
+            for (int c = 0; c < audio_channels; ++c) a[c] = audio_block[c].data();
+            for (int c = 0; c < engine.actuators(); ++c) v[c] = vibration[c] + skip;
+            sink(a.data(), audio_channels, v.data(), engine.actuators(), count);
+        }
+        aligned += count;
+    };
+    std::optional<ChannelBlock> out;
+    RunSummary summary = stream_file(
+        input,
+        [&](const ProcessSpec& spec) {
+            engine.prepare(spec);
+            out.emplace(engine.actuators(), kStreamBlockFrames);
+            envelope.emplace(spec.sample_rate_hz);
+            audio_channels = spec.channels;
+            audio_block.assign(audio_channels, {});
+            latency = engine.latency();
+        },
+        [&](const float* const* in, int frames) {
+            if (sink)
+                for (int i = 0; i < frames; ++i)
+                    for (int c = 0; c < audio_channels; ++c) audio.push_back(in[c][i]);
+            engine.process(in, out->data(), frames);
+            on_output(out->data(), frames);
+        },
+        callbacks);
+    summary.tail_frames = run_tail(engine, audio_channels, on_output);
+    take_frames();
+
+    HapticTrack track;
+    const std::vector<double> felt = envelope->felt();
+    track.felt_peak = felt.empty() ? 0.0 : *std::max_element(felt.begin(), felt.end());
+    track.intensity.resize(felt.size());
+    track.sharpness.resize(felt.size());
+    for (size_t i = 0; i < felt.size(); ++i) {
+        track.intensity[i] = track.felt_peak > 0 ? felt[i] / track.felt_peak : 0.0;
+        track.sharpness[i] = sharpness_of(envelope->carrier_hz()[i]);
+    }
+    for (const auto& [sample, frequency_hz] : onsets) {
+        const double time_s = static_cast<double>(sample) / summary.sample_rate_hz;
+        const auto first = static_cast<size_t>(std::max(0.0, time_s / HapticTrack::kStepS));
+        const size_t last =
+            std::min(track.intensity.size(),
+                     first + static_cast<size_t>(kOnsetPeakWindowS / HapticTrack::kStepS));
+        double peak = 0;
+        for (size_t i = first; i < last; ++i) peak = std::max(peak, track.intensity[i]);
+        track.onsets.push_back({time_s, peak, sharpness_of(frequency_hz)});
+    }
+    return track;
+}
+
+std::vector<Breakpoint> simplify(const std::vector<double>& values, double step_s,
+                                 double tolerance) {
+    const size_t n = values.size();
+    if (n == 0) return {};
+    if (n == 1) return {{0.0, values[0]}};
+    std::vector<bool> keep(n, false);
+    keep[0] = keep[n - 1] = true;
+    std::vector<std::pair<size_t, size_t>> spans{{0, n - 1}};
+    while (!spans.empty()) {
+        const auto [a, b] = spans.back();
+        spans.pop_back();
+        double worst = -1;
+        size_t at = a;
+        for (size_t i = a + 1; i < b; ++i) {
+            const double line = values[a] + (values[b] - values[a]) * static_cast<double>(i - a) /
+                                                static_cast<double>(b - a);
+            if (const double d = std::abs(values[i] - line); d > worst) {
+                worst = d;
+                at = i;
+            }
+        }
+        if (worst > tolerance) {
+            keep[at] = true;
+            spans.push_back({a, at});
+            spans.push_back({at, b});
+        }
+    }
+    std::vector<Breakpoint> points;
+    for (size_t i = 0; i < n; ++i)
+        if (keep[i]) points.push_back({static_cast<double>(i) * step_s, values[i]});
+    return points;
+}
+
+}  // namespace tactus

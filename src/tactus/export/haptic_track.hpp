@@ -1,0 +1,64 @@
+// A rendered vibration as the haptic formats describe one: a felt intensity and a sharpness
+// envelope on a 1 ms grid, and the onsets (transients), all in the input's time (the engine's
+// latency taken out, so the vibration lines up with the sound). Drawn from the vibration
+// program (the onsets and carrier of the engine's ControlFrames) and the rendered vibration
+// (its felt envelope): design.md, "the vibration program is the seam ... file exports".
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "tactus/engine/engine.hpp"
+#include "tactus/io/render_info.hpp"
+#include "tactus/io/run_file.hpp"
+
+namespace tactus {
+
+struct HapticOnset {
+    double time_s = 0;
+    double intensity = 0;  // 0 ... 1: the felt peak of its pulse, on the envelope's scale
+    double sharpness = 0;  // 0 ... 1: its carrier frequency (sharpness_of)
+};
+
+struct HapticTrack {
+    static constexpr double kStepS = 0.001;
+    std::vector<double> intensity;  // 0 ... 1, felt amplitude normalised to its peak
+    std::vector<double> sharpness;  // 0 ... 1, carrier frequency (sharpness_of)
+    std::vector<HapticOnset> onsets;
+    double felt_peak = 0;  // the felt amplitude intensity 1 stands for (full scale at 250 Hz)
+    RenderInfo info;
+    double duration_s() const { return static_cast<double>(intensity.size()) * kStepS; }
+    // Intensity at any time, linear between steps.
+    double intensity_at(double time_s) const;
+};
+
+// Carrier frequency -> 0 ... 1 on a log scale over the P channel's range (40-500 Hz, paper
+// Table 1): Core Haptics' sharpness, the Meta format's normalised frequency.
+double sharpness_of(double frequency_hz);
+
+// Sound and vibration, lined up, as the export hands them on: audio[c][0 ... frames) for the
+// input's channels (silence in the tail), vibration[a][...] for each actuator.
+using AlignedSink = std::function<void(const float* const* audio, int audio_channels,
+                                       const float* const* vibration, int actuators, int frames)>;
+
+// Every analysis frame (features and vibration program), as the engine's frame queue gives it.
+using FrameSink = std::function<void(const AnalysisFrame& frame)>;
+
+// Runs `engine` (actuators set) over `input` and its tail and returns the track; `sink`, if
+// given, receives the sound and the vibration lined up, block by block, and `frames` every
+// analysis frame.
+HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engine,
+                                const AlignedSink& sink = {}, const RunCallbacks& callbacks = {},
+                                const FrameSink& frames = {});
+
+// A piecewise-linear approximation of values[i] at time i * step_s (Ramer-Douglas-Peucker):
+// the fewest breakpoints that stay within `tolerance` of every value; first and last kept.
+struct Breakpoint {
+    double time_s = 0, value = 0;
+};
+std::vector<Breakpoint> simplify(const std::vector<double>& values, double step_s,
+                                 double tolerance);
+
+}  // namespace tactus

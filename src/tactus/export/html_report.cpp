@@ -1,0 +1,253 @@
+#include "tactus/export/html_report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+
+namespace tactus {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+constexpr const char* kDygraphsDir = "/usr/share/javascript/dygraphs";  // libjs-dygraphs
+
+std::string read_text(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw std::runtime_error(
+            fmt::format("{}: cannot read dygraphs (install Debian's libjs-dygraphs, or set "
+                        "TACTUS_DYGRAPHS_DIR)",
+                        path.string()));
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// Inlined text must not end the element it sits in, nor ask for a source map over the network.
+std::string inlined(std::string text, const std::string& closing_tag) {
+    for (size_t at; (at = text.find("//# sourceMappingURL=")) != std::string::npos;)
+        text.erase(at, text.find('\n', at) == std::string::npos ? std::string::npos
+                                                                : text.find('\n', at) - at);
+    for (size_t at = 0; (at = text.find(closing_tag, at)) != std::string::npos;)
+        text.replace(at, 2, "<\\/");
+    return text;
+}
+
+std::string escaped(const std::string& text) {
+    std::string out;
+    for (const char c : text) {
+        switch (c) {
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '&':
+                out += "&amp;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            default:
+                out += c;
+        }
+    }
+    return out;
+}
+
+// Numbers as the plots need them: 5 significant digits, NaN as null (a gap).
+Json number(double x) {
+    if (!std::isfinite(x)) return nullptr;
+    return std::stod(fmt::format("{:.5g}", x));
+}
+
+constexpr const char* kScript = R"JS(
+window.onerror = function (message, source, line) {
+  document.getElementById('errors').textContent += message + ' (line ' + line + ')\n';
+};
+(function () {
+  var plots = JSON.parse(document.getElementById('plot-data').textContent);
+  var onsets = JSON.parse(document.getElementById('onset-data').textContent);
+  var graphs = [];
+  // Every plot shows the same time span from the start (the synchronizer keeps it so on zoom).
+  var end = 0;
+  plots.forEach(function (p) { if (p.rows.length) end = Math.max(end, p.rows[p.rows.length - 1][0]); });
+  plots.forEach(function (p) {
+    var series = {};
+    (p.right || []).forEach(function (name) { series[name] = {axis: 'y2'}; });
+    var data = p.rows;
+    if (p.band) data = p.rows.map(function (r) { return [r[0], [r[1], (r[1] + r[2]) / 2, r[2]]]; });
+    var options = {
+      labels: ['time_s'].concat(p.labels), title: p.title, ylabel: p.ylabel, xlabel: 'time (s)',
+      logscale: p.log, customBars: p.band, fillAlpha: 0.6, series: series,
+      connectSeparatedPoints: false, legend: 'always', labelsSeparateLines: false,
+      labelsDiv: document.getElementById(p.id + '-legend'),
+      axes: {y2: {independentTicks: true}}, height: 180, animatedZooms: false,
+      dateWindow: [0, end], drawPoints: p.points, pointSize: 3
+    };
+    if (p.right && p.right.length) options.y2label = p.right.join(', ');
+    if (p.onsets) options.underlayCallback = function (ctx, area, g) {
+      ctx.strokeStyle = 'rgba(200, 30, 30, 0.6)';
+      ctx.lineWidth = 1;
+      onsets.forEach(function (t) {
+        var x = g.toDomXCoord(t);
+        if (x < area.x || x > area.x + area.w) return;
+        ctx.beginPath(); ctx.moveTo(x, area.y); ctx.lineTo(x, area.y + area.h); ctx.stroke();
+      });
+    };
+    graphs.push(new Dygraph(document.getElementById(p.id), data, options));
+  });
+  if (graphs.length > 1) Dygraph.synchronize(graphs, {zoom: true, selection: true, range: false});
+  var areas = graphs.map(function (g, i) {
+    var box = g.graphDiv.getBoundingClientRect(), a = g.getArea(), values = 0;
+    plots[i].rows.forEach(function (r) {
+      for (var k = 1; k < r.length; ++k) if (r[k] !== null) { ++values; break; }
+    });
+    return {id: plots[i].id, x: Math.round(box.left + a.x + window.scrollX),
+            y: Math.round(box.top + a.y + window.scrollY), w: Math.round(a.w), h: Math.round(a.h),
+            values: values};
+  });
+  var status = document.getElementById('status');
+  status.setAttribute('data-plots', JSON.stringify(areas));
+  status.textContent = 'drawn ' + graphs.length + ' plots';
+  document.title = 'tactus report: drawn';
+})();
+)JS";
+
+}  // namespace
+
+Dygraphs load_dygraphs() {
+    const char* env = std::getenv("TACTUS_DYGRAPHS_DIR");
+    const fs::path dir = env && *env ? fs::path(env) : fs::path(kDygraphsDir);
+    return {read_text(dir / "dygraph.min.js"), read_text(dir / "extras" / "synchronizer.js"),
+            read_text(dir / "dygraph.min.css")};
+}
+
+std::string wav_file_bytes(const std::vector<float>& mono, double sample_rate_hz) {
+    const auto rate = static_cast<uint32_t>(sample_rate_hz);
+    const auto data_bytes = static_cast<uint32_t>(mono.size() * 2);
+    std::string out;
+    const auto u32 = [&](uint32_t v) {
+        for (int i = 0; i < 4; ++i) out += static_cast<char>((v >> (8 * i)) & 0xff);
+    };
+    const auto u16 = [&](uint16_t v) {
+        out += static_cast<char>(v & 0xff);
+        out += static_cast<char>(v >> 8);
+    };
+    out += "RIFF";
+    u32(36 + data_bytes);
+    out += "WAVEfmt ";
+    u32(16);
+    u16(1);  // PCM
+    u16(1);  // mono
+    u32(rate);
+    u32(rate * 2);
+    u16(2);
+    u16(16);
+    out += "data";
+    u32(data_bytes);
+    for (const float x : mono) {
+        const auto v = static_cast<int16_t>(std::lround(std::clamp(x, -1.0f, 1.0f) * 32767.0f));
+        u16(static_cast<uint16_t>(v));
+    }
+    return out;
+}
+
+std::string base64(const std::string& bytes) {
+    static constexpr char kDigits[] =
+        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    out.reserve((bytes.size() + 2) / 3 * 4);
+    for (size_t i = 0; i < bytes.size(); i += 3) {
+        uint32_t v = static_cast<uint8_t>(bytes[i]) << 16;
+        if (i + 1 < bytes.size()) v |= static_cast<uint8_t>(bytes[i + 1]) << 8;
+        if (i + 2 < bytes.size()) v |= static_cast<uint8_t>(bytes[i + 2]);
+        out += kDigits[(v >> 18) & 63];
+        out += kDigits[(v >> 12) & 63];
+        out += i + 1 < bytes.size() ? kDigits[(v >> 6) & 63] : '=';
+        out += i + 2 < bytes.size() ? kDigits[v & 63] : '=';
+    }
+    return out;
+}
+
+std::string report_html(const ReportData& data, const Dygraphs& dygraphs) {
+    Json plots = Json::array();
+    std::string divs;
+    for (const ReportPlot& p : data.plots) {
+        Json rows = Json::array();
+        for (const auto& row : p.rows) {
+            Json r = Json::array();
+            for (const double x : row) r.push_back(number(x));
+            rows.push_back(std::move(r));
+        }
+        plots.push_back({{"id", p.id},
+                         {"title", p.title},
+                         {"ylabel", p.y_label},
+                         {"labels", p.labels},
+                         {"rows", std::move(rows)},
+                         {"log", p.log_y},
+                         {"onsets", p.onsets},
+                         {"band", p.band},
+                         {"points", p.points},
+                         {"right", p.right_axis}});
+        divs += fmt::format(
+            "<div class=\"legend\" id=\"{0}-legend\"></div>\n"
+            "<div class=\"plot\" id=\"{0}\"></div>\n",
+            p.id);
+    }
+    Json onsets = Json::array();
+    for (const double t : data.onsets_s) onsets.push_back(number(t));
+    std::string summary;
+    for (const auto& [what, value] : data.summary)
+        summary += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", escaped(what), escaped(value));
+    const auto player = [](const char* label, const std::string& wav) {
+        if (wav.empty()) return std::string();
+        return fmt::format(
+            "<p><span>{}</span><audio controls src=\"data:audio/wav;base64,{}\">"
+            "</audio></p>\n",
+            label, base64(wav));
+    };
+    std::string page;
+    page += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
+    page += fmt::format("<title>{}</title>\n", escaped(data.title));
+    page += "<style>\n" + inlined(dygraphs.style, "</style") + "\n</style>\n";
+    page += R"(<style>
+body { font-family: sans-serif; margin: 16px 24px; max-width: 1400px; }
+table { border-collapse: collapse; margin-bottom: 12px; }
+th, td { text-align: left; padding: 2px 12px 2px 0; font-size: 13px; }
+.plot { width: 100%; height: 180px; margin: 0 0 18px 0; }
+.legend { font-size: 12px; height: 16px; margin-left: 80px; }
+audio { vertical-align: middle; margin-left: 8px; width: 480px; }
+#errors { color: #b00; white-space: pre; }
+.dygraph-title { font-size: 14px; }
+</style>
+</head>
+<body>
+)";
+    page += fmt::format("<h1>{}</h1>\n<table>\n{}</table>\n", escaped(data.title), summary);
+    page += player("sound", data.sound_wav) + player("vibration", data.vibration_wav);
+    if (!data.note.empty()) page += fmt::format("<p><small>{}</small></p>\n", escaped(data.note));
+    page +=
+        "<p><small>Drag to zoom (every plot follows), double-click to zoom out; red lines: "
+        "onsets.</small></p>\n";
+    page += "<div id=\"status\">not drawn</div><div id=\"errors\"></div>\n";
+    page += divs;
+    page += "<script type=\"application/json\" id=\"plot-data\">" +
+            inlined(plots.dump(), "</script") + "</script>\n";
+    page += "<script type=\"application/json\" id=\"onset-data\">" + onsets.dump() + "</script>\n";
+    page += "<script>\n" + inlined(dygraphs.script, "</script") + "\n</script>\n";
+    page += "<script>\n" + inlined(dygraphs.synchronizer, "</script") + "\n</script>\n";
+    page += std::string("<script>\n") + kScript + "</script>\n</body>\n</html>\n";
+    return page;
+}
+
+}  // namespace tactus

@@ -1,0 +1,351 @@
+// tactus export, run as a user runs it, on the Amen break and a 19 ms tick: every file checked
+// against its format's specification (structure and limits) and for fidelity: the envelope it
+// plays correlates >= 0.95 with the engine's felt envelope (run here in process, through
+// run_file and its tail), and every onset the engine found is a transient or an emphasis
+// within 5 ms.
+#include <gtest/gtest.h>
+#include <sndfile.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <numeric>
+
+#include "support/run_cli.hpp"
+#include "tactus/export/felt_envelope.hpp"
+#include "tactus/export/haptic_formats.hpp"
+#include "tactus/io/audio_reader.hpp"
+#include "tactus/io/preset.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+using tactus::test::Cli;
+
+constexpr double kStepS = tactus::FeltEnvelope::kStepS;
+constexpr double kOnsetToleranceS = 0.005;
+constexpr double kMinCorrelation = 0.95;
+
+struct Sound {
+    const char* name;
+    const char* path;
+};
+void PrintTo(const Sound& sound, std::ostream* out) {
+    *out << sound.name;
+}
+const Sound kSounds[] = {{"amen", "/usr/share/sonic-pi/samples/loop_amen_full.flac"},
+                         {"tick", "/usr/share/sonic-pi/samples/elec_tick.flac"}};
+
+// What the engine renders for `input` under tfd: its felt envelope on the 1 ms grid and its
+// onsets, in the input's time, and the vibration itself, lined up with the input.
+struct EngineRun {
+    std::vector<double> felt;
+    std::vector<double> onsets_s;
+    std::vector<float> vibration;
+    double sample_rate_hz = 0;
+};
+
+EngineRun run_engine(const fs::path& input) {
+    tactus::Settings settings;
+    tactus::apply_preset_file(settings, tactus::resolve_preset("tfd"));
+    tactus::Engine engine(settings);
+    engine.enable_frame_queue();
+    std::vector<std::pair<int64_t, double>> carrier;
+    EngineRun run;
+    std::vector<float> drive;
+    const auto on_output = [&](const float* const* v, int n) {
+        for (tactus::AnalysisFrame f; engine.pop_frame(f);) {
+            carrier.emplace_back(f.control.sample, f.control.frequency_hz);
+            if (f.features.onset)
+                run.onsets_s.push_back(static_cast<double>(f.features.onset_sample));
+        }
+        drive.insert(drive.end(), v[0], v[0] + n);
+    };
+    tactus::run_file(input, engine, {.on_output = on_output}, tactus::RunTail::ring_out);
+    run.sample_rate_hz = engine.sample_rate_hz();
+    for (double& t : run.onsets_s) t /= run.sample_rate_hz;
+    run.vibration.assign(drive.begin() + engine.latency(), drive.end());
+    tactus::FeltEnvelope envelope(run.sample_rate_hz);
+    size_t next = 0;
+    double frequency_hz = 0;
+    for (size_t i = 0; i < run.vibration.size(); ++i) {
+        while (next < carrier.size() && carrier[next].first <= static_cast<int64_t>(i))
+            frequency_hz = carrier[next++].second;
+        envelope.write(&run.vibration[i], 1, frequency_hz);
+    }
+    run.felt = envelope.felt();
+    return run;
+}
+
+double correlation(const std::vector<double>& a, const std::vector<double>& b) {
+    const size_t n = std::min(a.size(), b.size());
+    const double ma = std::accumulate(a.begin(), a.begin() + n, 0.0) / n;
+    const double mb = std::accumulate(b.begin(), b.begin() + n, 0.0) / n;
+    double ab = 0, aa = 0, bb = 0;
+    for (size_t i = 0; i < n; ++i) {
+        ab += (a[i] - ma) * (b[i] - mb);
+        aa += (a[i] - ma) * (a[i] - ma);
+        bb += (b[i] - mb) * (b[i] - mb);
+    }
+    return ab / std::sqrt(aa * bb);
+}
+
+// Linear interpolation of (time, value) points on the 1 ms grid, over [first, last] only.
+void draw(std::vector<double>& grid, const std::vector<std::pair<double, double>>& points) {
+    for (size_t k = 0; k + 1 < points.size(); ++k) {
+        const auto [t0, v0] = points[k];
+        const auto [t1, v1] = points[k + 1];
+        for (auto i = static_cast<size_t>(std::ceil(t0 / kStepS - 1e-9));
+             i < grid.size() && i * kStepS <= t1 + 1e-9; ++i)
+            grid[i] = t1 > t0 ? v0 + (v1 - v0) * (i * kStepS - t0) / (t1 - t0) : v1;
+    }
+}
+
+// Every onset has a time in `times` within kOnsetToleranceS.
+void expect_every_onset_in(const std::vector<double>& onsets, std::vector<double> times,
+                           const char* what) {
+    std::sort(times.begin(), times.end());
+    for (const double onset : onsets) {
+        const auto at = std::lower_bound(times.begin(), times.end(), onset - kOnsetToleranceS);
+        EXPECT_TRUE(at != times.end() && *at <= onset + kOnsetToleranceS)
+            << "onset at " << onset << " s has no " << what << " within 5 ms";
+    }
+}
+
+Json read_json(const fs::path& path) {
+    std::ifstream in(path);
+    return Json::parse(in);
+}
+
+class Export : public Cli, public ::testing::WithParamInterface<Sound> {
+  protected:
+    fs::path exported(const std::string& extension) {
+        const fs::path out = dir_ / (std::string(GetParam().name) + extension);
+        const auto r = run("export " + std::string(GetParam().path) + " -o " + out.string());
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        return out;
+    }
+};
+
+TEST_P(Export, AhapFollowsAppleSpecAndTheFeltEnvelope) {
+    const EngineRun engine = run_engine(GetParam().path);
+    const Json ahap = read_json(exported(".ahap"));
+    EXPECT_EQ(ahap.at("Version").get<double>(), 1.0);
+    ASSERT_TRUE(ahap.at("Pattern").is_array());
+    std::vector<double> intensity(engine.felt.size(), 0.0), transients;
+    std::vector<std::pair<double, double>> continuous;  // [begin, end]
+    int curves = 0;
+    for (const Json& item : ahap["Pattern"]) {
+        ASSERT_EQ(item.size(), 1u) << item;
+        if (item.contains("Event")) {
+            const Json& e = item["Event"];
+            const double t = e.at("Time").get<double>();
+            EXPECT_GE(t, 0.0);
+            for (const Json& p : e.at("EventParameters")) {
+                const std::string id = p.at("ParameterID");
+                EXPECT_TRUE(id == "HapticIntensity" || id == "HapticSharpness") << id;
+                EXPECT_GE(p.at("ParameterValue").get<double>(), 0.0);
+                EXPECT_LE(p.at("ParameterValue").get<double>(), 1.0);
+            }
+            const std::string type = e.at("EventType");
+            if (type == "HapticTransient") {
+                transients.push_back(t);
+            } else {
+                ASSERT_EQ(type, "HapticContinuous");
+                const double d = e.at("EventDuration").get<double>();
+                EXPECT_GT(d, 0.0);
+                EXPECT_LE(d, tactus::kAhapMaxEventS);  // Core Haptics: at most 30 s
+                continuous.emplace_back(t, t + d);
+            }
+        } else {
+            const Json& c = item.at("ParameterCurve");
+            const std::string id = c.at("ParameterID");
+            ASSERT_TRUE(id == "HapticIntensityControl" || id == "HapticSharpnessControl") << id;
+            const Json& points = c.at("ParameterCurveControlPoints");
+            EXPECT_GE(points.size(), 2u);
+            EXPECT_LE(points.size(), 16u);  // longer curves fail on devices
+            const double start = c.at("Time").get<double>();
+            std::vector<std::pair<double, double>> drawn;
+            double last = 0;
+            for (const Json& p : points) {
+                const double t = p.at("Time").get<double>(),
+                             v = p.at("ParameterValue").get<double>();
+                EXPECT_GE(t, last);
+                last = t;
+                EXPECT_GE(v, id == "HapticIntensityControl" ? 0.0 : -1.0);
+                EXPECT_LE(v, 1.0);
+                drawn.emplace_back(start + t, v);
+            }
+            // Inside one continuous event.
+            EXPECT_TRUE(std::any_of(continuous.begin(), continuous.end(),
+                                    [&](const auto& span) {
+                                        return start >= span.first - 1e-9 &&
+                                               start + last <= span.second + 1e-4;
+                                    }))
+                << "curve at " << start;
+            if (id == "HapticIntensityControl") {
+                draw(intensity, drawn);
+                ++curves;
+            }
+        }
+    }
+    // The continuous events cover the vibration, end to end.
+    ASSERT_FALSE(continuous.empty());
+    EXPECT_EQ(continuous.front().first, 0.0);
+    for (size_t i = 1; i < continuous.size(); ++i)
+        EXPECT_NEAR(continuous[i].first, continuous[i - 1].second, 1e-4);
+    EXPECT_NEAR(continuous.back().second, engine.felt.size() * kStepS, 0.002);
+    const double r = correlation(intensity, engine.felt);
+    std::cout << GetParam().name << ".ahap: " << curves << " intensity curves, "
+              << transients.size() << " transients for " << engine.onsets_s.size()
+              << " onsets, correlation with the felt envelope " << r << '\n';
+    EXPECT_GE(r, kMinCorrelation);
+    expect_every_onset_in(engine.onsets_s, transients, "HapticTransient");
+}
+
+TEST_P(Export, HapticFollowsMetaSpecAndTheFeltEnvelope) {
+    const EngineRun engine = run_engine(GetParam().path);
+    const Json haptic = read_json(exported(".haptic"));
+    EXPECT_EQ(haptic.at("version").at("major").get<int>(), 1);
+    EXPECT_TRUE(haptic.at("metadata").at("editor").get<std::string>().starts_with("tactus"));
+    const Json& envelopes = haptic.at("signals").at("continuous").at("envelopes");
+    const Json& amplitude = envelopes.at("amplitude");
+    ASSERT_GE(amplitude.size(), 2u);
+    std::vector<std::pair<double, double>> points;
+    std::vector<double> emphases;
+    double last = 0;
+    for (const Json& p : amplitude) {
+        const double t = p.at("time").get<double>(), a = p.at("amplitude").get<double>();
+        EXPECT_GE(t, last);  // non-decreasing
+        last = t;
+        EXPECT_GE(a, 0.0);
+        EXPECT_LE(a, 1.0);
+        points.emplace_back(t, a);
+        if (p.contains("emphasis")) {
+            const double ea = p["emphasis"].at("amplitude").get<double>();
+            const double ef = p["emphasis"].at("frequency").get<double>();
+            EXPECT_GE(ea, a);  // emphasis never below its breakpoint
+            EXPECT_LE(ea, 1.0);
+            EXPECT_GE(ef, 0.0);
+            EXPECT_LE(ef, 1.0);
+            emphases.push_back(t);
+        }
+    }
+    const Json& frequency = envelopes.at("frequency");
+    double last_f = 0;
+    for (const Json& p : frequency) {
+        const double t = p.at("time").get<double>(), f = p.at("frequency").get<double>();
+        EXPECT_GE(t, last_f);
+        last_f = t;
+        EXPECT_GE(f, 0.0);
+        EXPECT_LE(f, 1.0);
+    }
+    EXPECT_LE(last_f, last);  // the frequency envelope ends with the amplitude's
+    std::vector<double> drawn(engine.felt.size(), 0.0);
+    draw(drawn, points);
+    const double r = correlation(drawn, engine.felt);
+    std::cout << GetParam().name << ".haptic: " << amplitude.size() << " breakpoints, "
+              << emphases.size() << " emphases, correlation " << r << '\n';
+    EXPECT_GE(r, kMinCorrelation);
+    expect_every_onset_in(engine.onsets_s, emphases, "emphasis");
+}
+
+TEST_P(Export, AndroidWaveformIsReadyForCreateWaveform) {
+    const EngineRun engine = run_engine(GetParam().path);
+    const Json w = read_json(exported(".android.json"));
+    EXPECT_EQ(w.at("api_level").get<int>(), 26);
+    const auto timings = w.at("timings").get<std::vector<int64_t>>();
+    const auto amplitudes = w.at("amplitudes").get<std::vector<int>>();
+    ASSERT_EQ(timings.size(), amplitudes.size());
+    std::vector<double> drawn;
+    for (size_t i = 0; i < timings.size(); ++i) {
+        EXPECT_GT(timings[i], 0);
+        EXPECT_GE(amplitudes[i], 0);
+        EXPECT_LE(amplitudes[i], 255);
+        drawn.insert(drawn.end(), static_cast<size_t>(timings[i]), amplitudes[i] / 255.0);
+    }
+    EXPECT_EQ(static_cast<int64_t>(drawn.size()), w.at("duration_ms").get<int64_t>());
+    EXPECT_NEAR(static_cast<double>(drawn.size()), engine.felt.size() * kStepS * 1e3, 2);
+    const double r = correlation(drawn, engine.felt);
+    std::cout << GetParam().name << ".android.json: " << timings.size() << " steps, correlation "
+              << r << '\n';
+    EXPECT_GE(r, kMinCorrelation);
+}
+
+// The comments of an Ogg Vorbis file, read from its comment header as the Vorbis I spec lays
+// it out (packet type 3, "vorbis", vendor, then length-prefixed TAG=value strings).
+std::vector<std::string> vorbis_comments(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+    const size_t at = bytes.find("\x03vorbis");
+    if (at == std::string::npos) return {};
+    size_t p = at + 7;
+    const auto u32 = [&] {
+        uint32_t v = 0;
+        for (int i = 0; i < 4; ++i)
+            v |= static_cast<uint32_t>(static_cast<uint8_t>(bytes[p + i])) << (8 * i);
+        p += 4;
+        return v;
+    };
+    p += u32();  // vendor
+    std::vector<std::string> comments(u32());
+    for (auto& c : comments) {
+        const uint32_t n = u32();
+        c = bytes.substr(p, n);
+        p += n;
+    }
+    return comments;
+}
+
+TEST_P(Export, OggCarriesTheSoundAndTheVibrationForAndroid) {
+    const EngineRun engine = run_engine(GetParam().path);
+    const fs::path ogg = exported(".ogg");
+    const auto comments = vorbis_comments(ogg);
+    EXPECT_NE(std::find(comments.begin(), comments.end(), "ANDROID_HAPTIC=1"), comments.end());
+    SF_INFO info{};
+    SNDFILE* file = sf_open(ogg.c_str(), SFM_READ, &info);
+    ASSERT_NE(file, nullptr) << sf_strerror(nullptr);
+    tactus::AudioReader source(GetParam().path);
+    EXPECT_EQ(info.channels, source.channels() + 1);  // the haptic channel last
+    EXPECT_EQ(info.samplerate, static_cast<int>(source.sample_rate_hz()));
+    std::vector<float> frames(static_cast<size_t>(info.frames * info.channels));
+    sf_readf_float(file, frames.data(), info.frames);
+    sf_close(file);
+    // The haptic channel is the engine's vibration, lined up with the sound (Vorbis is lossy).
+    EXPECT_NEAR(static_cast<double>(info.frames), static_cast<double>(engine.vibration.size()), 1);
+    std::vector<double> haptic, rendered;
+    for (sf_count_t i = 0; i < std::min<sf_count_t>(info.frames, engine.vibration.size()); ++i) {
+        haptic.push_back(frames[i * info.channels + info.channels - 1]);
+        rendered.push_back(engine.vibration[i]);
+    }
+    const double r = correlation(haptic, rendered);
+    // And the sound is the input's first channel.
+    const tactus::MonoAudio mono = tactus::read_mono(GetParam().path);
+    std::vector<double> sound, input;
+    for (size_t i = 0; i < mono.samples.size(); ++i) {
+        double mean = 0;
+        for (int c = 0; c + 1 < info.channels; ++c) mean += frames[i * info.channels + c];
+        sound.push_back(mean / (info.channels - 1));
+        input.push_back(mono.samples[i]);
+    }
+    const double rs = correlation(sound, input);
+    std::cout << GetParam().name << ".ogg: haptic channel vs render " << r << ", sound vs input "
+              << rs << '\n';
+    EXPECT_GE(r, 0.95);
+    EXPECT_GE(rs, 0.95);
+}
+
+INSTANTIATE_TEST_SUITE_P(Sounds, Export, ::testing::ValuesIn(kSounds),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST_F(Cli, ExportRefusesAnUnknownFormatBeforeReadingAudio) {
+    const auto r =
+        run("export " + std::string(kSounds[0].path) + " -o " + (dir_ / "x.wav").string());
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.err.find("x.wav: unknown export format"), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::is_empty(dir_ / "") || !fs::exists(dir_ / "x.wav"));
+}
+
+}  // namespace
