@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <cmath>
 #include <limits>
 #include <optional>
 
@@ -57,9 +58,9 @@ py::dict columns(const Names& names, const std::vector<Row>& rows) {
     return out;
 }
 
-py::array_t<float> render(const py::handle& x, double sample_rate_hz, const std::string& preset,
-                          const py::object& actuator_name, int actuators,
-                          const py::object& settings_dict, const py::kwargs& params) {
+py::object render(const py::handle& x, double sample_rate_hz, const std::string& preset,
+                  const py::object& actuator_name, int actuators, const py::object& settings_dict,
+                  const py::kwargs& params) {
     const Settings settings = resolve_settings(preset, settings_dict, params);
     const auto actuator = resolve_actuator_for(actuator_name, settings);
     const AudioView in = audio_view(x);
@@ -71,12 +72,22 @@ py::array_t<float> render(const py::handle& x, double sample_rate_hz, const std:
     engine.set_actuators(std::vector<ActuatorOutput>(static_cast<size_t>(actuators),
                                                      ActuatorOutput{.profile = actuator}));
     prepare(engine, spec);
-    AudioOutput out = audio_output(in.frames, actuators);
+    // As `tactus render`, the vibration rings out after the input: its tail (at most
+    // kMaxTailS) follows it in the same array, returned as long as it came out.
+    const auto most =
+        static_cast<int>(in.frames + std::ceil(kMaxTailS * sample_rate_hz) + Engine::kMaxBlock);
+    AudioOutput out = audio_output(most, actuators);
+    int64_t frames = in.frames;
     {
         const py::gil_scoped_release unlocked;
         engine.process(in.pointers.data(), out.pointers.data(), in.frames);
+        run_tail(engine, spec.channels, [&](const float* const* vibration, int count) {
+            for (size_t c = 0; c < out.pointers.size(); ++c)
+                std::copy_n(vibration[c], count, out.pointers[c] + frames);
+            frames += count;
+        });
     }
-    return out.array;
+    return out.array[py::slice(0, static_cast<py::ssize_t>(frames), 1)];
 }
 
 py::dict analyze(const py::handle& x, double sample_rate_hz, const std::string& preset,

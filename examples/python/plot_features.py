@@ -65,7 +65,7 @@ def main():
     twin.legend(loc="upper right")
 
     ax = axes[3]
-    ax.plot(audio_t, vibration[:, 0], color="k", linewidth=0.4)
+    ax.plot(np.arange(len(vibration)) / rate, vibration[:, 0], color="k", linewidth=0.4)
     ax.set(title=f"vibration for {args.actuator}", ylabel="full scale")
 
     ax = axes[4]

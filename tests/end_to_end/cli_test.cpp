@@ -164,8 +164,9 @@ TEST_F(Cli, SustainedSoundsWarnWithoutVibrationAndTheSustainedPresetFeelsThem) {
     const double rate = 44100;
     std::vector<float> tone(static_cast<size_t>(3 * rate));
     for (size_t i = 0; i < tone.size(); ++i)
-        tone[i] = static_cast<float>(0.5 * std::min(1.0, i / (0.05 * rate)) *
-                                     std::sin(2 * tactus::test::kTestPi * 440 * i / rate));
+        tone[i] = static_cast<float>(  // 50 ms fades in and out
+            0.5 * std::min({1.0, i / (0.05 * rate), (tone.size() - i) / (0.05 * rate)}) *
+            std::sin(2 * tactus::test::kTestPi * 440 * i / rate));
     const fs::path input = dir_ / "tone.wav", pulses = dir_ / "tfd.wav", held = dir_ / "held.wav";
     ASSERT_NO_FATAL_FAILURE(tactus::test::write_sound_file(input, tone, rate));
     const auto peak = [](const fs::path& path) {

@@ -89,7 +89,7 @@ TEST_F(ClapPlugin, ParametersAreTheTableByStableId) {
 TEST_F(ClapPlugin, DefaultsRenderAsTheCommandLine) {
     const auto reference = dir_ / "reference.wav";
     ASSERT_EQ(run("render " + kDrums.string() + " -o " + reference.string()).exit_code, 0);
-    const Sound cli = read_sound(reference);
+    const Sound cli = as_hosts_play(read_sound(reference), drums_.frames());
 
     ClapInstance instance(library_);
     ASSERT_EQ(instance.input_channels(), 2);

@@ -33,6 +33,16 @@ inline Sound read_sound(const std::filesystem::path& path) {
     return sound;
 }
 
+// `tactus render`'s output as a host plays it: the input's length. The command rings the
+// vibration's tail out past the input's end; a host stops with the input.
+inline Sound as_hosts_play(Sound rendered, size_t input_frames) {
+    for (auto& channel : rendered.channels) {
+        EXPECT_GE(channel.size(), input_frames);
+        channel.resize(std::min(channel.size(), input_frames));
+    }
+    return rendered;
+}
+
 inline double max_difference(const std::vector<float>& a, const std::vector<float>& b,
                              size_t from = 0) {
     double d = a.size() == b.size() ? 0.0 : INFINITY;

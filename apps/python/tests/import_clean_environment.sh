@@ -9,7 +9,7 @@ set -euo pipefail
 python=$1 module_dir=$(cd "$2" && pwd) link=$3 build=$4 platlib=$5
 home=$(mktemp -d)
 trap 'rm -rf "$home"' EXIT
-check='import tactus, numpy; print(tactus.__file__); y = tactus.render(numpy.zeros(4800, numpy.float32), 48000); assert y.shape == (4800, 1) and not y.any()'
+check='import tactus, numpy; print(tactus.__file__); y = tactus.render(numpy.zeros(4800, numpy.float32), 48000); assert y.shape[0] >= 4800 and y.shape[1] == 1 and not y.any()'
 if env -i HOME="$home" "$python" -c "$check" 2>/dev/null; then
   echo "FAIL: tactus imports before use_build_tree.sh ran" >&2
   exit 1
