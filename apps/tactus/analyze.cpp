@@ -131,16 +131,8 @@ void add_analyze(CLI::App& app) {
                         "and meter through it (default: meter through voice-coil)");
     options->pipeline.add_to(*command);
     command->callback([options] {
-        size_t skipped = 0;
-        const auto jobs =
-            plan_batch(options->batch,
-                       options->format == "json" ? ".features.json" : ".features.csv", skipped);
-        run_jobs(options->batch, jobs, "analyze", [&](const BatchJob& job) {
-            AnalyzeOptions one = *options;
-            one.input = job.input.string(), one.output = job.output.string();
-            one.force = options->batch.force;
-            analyze(one);
-        });
+        for_each_input(*options, options->format == "json" ? ".features.json" : ".features.csv",
+                       "analyze", analyze);
     });
 }
 

@@ -123,19 +123,23 @@ void run_jobs(const BatchOptions& o, const std::vector<BatchJob>& jobs, const st
         jobs.size(), std::min(o.jobs, kMaxTrackedTemporaries), [] { return int64_t{0}; },
         fmt::format("{} {} files", label, jobs.size()),
         [&](size_t i, const AddFrames&) { one(jobs[i]); });
+    report_failures(label, errors);
+}
+
+void report_failures(const std::string& label, const std::vector<std::exception_ptr>& errors) {
     size_t failed = 0;
-    for (size_t i = 0; i < jobs.size(); ++i) {
-        if (!errors[i]) continue;
+    for (const std::exception_ptr& error : errors) {
+        if (!error) continue;
         ++failed;
         try {
-            std::rethrow_exception(errors[i]);
+            std::rethrow_exception(error);
         } catch (const std::exception& e) {
             std::cerr << "tactus: error: " << e.what() << '\n';
         }
     }
     if (failed > 0)
         throw std::runtime_error(fmt::format("{}: {} of {} files failed, the others were written",
-                                             label, failed, jobs.size()));
+                                             label, failed, errors.size()));
 }
 
 }  // namespace tactus::cli

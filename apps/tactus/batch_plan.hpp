@@ -39,4 +39,23 @@ std::vector<BatchJob> plan_batch(const BatchOptions& o, const std::string& suffi
 void run_jobs(const BatchOptions& o, const std::vector<BatchJob>& jobs, const std::string& label,
               const std::function<void(const BatchJob& job)>& one);
 
+// A command run once per input, as render is: `run` gets a copy of `options` with one input, its
+// output (DIR/<name><suffix> with -O) and --force. Options has input, output, force and batch.
+template <typename Options>
+void for_each_input(const Options& options, const std::string& suffix, const std::string& label,
+                    void (*run)(const Options&)) {
+    size_t skipped = 0;
+    const std::vector<BatchJob> jobs = plan_batch(options.batch, suffix, skipped);
+    run_jobs(options.batch, jobs, label, [&](const BatchJob& job) {
+        Options one = options;
+        one.input = job.input.string(), one.output = job.output.string();
+        one.force = options.batch.force;
+        run(one);
+    });
+}
+
+// Says on stderr why each failed job failed; throws "LABEL: N of M files failed, the others
+// were written" when any did.
+void report_failures(const std::string& label, const std::vector<std::exception_ptr>& errors);
+
 }  // namespace tactus::cli

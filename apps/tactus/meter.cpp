@@ -132,16 +132,7 @@ void add_meter(CLI::App& app) {
         ->check(CLI::Range(spec(P::perception_contact_area_cm2).min,
                            spec(P::perception_contact_area_cm2).max))
         ->capture_default_str();
-    command->callback([options] {
-        size_t skipped = 0;
-        const auto jobs = plan_batch(options->batch, ".meter.csv", skipped);
-        run_jobs(options->batch, jobs, "meter", [&](const BatchJob& job) {
-            MeterOptions one = *options;
-            one.input = job.input.string(), one.output = job.output.string();
-            one.force = options->batch.force;
-            meter(one);
-        });
-    });
+    command->callback([options] { for_each_input(*options, ".meter.csv", "meter", meter); });
 }
 
 }  // namespace tactus::cli

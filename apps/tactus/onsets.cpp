@@ -48,16 +48,7 @@ void add_onsets(CLI::App& app) {
         app.add_subcommand("onsets", "print one onset per line: onset_s decided_s strength");
     options->batch.add_to(*command, "file to write, one input (default: stdout)", ".onsets.txt");
     options->pipeline.add_to(*command);
-    command->callback([options] {
-        size_t skipped = 0;
-        const auto jobs = plan_batch(options->batch, ".onsets.txt", skipped);
-        run_jobs(options->batch, jobs, "onsets", [&](const BatchJob& job) {
-            OnsetsOptions one = *options;
-            one.input = job.input.string(), one.output = job.output.string();
-            one.force = options->batch.force;
-            onsets(one);
-        });
-    });
+    command->callback([options] { for_each_input(*options, ".onsets.txt", "onsets", onsets); });
 }
 
 }  // namespace tactus::cli

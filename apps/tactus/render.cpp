@@ -150,23 +150,10 @@ void render(const RenderOptions& o) {
                                           reported = done;
                                       });
         });
-    size_t failed = 0;
-    for (size_t i = 0; i < jobs.size(); ++i) {
-        if (!errors[i]) {
-            note(summaries[i]);
-            continue;
-        }
-        if (jobs.size() == 1) std::rethrow_exception(errors[i]);
-        ++failed;
-        try {
-            std::rethrow_exception(errors[i]);
-        } catch (const std::exception& e) {
-            std::cerr << "tactus: error: " << e.what() << '\n';
-        }
-    }
-    if (failed > 0)
-        throw std::runtime_error(fmt::format(
-            "render: {} of {} files failed, the others were written", failed, jobs.size()));
+    for (size_t i = 0; i < jobs.size(); ++i)
+        if (!errors[i]) note(summaries[i]);
+    if (jobs.size() == 1 && errors[0]) std::rethrow_exception(errors[0]);
+    report_failures("render", errors);
 }
 
 }  // namespace

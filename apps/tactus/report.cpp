@@ -221,16 +221,7 @@ void add_report(CLI::App& app) {
                         "actuator profile (name or FILE.toml): render for it and meter through it "
                         "(default: none, metered through voice-coil)");
     options->pipeline.add_to(*command);
-    command->callback([options] {
-        size_t skipped = 0;
-        const auto jobs = plan_batch(options->batch, ".report.html", skipped);
-        run_jobs(options->batch, jobs, "report", [&](const BatchJob& job) {
-            ReportOptions one = *options;
-            one.input = job.input.string(), one.output = job.output.string();
-            one.force = options->batch.force;
-            report(one);
-        });
-    });
+    command->callback([options] { for_each_input(*options, ".report.html", "report", report); });
 }
 
 }  // namespace tactus::cli

@@ -4,23 +4,13 @@
 #include <nlohmann/json.hpp>
 
 #include "tactus/export/haptic_formats.hpp"
+#include "tactus/export/json_numbers.hpp"
 
 namespace tactus {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-// x to `per_unit` steps, divided back by a whole number: prints short (0.0676, not
-// 0.06760000000000001).
-double rounded(double x, double per_unit) {
-    return std::round(x * per_unit) / per_unit;
-}
-double time_value(double t) {
-    return rounded(t, 1e4);
-}
-double level(double v) {
-    return rounded(std::clamp(v, 0.0, 1.0), 1e3);
-}
+using namespace json_numbers;
 
 // The breakpoints within [begin, end], with the envelope's values at both ends.
 std::vector<Breakpoint> window(const std::vector<Breakpoint>& points, double begin, double end) {
