@@ -11,5 +11,7 @@ void add_onsets(CLI::App& app);
 void add_presets(CLI::App& app);
 void add_placement(CLI::App& app);
 void add_meter(CLI::App& app);
+void add_live(CLI::App& app);     // live.cpp, with the live front end (live/)
+void add_devices(CLI::App& app);  // devices.cpp, with it
 
 }  // namespace tactus::cli

@@ -19,6 +19,10 @@ int main(int argc, char** argv) {
     tactus::cli::add_presets(app);
     tactus::cli::add_placement(app);
     tactus::cli::add_meter(app);
+#ifdef TACTUS_LIVE
+    tactus::cli::add_live(app);
+    tactus::cli::add_devices(app);
+#endif
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
