@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   sonic-pi-samples aubio-tools sox puredata-core puredata-extra time
   python3 python3-numpy python3-scipy python3-soundfile python3-mir-eval
+  librtaudio-dev liblo-dev libjack-jackd2-dev jackd2
 )
 
 missing=()

@@ -135,7 +135,8 @@ void live_run(const LiveOptions& o) {
     engine.prepare({.sample_rate_hz = rate_hz,
                     .max_block = std::min(Engine::kMaxBlock, std::max(stream->block_frames(), 16)),
                     .channels = player ? player->channels() : routing.device_inputs});
-    const int sync_samples = o.sync ? live::vibration_delay_samples(engine) : 0;
+    const int onset_to_pulse = live::vibration_delay_samples(settings, rate_hz, actuator);
+    const int sync_samples = o.sync ? onset_to_pulse : 0;
     live::LiveCallback callback(engine, player ? &*player : nullptr, routing, sync_samples);
 
     live::LiveControl control(engine, settings, o.pipeline.assignments);
@@ -151,22 +152,23 @@ void live_run(const LiveOptions& o) {
 
     std::signal(SIGINT, request_stop);
     std::signal(SIGTERM, request_stop);
-    stream->start(callback);
+    stream->start(callback);  // the device's ports are connected when it returns
+    callback.begin();
     if (server) server->start();
 
     const long device_frames = stream->device_latency_frames();
-    const int algorithmic_frames = engine.latency();
+    const int algorithmic_frames = onset_to_pulse;
     const auto ms = [&](double frames) { return 1000.0 * frames / rate_hz; };
     const double latency_ms = ms(static_cast<double>(device_frames + algorithmic_frames));
     std::cerr << fmt::format(
         "tactus: live on {} at {:g} Hz, {} frames a block, {} actuator(s){}{}\n"
         "tactus: latency {:.2f} ms: device {} frames ({:.2f} ms) + algorithmic {} frames "
-        "({:.2f} ms){}\n",
+        "({:.2f} ms: onset to pulse, of which look-ahead {} frames){}\n",
         stream->output_name(), rate_hz, stream->block_frames(), routing.actuator_channels.size(),
         server ? fmt::format(", OSC on port {}", server->port()) : "",
         sender ? fmt::format(", OSC to {}:{}", osc_out->host, osc_out->port) : "", latency_ms,
         device_frames, ms(static_cast<double>(device_frames)), algorithmic_frames,
-        ms(algorithmic_frames),
+        ms(algorithmic_frames), engine.latency(),
         o.sync ? fmt::format("; sound delayed {} frames (--sync)", sync_samples) : "");
 
     using Clock = std::chrono::steady_clock;

@@ -52,6 +52,7 @@ void LiveCallback::process(const float* in, float* out, int frames) noexcept {
     for (int c = 0; c < routing_.device_outputs; ++c)  // channels nothing drives stay silent
         std::fill(out + static_cast<ptrdiff_t>(c) * frames,
                   out + static_cast<ptrdiff_t>(c + 1) * frames, 0.0f);
+    if (!begun_.load(std::memory_order_acquire)) return;
     for (int done = 0; done < frames;) {
         const int count = std::min(kChunk, frames - done);
         process_chunk(in, frames, out, frames, done, count);

@@ -46,6 +46,9 @@ class LiveCallback final : public AudioCallback {
     // Audio thread: the device reported an over- or underrun.
     void note_xrun() noexcept override { xruns_.fetch_add(1, std::memory_order_relaxed); }
 
+    // Any thread: until called, process() outputs silence and neither the player nor the engine
+    // moves (a device's first blocks may go out before its ports are connected).
+    void begin() noexcept { begun_.store(true, std::memory_order_release); }
     // Any thread.
     Meters take_meters() noexcept;
     int64_t frames() const { return frames_.load(std::memory_order_relaxed); }
@@ -70,6 +73,7 @@ class LiveCallback final : public AudioCallback {
     std::atomic<float> input_peak_{0}, output_peak_{0};
     std::atomic<double> load_{0};
     std::atomic<int64_t> xruns_{0}, frames_{0};
+    std::atomic<bool> begun_{false};
 };
 
 }  // namespace tactus::live

@@ -1,0 +1,157 @@
+// The live tests' own JACK client, run against a JACK server of the test (dummy driver):
+//   jack_test_client record NAME CHANNELS SECONDS OUT.wav
+//       registers input ports NAME:in_1 ... in_CHANNELS and records them, from activation, for
+//       SECONDS (or until SIGTERM / SIGINT) into a float WAV.
+//   jack_test_client filter NAME ACTUATOR.toml
+//       NAME:in -> NAME:out through the actuator profile's band-pass resonance (a biquad whose
+//       magnitude is ActuatorProfile::response_db's resonance term: an actuator the calibration
+//       must measure), until SIGTERM / SIGINT.
+// Prints "ready" on stdout once its ports exist and it is active.
+#include <jack/jack.h>
+#include <sndfile.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "tactus/io/actuator_file.hpp"
+
+namespace {
+
+std::atomic<bool> g_stop{false};
+extern "C" void on_signal(int) { g_stop = true; }
+
+struct Recorder {
+    std::vector<jack_port_t*> ports;
+    std::vector<std::vector<float>> samples;  // preallocated: the callback only copies
+    std::atomic<size_t> frames{0};
+};
+
+int record_block(jack_nframes_t n, void* arg) {
+    auto& r = *static_cast<Recorder*>(arg);
+    const size_t at = r.frames.load(std::memory_order_relaxed);
+    const size_t count = std::min<size_t>(n, r.samples[0].size() - at);
+    for (size_t c = 0; c < r.ports.size(); ++c) {
+        const auto* in = static_cast<const float*>(jack_port_get_buffer(r.ports[c], n));
+        std::memcpy(r.samples[c].data() + at, in, count * sizeof(float));
+    }
+    r.frames.store(at + count, std::memory_order_relaxed);
+    return 0;
+}
+
+struct Filter {
+    jack_port_t *in = nullptr, *out = nullptr;
+    double b0 = 0, b1 = 0, b2 = 0, a1 = 0, a2 = 0, z1 = 0, z2 = 0;
+};
+
+int filter_block(jack_nframes_t n, void* arg) {
+    auto& f = *static_cast<Filter*>(arg);
+    const auto* in = static_cast<const float*>(jack_port_get_buffer(f.in, n));
+    auto* out = static_cast<float*>(jack_port_get_buffer(f.out, n));
+    for (jack_nframes_t i = 0; i < n; ++i) {  // transposed direct form II
+        const double x = in[i];
+        const double y = f.b0 * x + f.z1;
+        f.z1 = f.b1 * x - f.a1 * y + f.z2;
+        f.z2 = f.b2 * x - f.a2 * y;
+        out[i] = static_cast<float>(y);
+    }
+    return 0;
+}
+
+jack_client_t* open_client(const char* name) {
+    jack_status_t status{};
+    jack_client_t* client = jack_client_open(name, JackNoStartServer, &status);
+    if (!client) std::fprintf(stderr, "jack_test_client: cannot open client %s (status 0x%x)\n", name, status);
+    return client;
+}
+
+void wait_for_stop(double seconds) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (!g_stop && std::chrono::steady_clock::now() < end)
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+}
+
+int record(const char* name, int channels, double seconds, const char* path) {
+    jack_client_t* client = open_client(name);
+    if (!client) return 1;
+    const double rate = jack_get_sample_rate(client);
+    Recorder r;
+    r.samples.assign(static_cast<size_t>(channels),
+                     std::vector<float>(static_cast<size_t>(seconds * rate) + 1));
+    for (int c = 0; c < channels; ++c)
+        r.ports.push_back(jack_port_register(client, ("in_" + std::to_string(c + 1)).c_str(),
+                                             JACK_DEFAULT_AUDIO_TYPE, JackPortIsInput, 0));
+    jack_set_process_callback(client, record_block, &r);
+    if (jack_activate(client) != 0) return 1;
+    std::printf("ready\n");
+    std::fflush(stdout);
+    wait_for_stop(seconds);
+    jack_deactivate(client);
+    jack_client_close(client);
+    const size_t frames = r.frames.load();
+    SF_INFO info{};
+    info.samplerate = static_cast<int>(rate);
+    info.channels = channels;
+    info.format = SF_FORMAT_WAV | SF_FORMAT_FLOAT;
+    SNDFILE* file = sf_open(path, SFM_WRITE, &info);
+    if (!file) return 1;
+    std::vector<float> interleaved(frames * static_cast<size_t>(channels));
+    for (size_t i = 0; i < frames; ++i)
+        for (int c = 0; c < channels; ++c)
+            interleaved[i * static_cast<size_t>(channels) + static_cast<size_t>(c)] =
+                r.samples[static_cast<size_t>(c)][i];
+    sf_writef_float(file, interleaved.data(), static_cast<sf_count_t>(frames));
+    sf_close(file);
+    return 0;
+}
+
+int filter(const char* name, const char* actuator_path) {
+    const tactus::ActuatorProfile profile = tactus::load_actuator(actuator_path);
+    if (profile.resonance != tactus::ResonanceKind::band_pass) {
+        std::fprintf(stderr, "jack_test_client: %s has no band-pass resonance\n", actuator_path);
+        return 1;
+    }
+    jack_client_t* client = open_client(name);
+    if (!client) return 1;
+    const double rate = jack_get_sample_rate(client);
+    // The analogue band-pass s/(Q w0) / (s^2/w0^2 + s/(Q w0) + 1) (magnitude 1 at w0; the
+    // profile's resonance term), bilinear with w0 prewarped (RBJ's constant-peak band-pass).
+    const double w0 = 2 * M_PI * profile.resonance_hz / rate;
+    const double alpha = std::sin(w0) / (2 * profile.q), a0 = 1 + alpha;
+    Filter f;
+    f.b0 = alpha / a0;
+    f.b1 = 0;
+    f.b2 = -alpha / a0;
+    f.a1 = -2 * std::cos(w0) / a0;
+    f.a2 = (1 - alpha) / a0;
+    f.in = jack_port_register(client, "in", JACK_DEFAULT_AUDIO_TYPE, JackPortIsInput, 0);
+    f.out = jack_port_register(client, "out", JACK_DEFAULT_AUDIO_TYPE, JackPortIsOutput, 0);
+    jack_set_process_callback(client, filter_block, &f);
+    if (jack_activate(client) != 0) return 1;
+    std::printf("ready\n");
+    std::fflush(stdout);
+    wait_for_stop(1e9);
+    jack_deactivate(client);
+    jack_client_close(client);
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::signal(SIGTERM, on_signal);
+    std::signal(SIGINT, on_signal);
+    const std::string mode = argc > 1 ? argv[1] : "";
+    if (mode == "record" && argc == 6) return record(argv[2], std::stoi(argv[3]), std::stod(argv[4]), argv[5]);
+    if (mode == "filter" && argc == 4) return filter(argv[2], argv[3]);
+    std::fprintf(stderr,
+                 "usage: jack_test_client record NAME CHANNELS SECONDS OUT.wav\n"
+                 "       jack_test_client filter NAME ACTUATOR.toml\n");
+    return 2;
+}
