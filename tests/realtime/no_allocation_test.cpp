@@ -23,6 +23,7 @@
 #include <thread>
 #include <vector>
 
+#include "realtime/guard.hpp"
 #include "support/live_values.hpp"
 #include "support/signals.hpp"
 #include "tactus/engine/engine.hpp"
@@ -40,11 +41,11 @@ void* __libc_valloc(size_t size);
 void* __libc_pvalloc(size_t size);
 }
 
-namespace {
-
 constinit thread_local bool t_guarded = false;
 std::atomic<long> g_allocator_calls{0};
 std::atomic<long> g_mutex_locks{0};
+
+namespace {
 
 inline void note_allocator_call() {
     if (t_guarded) g_allocator_calls.fetch_add(1, std::memory_order_relaxed);
@@ -69,20 +70,6 @@ void release(void* pointer) {
 
 using LockFunction = int (*)(pthread_mutex_t*);
 std::atomic<LockFunction> g_real_lock{nullptr};
-
-// Counts allocator and lock calls on this thread while alive.
-class Guard {
-  public:
-    Guard() { t_guarded = true; }
-    ~Guard() { t_guarded = false; }
-    Guard(const Guard&) = delete;
-    Guard& operator=(const Guard&) = delete;
-};
-
-void reset_counts() {
-    g_allocator_calls = 0;
-    g_mutex_locks = 0;
-}
 
 // Keeps the compiler from optimising an allocation away.
 void escape(const void* pointer) {
