@@ -4,7 +4,7 @@ records, through the test's own JACK client, exactly what `tactus render FILE` w
 sound and vibration onsets line up within 1 ms (every onset with a 0.5 ms hop; with the default
 2.9 ms hop, onsets are decided on that grid: the median within 1 ms, each within half a hop).
 
-usage: jack_live_test.py TACTUS JACK_TEST_CLIENT SOURCE_DIR"""
+usage: jack_live_test.py TACTUS LIVE_TEST_CLIENT SOURCE_DIR"""
 
 import os
 import sys

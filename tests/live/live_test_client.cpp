@@ -1,13 +1,19 @@
-// The live tests' own JACK client, run against a JACK server of the test (dummy driver):
-//   jack_test_client record NAME CHANNELS SECONDS OUT.wav
+// The live tests' own JACK and OSC client, run against a JACK server of the test (dummy driver):
+//   live_test_client record NAME CHANNELS SECONDS OUT.wav
 //       registers input ports NAME:in_1 ... in_CHANNELS and records them, from activation, for
 //       SECONDS (or until SIGTERM / SIGINT) into a float WAV.
-//   jack_test_client filter NAME ACTUATOR.toml
+//   live_test_client filter NAME ACTUATOR.toml
 //       NAME:in -> NAME:out through the actuator profile's band-pass resonance (a biquad whose
 //       magnitude is ActuatorProfile::response_db's resonance term: an actuator the calibration
 //       must measure), until SIGTERM / SIGINT.
-// Prints "ready" on stdout once its ports exist and it is active.
+//   live_test_client osc-send PORT ADDRESS [f VALUE | s TEXT]...
+//       one OSC message to 127.0.0.1:PORT, sent with liblo.
+//   live_test_client osc-listen PORT SECONDS
+//       prints every OSC message received on 127.0.0.1:PORT for SECONDS (or until SIGTERM), one
+//       line each: the address, then the arguments.
+// record, filter and osc-listen print "ready" on stdout once they listen.
 #include <jack/jack.h>
+#include <lo/lo.h>
 #include <sndfile.h>
 
 #include <atomic>
@@ -67,7 +73,7 @@ int filter_block(jack_nframes_t n, void* arg) {
 jack_client_t* open_client(const char* name) {
     jack_status_t status{};
     jack_client_t* client = jack_client_open(name, JackNoStartServer, &status);
-    if (!client) std::fprintf(stderr, "jack_test_client: cannot open client %s (status 0x%x)\n", name, status);
+    if (!client) std::fprintf(stderr, "live_test_client: cannot open client %s (status 0x%x)\n", name, status);
     return client;
 }
 
@@ -114,7 +120,7 @@ int record(const char* name, int channels, double seconds, const char* path) {
 int filter(const char* name, const char* actuator_path) {
     const tactus::ActuatorProfile profile = tactus::load_actuator(actuator_path);
     if (profile.resonance != tactus::ResonanceKind::band_pass) {
-        std::fprintf(stderr, "jack_test_client: %s has no band-pass resonance\n", actuator_path);
+        std::fprintf(stderr, "live_test_client: %s has no band-pass resonance\n", actuator_path);
         return 1;
     }
     jack_client_t* client = open_client(name);
@@ -142,6 +148,47 @@ int filter(const char* name, const char* actuator_path) {
     return 0;
 }
 
+int osc_send(const char* port, int argc, char** argv) {
+    lo_address to = lo_address_new("127.0.0.1", port);
+    lo_message message = lo_message_new();
+    const char* address = argv[0];
+    for (int i = 1; i + 1 < argc; i += 2) {
+        if (argv[i][0] == 'f') lo_message_add_float(message, std::stof(argv[i + 1]));
+        else if (argv[i][0] == 'i') lo_message_add_int32(message, std::stoi(argv[i + 1]));
+        else lo_message_add_string(message, argv[i + 1]);
+    }
+    const int sent = lo_send_message(to, address, message);
+    lo_message_free(message);
+    lo_address_free(to);
+    return sent > 0 ? 0 : 1;
+}
+
+int print_message(const char* path, const char* types, lo_arg** argv, int argc, lo_message,
+                  void*) {
+    std::printf("%s", path);
+    for (int i = 0; i < argc; ++i) {
+        if (types[i] == LO_FLOAT) std::printf(" %.9g", argv[i]->f);
+        else if (types[i] == LO_INT32) std::printf(" %d", argv[i]->i);
+        else if (types[i] == LO_STRING) std::printf(" %s", &argv[i]->s);
+        else std::printf(" ?%c", types[i]);
+    }
+    std::printf("\n");
+    return 0;
+}
+
+int osc_listen(const char* port, double seconds) {
+    lo_server server = lo_server_new(port, nullptr);
+    if (!server) return 1;
+    lo_server_add_method(server, nullptr, nullptr, print_message, nullptr);
+    std::printf("ready\n");
+    std::fflush(stdout);
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (!g_stop && std::chrono::steady_clock::now() < end) lo_server_recv_noblock(server, 10);
+    std::fflush(stdout);
+    lo_server_free(server);
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -150,8 +197,12 @@ int main(int argc, char** argv) {
     const std::string mode = argc > 1 ? argv[1] : "";
     if (mode == "record" && argc == 6) return record(argv[2], std::stoi(argv[3]), std::stod(argv[4]), argv[5]);
     if (mode == "filter" && argc == 4) return filter(argv[2], argv[3]);
+    if (mode == "osc-send" && argc >= 4) return osc_send(argv[2], argc - 3, argv + 3);
+    if (mode == "osc-listen" && argc == 4) return osc_listen(argv[2], std::stod(argv[3]));
     std::fprintf(stderr,
-                 "usage: jack_test_client record NAME CHANNELS SECONDS OUT.wav\n"
-                 "       jack_test_client filter NAME ACTUATOR.toml\n");
+                 "usage: live_test_client record NAME CHANNELS SECONDS OUT.wav\n"
+                 "       live_test_client filter NAME ACTUATOR.toml\n"
+                 "       live_test_client osc-send PORT ADDRESS [f VALUE | i VALUE | s TEXT]...\n"
+                 "       live_test_client osc-listen PORT SECONDS\n");
     return 2;
 }
