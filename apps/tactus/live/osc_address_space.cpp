@@ -93,7 +93,14 @@ OscCommand parse_osc(const OscMessage& m, int actuators) {
         expect_args(m, 1, 1, "one preset name");
         if (!is_text(m.args[0])) refuse(m, "the preset name must be a string");
         const std::string& name = m.args[0].text;
-        if (name.empty() || name.size() > kMaxNameBytes) refuse(m, "no usable preset name");
+        const bool plain = !name.empty() && name.size() <= kMaxNameBytes && name[0] != '.' &&
+                           !name.ends_with(".toml") &&
+                           name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTU"
+                                                  "VWXYZ0123456789_-.") == std::string::npos;
+        if (!plain)  // a message from the network reads no file it names
+            refuse(m, fmt::format("'{}' is not a preset name (see `tactus presets`; files are "
+                                  "not loaded over OSC)",
+                                  printable(std::string_view(name).substr(0, 200))));
         return LoadPreset{name};
     }
     if (rest == "trigger") {
@@ -119,7 +126,7 @@ std::vector<std::string> osc_address_lines() {
                                          : fmt::format("{}", fmt::join(s.choices, "|"));
         lines.push_back(fmt::format("{}{} <{}>", kOscRoot, s.key, argument));
     }
-    lines.push_back(fmt::format("{}preset <name or FILE.toml>", kOscRoot));
+    lines.push_back(fmt::format("{}preset <name>", kOscRoot));
     lines.push_back(fmt::format("{}trigger [frequency_hz amplitude]", kOscRoot));
     lines.push_back(fmt::format("{}actuator/<n>/gain <{} to 0 dB>", kOscRoot,
                                 ActuatorOutput::kMinGainDb));

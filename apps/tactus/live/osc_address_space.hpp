@@ -1,7 +1,7 @@
 // The OSC address space of `tactus live`, generated from the parameter table (design.md: "OSC
 // addresses ... generated from it, never written again"):
 //   /tactus/<key> <value>                 every parameter (a number, or a choice's name)
-//   /tactus/preset <name>                 a preset by name or file
+//   /tactus/preset <name>                 a preset by name (no file path: untrusted input)
 //   /tactus/trigger [frequency_hz amplitude]   a pulse (without arguments: the mapping's
 //                                         highest frequency and amplitude)
 //   /tactus/actuator/<n>/gain <dB>        actuator n's trim (n from 1)
