@@ -13,5 +13,6 @@ void add_placement(CLI::App& app);
 void add_meter(CLI::App& app);
 void add_live(CLI::App& app);     // live.cpp, with the live front end (live/)
 void add_devices(CLI::App& app);  // devices.cpp, with it
+void add_calibrate(CLI::App& app);  // calibrate.cpp, with it
 
 }  // namespace tactus::cli

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
 #ifdef TACTUS_LIVE
     tactus::cli::add_live(app);
     tactus::cli::add_devices(app);
+    tactus::cli::add_calibrate(app);
 #endif
     try {
         app.parse(argc, argv);
