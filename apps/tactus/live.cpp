@@ -47,7 +47,8 @@ struct LiveOptions {
     std::string actuator_channels = "1", sound_channels;
     std::vector<std::string> play;
     bool loop = false, sync = false;
-    std::string actuator;
+    std::vector<std::string> actuators;     // one for all, or one per actuator channel
+    std::vector<double> gains_db, delays_ms;  // the same
     double rate_hz = 0;
     int block = 256;
     std::string osc_port, osc_send;
@@ -64,6 +65,37 @@ std::pair<std::string, int> device_and_channel(const std::string& text) {
     if (tail.find_first_not_of("0123456789") != std::string::npos) return {text, -1};
     const std::vector<int> channel = live::parse_channel_list(tail, "--input");
     return {text.substr(0, colon), channel[0]};
+}
+
+// One value for every actuator, or one each; `what` names the option.
+template <typename T>
+T for_actuator(const std::vector<T>& values, size_t actuator, size_t actuators, const char* what,
+               T otherwise) {
+    if (values.empty()) return otherwise;
+    if (values.size() != 1 && values.size() != actuators)
+        throw std::runtime_error(fmt::format("{}: give one value for all {} actuators or one each",
+                                             what, actuators));
+    return values[values.size() == 1 ? 0 : actuator];
+}
+
+// The paper drives every actuator with one signal: each output here has its own profile, trim
+// and delay (the engine's ActuatorOutput), the same by default.
+std::vector<ActuatorOutput> actuator_outputs(const LiveOptions& o, const Settings& settings,
+                                             const live::Routing& routing) {
+    const size_t n = routing.actuator_channels.size();
+    std::vector<ActuatorOutput> outputs(n);
+    for (size_t a = 0; a < n; ++a) {
+        const std::string name = for_actuator(o.actuators, a, n, "--actuator", std::string());
+        if (!name.empty()) outputs[a].profile = load_actuator_for(name, settings);
+        outputs[a].gain_db = for_actuator(o.gains_db, a, n, "--actuator-gain-db", 0.0);
+        outputs[a].delay_ms = for_actuator(o.delays_ms, a, n, "--actuator-delay-ms", 0.0);
+        try {
+            outputs[a].check(static_cast<int>(a));
+        } catch (const std::invalid_argument& e) {
+            throw std::runtime_error(e.what());
+        }
+    }
+    return outputs;
 }
 
 live::StreamRequest stream_request(const LiveOptions& o, const live::Routing& routing,
@@ -108,8 +140,7 @@ void live_run(const LiveOptions& o) {
         throw std::runtime_error(
             fmt::format("--actuator-channels: at most {} actuators", Engine::kMaxActuators));
 
-    std::optional<ActuatorProfile> actuator;
-    if (!o.actuator.empty()) actuator = load_actuator_for(o.actuator, settings);
+    const std::vector<ActuatorOutput> outputs = actuator_outputs(o, settings, routing);
     std::optional<live::OscEndpoint> osc_in, osc_out;
     if (!o.osc_port.empty()) osc_in = live::parse_endpoint(o.osc_port, "--osc-port", "127.0.0.1");
     if (!o.osc_send.empty()) osc_out = live::parse_endpoint(o.osc_send, "--osc-send", "127.0.0.1");
@@ -129,13 +160,12 @@ void live_run(const LiveOptions& o) {
     routing.device_inputs = player ? 0 : stream->input_channels();
 
     Engine engine(settings);
-    engine.set_actuators(std::vector<ActuatorOutput>(routing.actuator_channels.size(),
-                                                     ActuatorOutput{.profile = actuator}));
+    engine.set_actuators(outputs);
     engine.enable_frame_queue();
     engine.prepare({.sample_rate_hz = rate_hz,
                     .max_block = std::min(Engine::kMaxBlock, std::max(stream->block_frames(), 16)),
                     .channels = player ? player->channels() : routing.device_inputs});
-    const int onset_to_pulse = live::vibration_delay_samples(settings, rate_hz, actuator);
+    const int onset_to_pulse = live::vibration_delay_samples(settings, rate_hz, outputs[0].profile);
     const int sync_samples = o.sync ? onset_to_pulse : 0;
     live::LiveCallback callback(engine, player ? &*player : nullptr, routing, sync_samples);
 
@@ -251,8 +281,16 @@ void add_live(CLI::App& app) {
     command->add_flag("--loop", o->loop, "play the files again and again");
     command->add_flag("--sync", o->sync,
                       "delay the sound by the vibration's latency so onsets line up");
-    add_actuator_option(*command, o->actuator,
-                        "actuator profile (name in actuators/ or FILE.toml) of every actuator");
+    command->add_option("--actuator,-a", o->actuators,
+                        "actuator profile (name in actuators/ or FILE.toml): one for every "
+                        "actuator, or one each")
+        ->delimiter(',');
+    command->add_option("--actuator-gain-db", o->gains_db,
+                        "trim after the limiter, dB (<= 0): one for all, or one each")
+        ->delimiter(',');
+    command->add_option("--actuator-delay-ms", o->delays_ms,
+                        "delay, ms: one for all, or one each")
+        ->delimiter(',');
     command->add_option("--rate", o->rate_hz, "sample rate, Hz (default: the file's or device's)")
         ->check(CLI::Range(Engine::kMinSampleRateHz, Engine::kMaxSampleRateHz));
     command->add_option("--block", o->block, "frames per device block")

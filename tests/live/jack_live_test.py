@@ -21,21 +21,22 @@ jack = JackServer(RATE_HZ)
 d = jack.dir
 
 
-def live_recording(source, name, extra=()):
-    """Plays `source` with tactus live into the recorder: (vibration, sound) as recorded."""
+def live_recording(source, name, extra=(), channels=2):
+    """Plays `source` with tactus live into the recorder: channel 1 the vibration, 2 the sound;
+    the rest as `extra` routes them. Returns the recorded channels."""
     seconds = soundfile.info(source).duration + 4
     out = os.path.join(d, name + ".wav")
-    recorder = jack.client(client, "record", name, "2", str(seconds), out)
+    recorder = jack.client(client, "record", name, str(channels), str(seconds), out)
     live = jack.run([tactus, "live", "--backend", "jack", "--play", source, "--output", name,
-                     "--actuator-channels", "1", "--sound-channels", "2", "--duration", "30",
-                     *extra])
+                     "--sound-channels", "2", "--duration", "30",
+                     *(extra or ["--actuator-channels", "1"])])
     print(live.stderr, end="")
     check(live.returncode == 0, f"tactus live {' '.join(extra)} exits 0")
     recorder.terminate()
     recorder.wait(timeout=30)
     recording, rate = soundfile.read(out, dtype="float32")
     check(rate == RATE_HZ, "the recording is at the server's rate")
-    return recording[:, 0], recording[:, 1]
+    return recording.T
 
 
 def first_nonzero(x):
@@ -51,7 +52,11 @@ rendered, _ = soundfile.read(rendered_path, dtype="float32")
 source, _ = soundfile.read(AMEN, dtype="float32")
 n = len(rendered)
 
-vibration, sound = live_recording(AMEN, "rec")
+# Two actuators: the second trimmed by 6 dB and delayed by 4 ms (each output its own).
+TRIM_DB, DELAY_MS = -6, 4  # 176.4 samples: 176
+vibration, sound, second = live_recording(
+    AMEN, "rec", ["--actuator-channels", "1,3", "--actuator-gain-db", f"0,{TRIM_DB}",
+                  "--actuator-delay-ms", f"0,{DELAY_MS}"], channels=3)
 start = first_nonzero(sound) - first_nonzero(source[:, 0])  # where the stream began
 print(f"the stream began {start} frames into the recording")
 check(start >= 0 and start + n <= len(sound), "the recording holds the whole file")
@@ -61,6 +66,11 @@ difference = np.max(np.abs(vibration[start:start + n] - rendered))
 print(f"largest difference from tactus render: {difference:.3g}")
 check(np.max(np.abs(rendered)) > 0.1, "the render vibrates")
 check(difference <= 1e-5, "the actuator channel equals tactus render within 1e-5")
+delay = round(DELAY_MS * RATE_HZ / 1000)
+expected = np.concatenate([np.zeros(delay, np.float32), rendered[:n - delay]]) * 10 ** (TRIM_DB / 20)
+difference = np.max(np.abs(second[start:start + n] - expected))
+print(f"second actuator: largest difference from the render trimmed and delayed: {difference:.3g}")
+check(difference <= 1e-5, "the second actuator is the render, trimmed and delayed")
 
 # ---- --sync: sound and vibration onsets within 1 ms ----
 # Hits of a decaying 80 Hz tone with a sharp attack, at uneven times.
@@ -86,7 +96,8 @@ def onsets(x, threshold):
 
 for hop_ms in ["0.5", "2.9"]:
     vibration, sound = live_recording(clicks_path, f"sync{hop_ms.replace('.', '_')}",
-                                      ["--sync", "--set", f"analysis.hop_ms={hop_ms}"])
+                                      ["--actuator-channels", "1", "--sync", "--set",
+                                       f"analysis.hop_ms={hop_ms}"])
     heard = onsets(sound, 0.05)
     felt = onsets(vibration, 0.1 * np.max(np.abs(vibration)))  # sync_delay.hpp: the first rise
     check(len(heard) == len(hits_s), f"{len(hits_s)} hits heard ({len(heard)})")
