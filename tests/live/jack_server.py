@@ -27,7 +27,9 @@ class JackServer:
             skip("jackd is not installed (Debian jackd2)")
         log = open(os.path.join(self.dir, "jackd.log"), "w")
         self.jackd = subprocess.Popen(
-            ["jackd", "--no-realtime", "-n", self.name, "-d", "dummy", "-r", str(rate_hz),
+            # Synchronous (-S): a cycle waits for every client, so a machine too busy for the
+            # period slows the dummy clock down instead of dropping blocks.
+            ["jackd", "--no-realtime", "-S", "-n", self.name, "-d", "dummy", "-r", str(rate_hz),
              "-p", str(period)],
             stdout=log, stderr=subprocess.STDOUT, env=self.env, start_new_session=True)
         self.processes.append(self.jackd)
