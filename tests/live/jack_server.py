@@ -25,12 +25,16 @@ class JackServer:
         atexit.register(self.close)
         if shutil.which("jackd") is None:
             skip("jackd is not installed (Debian jackd2)")
-        log = open(os.path.join(self.dir, "jackd.log"), "w")
+        self.rate_hz, self.period = rate_hz, period
+        self.start_server()
+
+    def start_server(self):
+        log = open(os.path.join(self.dir, "jackd.log"), "a")
         self.jackd = subprocess.Popen(
             # Synchronous (-S): a cycle waits for every client, so a machine too busy for the
             # period slows the dummy clock down instead of dropping blocks.
-            ["jackd", "--no-realtime", "-S", "-n", self.name, "-d", "dummy", "-r", str(rate_hz),
-             "-p", str(period)],
+            ["jackd", "--no-realtime", "-S", "-n", self.name, "-d", "dummy", "-r",
+             str(self.rate_hz), "-p", str(self.period)],
             stdout=log, stderr=subprocess.STDOUT, env=self.env, start_new_session=True)
         self.processes.append(self.jackd)
         for _ in range(100):
@@ -43,6 +47,11 @@ class JackServer:
         with open(os.path.join(self.dir, "jackd.log")) as f:
             tail = f.read().strip().splitlines()[-3:]
         skip("jackd could not start: " + " | ".join(tail))
+
+    def stop_server(self):
+        """The server goes away (as a device that disappears)."""
+        self.jackd.send_signal(signal.SIGTERM)
+        self.jackd.wait(timeout=10)
 
     def start(self, args, **kwargs):
         """A process of the test, stopped (SIGTERM) at the end if still running."""
