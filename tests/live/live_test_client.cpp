@@ -6,12 +6,15 @@
 //       NAME:in -> NAME:out through the actuator profile's band-pass resonance (a biquad whose
 //       magnitude is ActuatorProfile::response_db's resonance term: an actuator the calibration
 //       must measure), until SIGTERM / SIGINT.
+//   live_test_client play NAME FILE
+//       registers output ports NAME:out_1 ... (one per channel of FILE) and, once one of them is
+//       connected and half a second has passed, plays FILE once, then silence; until SIGTERM.
 //   live_test_client osc-send PORT ADDRESS [f VALUE | s TEXT]...
 //       one OSC message to 127.0.0.1:PORT, sent with liblo.
 //   live_test_client osc-listen PORT SECONDS
 //       prints every OSC message received on 127.0.0.1:PORT for SECONDS (or until SIGTERM), one
 //       line each: the address, then the arguments.
-// record, filter and osc-listen print "ready" on stdout once they listen.
+// record, filter, play and osc-listen print "ready" on stdout once they listen.
 #include <jack/jack.h>
 #include <lo/lo.h>
 #include <sndfile.h>
@@ -148,6 +151,56 @@ int filter(const char* name, const char* actuator_path) {
     return 0;
 }
 
+struct Playback {
+    std::vector<jack_port_t*> ports;
+    std::vector<std::vector<float>> samples;
+    std::atomic<bool> playing{false};
+    size_t at = 0;
+};
+
+int play_block(jack_nframes_t n, void* arg) {
+    auto& p = *static_cast<Playback*>(arg);
+    const bool playing = p.playing.load(std::memory_order_acquire);
+    for (size_t c = 0; c < p.ports.size(); ++c) {
+        auto* out = static_cast<float*>(jack_port_get_buffer(p.ports[c], n));
+        for (jack_nframes_t i = 0; i < n; ++i)
+            out[i] = playing && p.at + i < p.samples[c].size() ? p.samples[c][p.at + i] : 0.0f;
+    }
+    if (playing) p.at += n;
+    return 0;
+}
+
+int play(const char* name, const char* path) {
+    SF_INFO info{};
+    SNDFILE* file = sf_open(path, SFM_READ, &info);
+    if (!file) return 1;
+    std::vector<float> interleaved(static_cast<size_t>(info.frames * info.channels));
+    sf_readf_float(file, interleaved.data(), info.frames);
+    sf_close(file);
+    jack_client_t* client = open_client(name);
+    if (!client) return 1;
+    Playback p;
+    p.samples.assign(static_cast<size_t>(info.channels), std::vector<float>(static_cast<size_t>(info.frames)));
+    for (size_t i = 0; i < static_cast<size_t>(info.frames); ++i)
+        for (size_t c = 0; c < p.samples.size(); ++c)
+            p.samples[c][i] = interleaved[i * p.samples.size() + c];
+    for (int c = 0; c < info.channels; ++c)
+        p.ports.push_back(jack_port_register(client, ("out_" + std::to_string(c + 1)).c_str(),
+                                             JACK_DEFAULT_AUDIO_TYPE, JackPortIsOutput, 0));
+    jack_set_process_callback(client, play_block, &p);
+    if (jack_activate(client) != 0) return 1;
+    std::printf("ready\n");
+    std::fflush(stdout);
+    while (!g_stop && jack_port_connected(p.ports[0]) == 0)
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    wait_for_stop(0.5);
+    p.playing.store(true, std::memory_order_release);
+    wait_for_stop(1e9);
+    jack_deactivate(client);
+    jack_client_close(client);
+    return 0;
+}
+
 int osc_send(const char* port, int argc, char** argv) {
     lo_address to = lo_address_new("127.0.0.1", port);
     lo_message message = lo_message_new();
@@ -197,11 +250,13 @@ int main(int argc, char** argv) {
     const std::string mode = argc > 1 ? argv[1] : "";
     if (mode == "record" && argc == 6) return record(argv[2], std::stoi(argv[3]), std::stod(argv[4]), argv[5]);
     if (mode == "filter" && argc == 4) return filter(argv[2], argv[3]);
+    if (mode == "play" && argc == 4) return play(argv[2], argv[3]);
     if (mode == "osc-send" && argc >= 4) return osc_send(argv[2], argc - 3, argv + 3);
     if (mode == "osc-listen" && argc == 4) return osc_listen(argv[2], std::stod(argv[3]));
     std::fprintf(stderr,
                  "usage: live_test_client record NAME CHANNELS SECONDS OUT.wav\n"
                  "       live_test_client filter NAME ACTUATOR.toml\n"
+                 "       live_test_client play NAME FILE\n"
                  "       live_test_client osc-send PORT ADDRESS [f VALUE | i VALUE | s TEXT]...\n"
                  "       live_test_client osc-listen PORT SECONDS\n");
     return 2;
