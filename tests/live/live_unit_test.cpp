@@ -4,11 +4,18 @@
 #include <gtest/gtest.h>
 #include <lo/lo.h>
 
+#include <chrono>
 #include <cstring>
+#include <fstream>
+#include <mutex>
+#include <thread>
+
+#include "support/temp_dir.hpp"
 
 #include "live/channel_list.hpp"
 #include "live/osc_packet.hpp"
 #include "live/osc_server.hpp"
+#include "live/preset_watcher.hpp"
 #include "live/status_line.hpp"
 #include "tactus/io/preset.hpp"
 
@@ -153,6 +160,50 @@ TEST(OscServerHandling, CoalescesABurstAndRefusesTheBad) {
     EXPECT_EQ(now[P::envelope_decay_ms], 321);
     EXPECT_EQ(now[P::flutter_weight], four[P::flutter_weight]);
     EXPECT_EQ(engine.settings()[P::envelope_decay_ms], 321);
+}
+
+// The preset file rewritten while running: a good file applies (the --set on top), a file with
+// an error keeps the running settings and says why in one line.
+class PresetWatching : public test::TempDirTest {};
+
+TEST_F(PresetWatching, ReloadsAndRefuses) {
+    const auto preset = dir_ / "mine.toml";
+    const auto save = [&](const std::string& text) {  // as editors do: write, then rename
+        std::ofstream(dir_ / "mine.toml.new") << text;
+        std::filesystem::rename(dir_ / "mine.toml.new", preset);
+    };
+    save("[envelope]\ndecay_ms = 200\n");
+    Engine engine;
+    LiveControl control(engine, Settings{}, {"post.release_ms=100"});
+    std::mutex mutex;
+    std::vector<std::string> lines;
+    PresetWatcher watcher(preset, control, [&](const std::string& line) {
+        const std::lock_guard lock(mutex);
+        lines.push_back(line);
+    });
+    const auto wait_for = [&](size_t count) {
+        for (int i = 0; i < 400 && watcher.reloads() < static_cast<int>(count); ++i)
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        ASSERT_EQ(watcher.reloads(), static_cast<int>(count));
+    };
+    save("[envelope]\ndecay_ms = 321\n");
+    ASSERT_NO_FATAL_FAILURE(wait_for(1));
+    EXPECT_EQ(control.settings()[P::envelope_decay_ms], 321);
+    EXPECT_EQ(control.settings()[P::post_release_ms], 100) << "--set stays on top";
+    save("[envelope]\ndecay_ms = 99999\n");  // out of range
+    ASSERT_NO_FATAL_FAILURE(wait_for(2));
+    EXPECT_EQ(control.settings()[P::envelope_decay_ms], 321) << "the running settings kept";
+    save("[envelope\n");  // TOML syntax
+    ASSERT_NO_FATAL_FAILURE(wait_for(3));
+    EXPECT_EQ(control.settings()[P::envelope_decay_ms], 321);
+    const std::lock_guard lock(mutex);
+    ASSERT_EQ(lines.size(), 3u);
+    EXPECT_NE(lines[0].find("reloaded"), std::string::npos) << lines[0];
+    for (size_t i : {1u, 2u}) {
+        EXPECT_NE(lines[i].find("keeping the running settings"), std::string::npos) << lines[i];
+        EXPECT_NE(lines[i].find("mine.toml"), std::string::npos) << lines[i];
+        EXPECT_EQ(lines[i].find('\n'), std::string::npos) << lines[i];
+    }
 }
 
 TEST(Endpoint, HostAndPort) {
