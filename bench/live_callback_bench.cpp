@@ -73,10 +73,12 @@ void LiveCallbackPlayer(benchmark::State& state) {
     Engine engine;
     engine.set_actuators({ActuatorOutput{}, ActuatorOutput{}});
     engine.prepare({.sample_rate_hz = kLiveRateHz, .max_block = kLiveBlock, .channels = 1});
-    live::LiveCallback callback(
-        engine, &player,
-        {.device_inputs = 0, .device_outputs = 4, .actuator_channels = {0, 1}, .sound_channels = {2, 3}},
-        196);
+    live::LiveCallback callback(engine, &player,
+                                {.device_inputs = 0,
+                                 .device_outputs = 4,
+                                 .actuator_channels = {0, 1},
+                                 .sound_channels = {2, 3}},
+                                196);
     callback.begin();
     std::vector<float> out(4 * kLiveBlock);
     time_blocks(state, amen_samples.size() / kLiveBlock,

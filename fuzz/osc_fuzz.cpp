@@ -16,7 +16,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     engine.set_actuators(std::vector<tactus::ActuatorOutput>(2));
     tactus::live::LiveControl control(engine, tactus::Settings{}, {});
     const std::vector<std::vector<std::byte>> packets{
-        {reinterpret_cast<const std::byte*>(data), reinterpret_cast<const std::byte*>(data) + size}};
+        {reinterpret_cast<const std::byte*>(data),
+         reinterpret_cast<const std::byte*>(data) + size}};
     tactus::live::handle_osc_packets(packets, control, [](const std::string& line) {
         tactus::fuzz::check_message(line.c_str());
     });

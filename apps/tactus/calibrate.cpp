@@ -87,15 +87,16 @@ void calibrate(const CalibrateOptions& o) {
     }
     stream.stop();
     if (recorder.xruns() > 0)
-        std::cerr << fmt::format("tactus: warning: {} xruns during the sweep: measure again if "
-                                 "the response looks wrong\n",
-                                 recorder.xruns());
+        std::cerr << fmt::format(
+            "tactus: warning: {} xruns during the sweep: measure again if "
+            "the response looks wrong\n",
+            recorder.xruns());
     const auto measured = measure_response(recorder.sweep(), recorder.recorded(), spec);
     ActuatorProfile profile = measured_profile(measured, base ? &*base : nullptr);
     profile.name = std::filesystem::path(o.profile_out).stem().string();
-    profile.description = fmt::format("measured by tactus calibrate: {}:{} -> {}:{}, {:g}-{:g} Hz",
-                                      out_device, out_channel + 1, in_device, in_channel + 1,
-                                      o.low_hz, o.high_hz);
+    profile.description =
+        fmt::format("measured by tactus calibrate: {}:{} -> {}:{}, {:g}-{:g} Hz", out_device,
+                    out_channel + 1, in_device, in_channel + 1, o.low_hz, o.high_hz);
     const std::string text = actuator_text(
         profile, fmt::format("An actuator profile measured with a swept sine (Farina's method): "
                              "the points are\nthe response relative to reference_hz{}.",

@@ -39,8 +39,8 @@ void list_devices() {
 }  // namespace
 
 void add_devices(CLI::App& app) {
-    CLI::App* command = app.add_subcommand(
-        "devices", "list the audio backends and devices `tactus live` can use");
+    CLI::App* command =
+        app.add_subcommand("devices", "list the audio backends and devices `tactus live` can use");
     command->callback([] { list_devices(); });
 }
 

@@ -34,20 +34,22 @@ namespace tactus::cli {
 namespace {
 
 constexpr double kDefaultOscRateHz = 100;
-constexpr auto kTick = std::chrono::milliseconds(50);      // the main loop's pace
-constexpr double kStatusPeriodS = 0.5;                      // the status line's redraw
-constexpr auto kRetryPeriod = std::chrono::seconds(1);      // a lost device's retries
+constexpr auto kTick = std::chrono::milliseconds(50);   // the main loop's pace
+constexpr double kStatusPeriodS = 0.5;                  // the status line's redraw
+constexpr auto kRetryPeriod = std::chrono::seconds(1);  // a lost device's retries
 constexpr double kTailS = 0.25;  // after the player's last frame: the engine's latency and more
 
 std::atomic<bool> g_stop{false};
-extern "C" void request_stop(int) { g_stop = true; }
+extern "C" void request_stop(int) {
+    g_stop = true;
+}
 
 struct LiveOptions {
     std::string backend, input, output;
     std::string actuator_channels = "1", sound_channels;
     std::vector<std::string> play;
     bool loop = false, sync = false;
-    std::vector<std::string> actuators;     // one for all, or one per actuator channel
+    std::vector<std::string> actuators;       // one for all, or one per actuator channel
     std::vector<double> gains_db, delays_ms;  // the same
     double rate_hz = 0;
     int block = 256;
@@ -73,8 +75,8 @@ T for_actuator(const std::vector<T>& values, size_t actuator, size_t actuators, 
                T otherwise) {
     if (values.empty()) return otherwise;
     if (values.size() != 1 && values.size() != actuators)
-        throw std::runtime_error(fmt::format("{}: give one value for all {} actuators or one each",
-                                             what, actuators));
+        throw std::runtime_error(
+            fmt::format("{}: give one value for all {} actuators or one each", what, actuators));
     return values[values.size() == 1 ? 0 : actuator];
 }
 
@@ -120,10 +122,12 @@ void live_run(const LiveOptions& o) {
     if (o.play.empty() == o.input.empty())
         throw std::runtime_error("live: give either --input DEV[:CH] or --play FILE...");
     if (o.loop && o.play.empty()) throw std::runtime_error("live: --loop plays files: give --play");
-    if (o.sync && o.play.empty()) throw std::runtime_error("live: --sync delays the sound of --play");
+    if (o.sync && o.play.empty())
+        throw std::runtime_error("live: --sync delays the sound of --play");
 
     live::Routing routing;
-    routing.actuator_channels = live::parse_channel_list(o.actuator_channels, "--actuator-channels");
+    routing.actuator_channels =
+        live::parse_channel_list(o.actuator_channels, "--actuator-channels");
     if (!o.sound_channels.empty()) {
         if (o.play.empty())
             throw std::runtime_error("live: --sound-channels carry the sound of --play");
@@ -131,8 +135,8 @@ void live_run(const LiveOptions& o) {
         for (int c : routing.sound_channels)
             if (std::find(routing.actuator_channels.begin(), routing.actuator_channels.end(), c) !=
                 routing.actuator_channels.end())
-                throw std::runtime_error(fmt::format(
-                    "live: channel {} is both an actuator and a sound channel", c + 1));
+                throw std::runtime_error(
+                    fmt::format("live: channel {} is both an actuator and a sound channel", c + 1));
     }
     for (const auto* list : {&routing.actuator_channels, &routing.sound_channels})
         for (int c : *list) routing.device_outputs = std::max(routing.device_outputs, c + 1);
@@ -216,8 +220,9 @@ void live_run(const LiveOptions& o) {
         if (o.duration_s > 0 && elapsed_s >= o.duration_s) break;
         if (player && player->finished()) {
             if (!finished_at) finished_at = now;
-            if (now - *finished_at >= std::chrono::duration<double>(
-                                          kTailS + 2.0 * (sync_samples + algorithmic_frames) / rate_hz))
+            if (now - *finished_at >=
+                std::chrono::duration<double>(kTailS +
+                                              2.0 * (sync_samples + algorithmic_frames) / rate_hz))
                 break;
         }
         if (!lost && stream->lost()) {
@@ -266,13 +271,15 @@ void add_live(CLI::App& app) {
     auto o = std::make_shared<LiveOptions>();
     CLI::App* command = app.add_subcommand(
         "live", "sound and vibration on audio devices, from an instrument's input or a player");
-    command->add_option("--backend", o->backend, "jack, alsa or pulse (default: the first with devices)");
+    command->add_option("--backend", o->backend,
+                        "jack, alsa or pulse (default: the first with devices)");
     command->add_option("--input,-i", o->input,
                         "instrument input: DEV (all its channels, downmixed) or DEV:CH");
     command->add_option("--output", o->output, "output device (default: the backend's default)");
-    command->add_option("--actuator-channels", o->actuator_channels,
-                        "output channels of the actuators, from 1: 1,2 or 1-4 (one actuator each, "
-                        "the same signal)")
+    command
+        ->add_option("--actuator-channels", o->actuator_channels,
+                     "output channels of the actuators, from 1: 1,2 or 1-4 (one actuator each, "
+                     "the same signal)")
         ->capture_default_str();
     command->add_option("--sound-channels", o->sound_channels,
                         "output channels of the sound of --play (its channels in turn)");
@@ -281,15 +288,16 @@ void add_live(CLI::App& app) {
     command->add_flag("--loop", o->loop, "play the files again and again");
     command->add_flag("--sync", o->sync,
                       "delay the sound by the vibration's latency so onsets line up");
-    command->add_option("--actuator,-a", o->actuators,
-                        "actuator profile (name in actuators/ or FILE.toml): one for every "
-                        "actuator, or one each")
+    command
+        ->add_option("--actuator,-a", o->actuators,
+                     "actuator profile (name in actuators/ or FILE.toml): one for every "
+                     "actuator, or one each")
         ->delimiter(',');
-    command->add_option("--actuator-gain-db", o->gains_db,
-                        "trim after the limiter, dB (<= 0): one for all, or one each")
+    command
+        ->add_option("--actuator-gain-db", o->gains_db,
+                     "trim after the limiter, dB (<= 0): one for all, or one each")
         ->delimiter(',');
-    command->add_option("--actuator-delay-ms", o->delays_ms,
-                        "delay, ms: one for all, or one each")
+    command->add_option("--actuator-delay-ms", o->delays_ms, "delay, ms: one for all, or one each")
         ->delimiter(',');
     command->add_option("--rate", o->rate_hz, "sample rate, Hz (default: the file's or device's)")
         ->check(CLI::Range(Engine::kMinSampleRateHz, Engine::kMaxSampleRateHz));
@@ -302,7 +310,9 @@ void add_live(CLI::App& app) {
     command->add_option("--osc-rate", o->osc_rate_hz, "rate of /tactus/features and /vibration, Hz")
         ->check(CLI::Range(1.0, 1000.0))
         ->capture_default_str();
-    command->add_option("--duration", o->duration_s, "stop after this many seconds (default: Ctrl-C, or the end of --play)")
+    command
+        ->add_option("--duration", o->duration_s,
+                     "stop after this many seconds (default: Ctrl-C, or the end of --play)")
         ->check(CLI::PositiveNumber);
     o->pipeline.add_to(*command);
     command->callback([o] { live_run(*o); });

@@ -2,19 +2,21 @@
 // profile's band-pass resonance as a filter (its magnitude is the profile's response term), after
 // a device delay, with harmonic distortion added; the measured profile matches the shipped one
 // within 1 dB over its usable band. Profiles written as text read back as the same profile.
+#include "tactus/actuator/calibration.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 
-#include "tactus/actuator/calibration.hpp"
 #include "tactus/io/actuator_file.hpp"
 
 namespace tactus {
 namespace {
 
 ActuatorProfile shipped(const char* name) {
-    return load_actuator(std::filesystem::path(TACTUS_SOURCE_DIR) / "actuators" / (std::string(name) + ".toml"));
+    return load_actuator(std::filesystem::path(TACTUS_SOURCE_DIR) / "actuators" /
+                         (std::string(name) + ".toml"));
 }
 
 // The profile's band-pass resonance, bilinear with the centre prewarped (RBJ's constant-peak
@@ -45,7 +47,8 @@ TEST(Calibration, MeasuresTheLraResonanceWithinOneDecibel) {
     const ActuatorProfile lra = shipped("lra-175");
     const SweepSpec spec{.sample_rate_hz = 48000, .low_hz = 20, .high_hz = 2000, .seconds = 4};
     const std::vector<float> sweep = exponential_sweep(spec);
-    const std::vector<float> recorded = through_resonance(sweep, lra, spec.sample_rate_hz, 1234, 0.2);
+    const std::vector<float> recorded =
+        through_resonance(sweep, lra, spec.sample_rate_hz, 1234, 0.2);
     const auto measured = measure_response(sweep, recorded, spec);
     const ActuatorProfile with_base = measured_profile(measured, &lra);
     expect_matches_over_band(with_base, lra);
@@ -60,7 +63,8 @@ TEST(Calibration, SilenceIsNoMeasurement) {
     const SweepSpec spec{.sample_rate_hz = 48000, .seconds = 1};
     const std::vector<float> silence(96000);
     EXPECT_THROW(measure_response(exponential_sweep(spec), silence, spec), std::runtime_error);
-    EXPECT_THROW(exponential_sweep({.sample_rate_hz = 8000, .high_hz = 5000}), std::invalid_argument);
+    EXPECT_THROW(exponential_sweep({.sample_rate_hz = 8000, .high_hz = 5000}),
+                 std::invalid_argument);
 }
 
 TEST(ActuatorText, ReadsBackAsTheSameProfile) {

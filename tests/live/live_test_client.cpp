@@ -34,7 +34,9 @@
 namespace {
 
 std::atomic<bool> g_stop{false};
-extern "C" void on_signal(int) { g_stop = true; }
+extern "C" void on_signal(int) {
+    g_stop = true;
+}
 
 struct Recorder {
     std::vector<jack_port_t*> ports;
@@ -76,7 +78,9 @@ int filter_block(jack_nframes_t n, void* arg) {
 jack_client_t* open_client(const char* name) {
     jack_status_t status{};
     jack_client_t* client = jack_client_open(name, JackNoStartServer, &status);
-    if (!client) std::fprintf(stderr, "live_test_client: cannot open client %s (status 0x%x)\n", name, status);
+    if (!client)
+        std::fprintf(stderr, "live_test_client: cannot open client %s (status 0x%x)\n", name,
+                     status);
     return client;
 }
 
@@ -180,7 +184,8 @@ int play(const char* name, const char* path) {
     jack_client_t* client = open_client(name);
     if (!client) return 1;
     Playback p;
-    p.samples.assign(static_cast<size_t>(info.channels), std::vector<float>(static_cast<size_t>(info.frames)));
+    p.samples.assign(static_cast<size_t>(info.channels),
+                     std::vector<float>(static_cast<size_t>(info.frames)));
     for (size_t i = 0; i < static_cast<size_t>(info.frames); ++i)
         for (size_t c = 0; c < p.samples.size(); ++c)
             p.samples[c][i] = interleaved[i * p.samples.size() + c];
@@ -206,9 +211,12 @@ int osc_send(const char* port, int argc, char** argv) {
     lo_message message = lo_message_new();
     const char* address = argv[0];
     for (int i = 1; i + 1 < argc; i += 2) {
-        if (argv[i][0] == 'f') lo_message_add_float(message, std::stof(argv[i + 1]));
-        else if (argv[i][0] == 'i') lo_message_add_int32(message, std::stoi(argv[i + 1]));
-        else lo_message_add_string(message, argv[i + 1]);
+        if (argv[i][0] == 'f')
+            lo_message_add_float(message, std::stof(argv[i + 1]));
+        else if (argv[i][0] == 'i')
+            lo_message_add_int32(message, std::stoi(argv[i + 1]));
+        else
+            lo_message_add_string(message, argv[i + 1]);
     }
     const int sent = lo_send_message(to, address, message);
     lo_message_free(message);
@@ -216,14 +224,17 @@ int osc_send(const char* port, int argc, char** argv) {
     return sent > 0 ? 0 : 1;
 }
 
-int print_message(const char* path, const char* types, lo_arg** argv, int argc, lo_message,
-                  void*) {
+int print_message(const char* path, const char* types, lo_arg** argv, int argc, lo_message, void*) {
     std::printf("%s", path);
     for (int i = 0; i < argc; ++i) {
-        if (types[i] == LO_FLOAT) std::printf(" %.9g", argv[i]->f);
-        else if (types[i] == LO_INT32) std::printf(" %d", argv[i]->i);
-        else if (types[i] == LO_STRING) std::printf(" %s", &argv[i]->s);
-        else std::printf(" ?%c", types[i]);
+        if (types[i] == LO_FLOAT)
+            std::printf(" %.9g", argv[i]->f);
+        else if (types[i] == LO_INT32)
+            std::printf(" %d", argv[i]->i);
+        else if (types[i] == LO_STRING)
+            std::printf(" %s", &argv[i]->s);
+        else
+            std::printf(" ?%c", types[i]);
     }
     std::printf("\n");
     return 0;
@@ -248,7 +259,8 @@ int main(int argc, char** argv) {
     std::signal(SIGTERM, on_signal);
     std::signal(SIGINT, on_signal);
     const std::string mode = argc > 1 ? argv[1] : "";
-    if (mode == "record" && argc == 6) return record(argv[2], std::stoi(argv[3]), std::stod(argv[4]), argv[5]);
+    if (mode == "record" && argc == 6)
+        return record(argv[2], std::stoi(argv[3]), std::stod(argv[4]), argv[5]);
     if (mode == "filter" && argc == 4) return filter(argv[2], argv[3]);
     if (mode == "play" && argc == 4) return play(argv[2], argv[3]);
     if (mode == "osc-send" && argc >= 4) return osc_send(argv[2], argc - 3, argv + 3);

@@ -10,13 +10,12 @@
 #include <mutex>
 #include <thread>
 
-#include "support/temp_dir.hpp"
-
 #include "live/channel_list.hpp"
 #include "live/osc_packet.hpp"
 #include "live/osc_server.hpp"
 #include "live/preset_watcher.hpp"
 #include "live/status_line.hpp"
+#include "support/temp_dir.hpp"
 #include "tactus/io/preset.hpp"
 
 namespace tactus::live {
@@ -34,7 +33,8 @@ std::vector<std::byte> packet(const char* address, const char* types, ...) {
     va_end(args);
     size_t size = 0;
     void* bytes = lo_message_serialise(m, address, nullptr, &size);
-    std::vector<std::byte> out(static_cast<std::byte*>(bytes), static_cast<std::byte*>(bytes) + size);
+    std::vector<std::byte> out(static_cast<std::byte*>(bytes),
+                               static_cast<std::byte*>(bytes) + size);
     std::free(bytes);
     lo_message_free(m);
     return out;
@@ -45,9 +45,9 @@ TEST(OscAddressSpace, EveryParameterOfTheTableHasItsAddress) {
     EXPECT_EQ(lines.size(), param_table().size() + 3);
     for (const ParamSpec& s : param_table()) {
         const std::string address = "/tactus/" + std::string(s.key);
-        EXPECT_TRUE(std::any_of(lines.begin(), lines.end(),
-                                [&](const std::string& l) { return l.starts_with(address + " "); }))
-            << address;
+        EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [&](const std::string& l) {
+            return l.starts_with(address + " ");
+        })) << address;
         const OscCommand c = parse_osc({address, {OscArg{'d', s.default_value, ""}}}, 1);
         ASSERT_TRUE(std::holds_alternative<SetParameter>(c)) << address;
         EXPECT_EQ(std::get<SetParameter>(c).id, s.param);
@@ -63,12 +63,15 @@ TEST(OscAddressSpace, ChoicesByNameTogglesAsBooleans) {
 }
 
 TEST(OscAddressSpace, PresetTriggerAndActuatorGain) {
-    EXPECT_EQ(std::get<LoadPreset>(parse_osc({"/tactus/preset", {OscArg{'s', 0, "tfd"}}}, 1)).name, "tfd");
-    const auto t = std::get<TriggerPulse>(parse_osc({"/tactus/trigger", {OscArg{'f', 120, ""}, OscArg{'i', 1, ""}}}, 1));
+    EXPECT_EQ(std::get<LoadPreset>(parse_osc({"/tactus/preset", {OscArg{'s', 0, "tfd"}}}, 1)).name,
+              "tfd");
+    const auto t = std::get<TriggerPulse>(
+        parse_osc({"/tactus/trigger", {OscArg{'f', 120, ""}, OscArg{'i', 1, ""}}}, 1));
     EXPECT_TRUE(t.with_values);
     EXPECT_EQ(t.frequency_hz, 120);
     EXPECT_FALSE(std::get<TriggerPulse>(parse_osc({"/tactus/trigger", {}}, 1)).with_values);
-    const auto g = std::get<ActuatorGain>(parse_osc({"/tactus/actuator/3/gain", {OscArg{'f', -6, ""}}}, 4));
+    const auto g =
+        std::get<ActuatorGain>(parse_osc({"/tactus/actuator/3/gain", {OscArg{'f', -6, ""}}}, 4));
     EXPECT_EQ(g.actuator, 2);
     EXPECT_EQ(g.gain_db, -6);
 }
@@ -76,24 +79,24 @@ TEST(OscAddressSpace, PresetTriggerAndActuatorGain) {
 // Untrusted input: every one of these is refused with one line naming the address.
 TEST(OscAddressSpace, RefusesWhatIsNotInTheTable) {
     const std::vector<OscMessage> bad = {
-        {"/tactus/post.drive", {OscArg{'f', 1, ""}}},                 // unknown key
-        {"/other/post.drive_db", {OscArg{'f', 1, ""}}},               // outside /tactus
-        {"/tactus/post.drive_db", {OscArg{'f', 1e9, ""}}},            // out of range
-        {"/tactus/post.drive_db", {OscArg{'d', NAN, ""}}},            // not finite
-        {"/tactus/post.drive_db", {OscArg{'s', 0, "loud"}}},          // wrong type
-        {"/tactus/post.drive_db", {OscArg{'b', 0, ""}}},              // a blob
-        {"/tactus/post.drive_db", {}},                                // no value
+        {"/tactus/post.drive", {OscArg{'f', 1, ""}}},         // unknown key
+        {"/other/post.drive_db", {OscArg{'f', 1, ""}}},       // outside /tactus
+        {"/tactus/post.drive_db", {OscArg{'f', 1e9, ""}}},    // out of range
+        {"/tactus/post.drive_db", {OscArg{'d', NAN, ""}}},    // not finite
+        {"/tactus/post.drive_db", {OscArg{'s', 0, "loud"}}},  // wrong type
+        {"/tactus/post.drive_db", {OscArg{'b', 0, ""}}},      // a blob
+        {"/tactus/post.drive_db", {}},                        // no value
         {"/tactus/post.drive_db", {OscArg{'f', 1, ""}, OscArg{'f', 1, ""}}},
         {"/tactus/mapping.frequency.curve", {OscArg{'s', 0, "cubic"}}},
-        {"/tactus/preset", {OscArg{'s', 0, "/etc/passwd"}}},          // a file: never read
+        {"/tactus/preset", {OscArg{'s', 0, "/etc/passwd"}}},  // a file: never read
         {"/tactus/preset", {OscArg{'s', 0, "../presets/tfd"}}},
         {"/tactus/preset", {OscArg{'f', 1, ""}}},
         {"/tactus/trigger", {OscArg{'f', 120, ""}}},
         {"/tactus/trigger", {OscArg{'f', 1e6, ""}, OscArg{'f', 0.5, ""}}},
         {"/tactus/trigger", {OscArg{'f', 120, ""}, OscArg{'f', 2, ""}}},
         {"/tactus/actuator/0/gain", {OscArg{'f', -6, ""}}},
-        {"/tactus/actuator/2/gain", {OscArg{'f', -6, ""}}},           // one actuator only
-        {"/tactus/actuator/1/gain", {OscArg{'f', 6, ""}}},            // above 0 dB
+        {"/tactus/actuator/2/gain", {OscArg{'f', -6, ""}}},  // one actuator only
+        {"/tactus/actuator/1/gain", {OscArg{'f', 6, ""}}},   // above 0 dB
         {"/tactus/actuator/1/trim", {OscArg{'f', -6, ""}}},
         {std::string("/tactus/post.drive_db\n2nd line"), {OscArg{'f', 1, ""}}},
     };
@@ -131,8 +134,9 @@ TEST(OscPacket, MessagesAndBundles) {
     ASSERT_EQ(bundled.size(), 2u);
     EXPECT_EQ(bundled[1].args[0].text, "tfd");
 
-    for (std::vector<std::byte> broken : {std::vector<std::byte>{}, std::vector<std::byte>(one.begin(), one.end() - 3),
-                                          std::vector<std::byte>(7, std::byte{'#'})})
+    for (std::vector<std::byte> broken :
+         {std::vector<std::byte>{}, std::vector<std::byte>(one.begin(), one.end() - 3),
+          std::vector<std::byte>(7, std::byte{'#'})})
         EXPECT_THROW(decode_osc_packet(broken), std::invalid_argument);
 }
 
@@ -144,9 +148,12 @@ TEST(OscServerHandling, CoalescesABurstAndRefusesTheBad) {
     LiveControl control(engine, Settings{}, {"post.release_ms=100"});
     std::vector<std::string> refused;
     const std::vector<std::vector<std::byte>> burst = {
-        packet("/tactus/post.drive_db", "f", 3.0), packet("/tactus/post.drive_db", "f", 4.0),
-        packet("/tactus/post.drive_db", "f", 99.0), packet("/tactus/no.such", "i", 1),
-        std::vector<std::byte>(5, std::byte{1}), packet("/tactus/actuator/2/gain", "f", -6.0),
+        packet("/tactus/post.drive_db", "f", 3.0),
+        packet("/tactus/post.drive_db", "f", 4.0),
+        packet("/tactus/post.drive_db", "f", 99.0),
+        packet("/tactus/no.such", "i", 1),
+        std::vector<std::byte>(5, std::byte{1}),
+        packet("/tactus/actuator/2/gain", "f", -6.0),
         packet("/tactus/preset", "s", "four-channel"),
         packet("/tactus/envelope.decay_ms", "f", 321.0)};
     handle_osc_packets(burst, control, [&](const std::string& line) { refused.push_back(line); });
@@ -222,7 +229,8 @@ TEST(ChannelList, FromOne) {
 }
 
 TEST(StatusLine, SaysEveryMeter) {
-    const std::string s = status_text({.input_peak = 0.5f, .output_peak = 0, .load = 0.25, .xruns = 3, .frames = 0}, 2.0, 9, 4.4);
+    const std::string s = status_text(
+        {.input_peak = 0.5f, .output_peak = 0, .load = 0.25, .xruns = 3, .frames = 0}, 2.0, 9, 4.4);
     EXPECT_NE(s.find("in   -6.0 dBFS"), std::string::npos) << s;
     EXPECT_NE(s.find("out   -inf dBFS"), std::string::npos) << s;
     EXPECT_NE(s.find("onsets  4.5/s"), std::string::npos) << s;

@@ -5,6 +5,8 @@
 // and out-of-range messages), the preset watcher reloads a preset file rewritten on disk, and the
 // frame monitor reads frames and sends features over OSC. No allocation and no lock may happen
 // inside the callback.
+#include "live/live_callback.hpp"
+
 #include <gtest/gtest.h>
 #include <lo/lo.h>
 
@@ -13,7 +15,6 @@
 #include <thread>
 
 #include "live/frame_monitor.hpp"
-#include "live/live_callback.hpp"
 #include "live/live_control.hpp"
 #include "live/osc_server.hpp"
 #include "live/player.hpp"
@@ -106,7 +107,8 @@ TEST_F(LiveCallbackRealTime, PlayerWithOscTrafficAndPresetReloads) {
             callback.process(nullptr, out.data(), frames);
         }
         actuator_peak = std::max<float>(
-            actuator_peak, static_cast<float>(test::peak({out.data(), static_cast<size_t>(frames)})));
+            actuator_peak,
+            static_cast<float>(test::peak({out.data(), static_cast<size_t>(frames)})));
         while (lo_server_recv_noblock(listener, 0) > 0) {
         }
         std::this_thread::sleep_for(std::chrono::microseconds(300));
@@ -128,9 +130,10 @@ TEST(LiveCallbackInput, ControlThreadChanges) {
     Engine engine;
     engine.set_actuators({ActuatorOutput{}});
     engine.prepare({.sample_rate_hz = kRateHz, .max_block = 64, .channels = 2});
-    live::LiveCallback callback(engine, nullptr,
-                                {.device_inputs = 2, .device_outputs = 1, .actuator_channels = {0}, .sound_channels = {}},
-                                0);
+    live::LiveCallback callback(
+        engine, nullptr,
+        {.device_inputs = 2, .device_outputs = 1, .actuator_channels = {0}, .sound_channels = {}},
+        0);
     callback.begin();
     live::LiveControl control(engine, Settings{}, {});
     const auto turned = test::turned_live_values(Settings{});
@@ -138,7 +141,8 @@ TEST(LiveCallbackInput, ControlThreadChanges) {
     std::thread turner([&] {
         for (size_t k = 0; !done; ++k) {
             const auto& [id, value] = turned[k % turned.size()];
-            if (!spec(id).key.ends_with("weight")) control.set(id, k / turned.size() % 2 ? Settings{}[id] : value);
+            if (!spec(id).key.ends_with("weight"))
+                control.set(id, k / turned.size() % 2 ? Settings{}[id] : value);
             std::this_thread::sleep_for(std::chrono::microseconds(200));
         }
     });
@@ -146,8 +150,10 @@ TEST(LiveCallbackInput, ControlThreadChanges) {
     float peak = 0;
     reset_counts();
     for (size_t at = 0; at + 64 <= x.size(); at += 64) {
-        std::copy(x.begin() + static_cast<long>(at), x.begin() + static_cast<long>(at + 64), in.begin());
-        std::copy(x.begin() + static_cast<long>(at), x.begin() + static_cast<long>(at + 64), in.begin() + 64);
+        std::copy(x.begin() + static_cast<long>(at), x.begin() + static_cast<long>(at + 64),
+                  in.begin());
+        std::copy(x.begin() + static_cast<long>(at), x.begin() + static_cast<long>(at + 64),
+                  in.begin() + 64);
         {
             Guard guard;
             callback.process(in.data(), out.data(), 64);

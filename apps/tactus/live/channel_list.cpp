@@ -41,8 +41,7 @@ std::vector<int> parse_channel_list(const std::string& text, const std::string& 
             channels.push_back(channel(part, option, text));
         }
     }
-    if (channels.empty())
-        throw std::invalid_argument(fmt::format("{}: no channel given", option));
+    if (channels.empty()) throw std::invalid_argument(fmt::format("{}: no channel given", option));
     std::vector<int> sorted = channels;
     std::sort(sorted.begin(), sorted.end());
     if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())

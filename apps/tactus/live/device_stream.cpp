@@ -27,7 +27,8 @@ RtAudio::Api backend_named(const std::string& name) {
     const RtAudio::Api api = RtAudio::getCompiledApiByName(name);
     if (api == RtAudio::UNSPECIFIED || api == RtAudio::RTAUDIO_DUMMY) {
         std::string known;
-        for (RtAudio::Api a : backends()) known += (known.empty() ? "" : ", ") + RtAudio::getApiName(a);
+        for (RtAudio::Api a : backends())
+            known += (known.empty() ? "" : ", ") + RtAudio::getApiName(a);
         throw std::runtime_error(
             fmt::format("--backend {}: not a backend of this build (it has: {})", name, known));
     }
@@ -50,15 +51,16 @@ unsigned int find_device(RtAudio& audio, const std::string& name, bool output) {
         if (names[i] == name && usable(i)) return i;
     std::vector<unsigned int> partial;
     for (unsigned int i = 0; i < count; ++i)
-        if (lower(names[i]).find(lower(name)) != std::string::npos && usable(i)) partial.push_back(i);
+        if (lower(names[i]).find(lower(name)) != std::string::npos && usable(i))
+            partial.push_back(i);
     if (partial.size() == 1) return partial[0];
     std::string known;
     for (unsigned int i = 0; i < count; ++i)
         if (usable(i)) known += fmt::format("{}{}: {}", known.empty() ? "" : ", ", i, names[i]);
-    throw std::runtime_error(fmt::format(
-        "{} device '{}': {} ({} devices: {})", output ? "output" : "input", name,
-        partial.empty() ? "no such device" : "more than one device matches",
-        RtAudio::getApiName(audio.getCurrentApi()), known.empty() ? "none" : known));
+    throw std::runtime_error(
+        fmt::format("{} device '{}': {} ({} devices: {})", output ? "output" : "input", name,
+                    partial.empty() ? "no such device" : "more than one device matches",
+                    RtAudio::getApiName(audio.getCurrentApi()), known.empty() ? "none" : known));
 }
 
 DeviceStream::DeviceStream(const StreamRequest& request) {
@@ -76,9 +78,9 @@ DeviceStream::DeviceStream(const StreamRequest& request) {
         const RtAudio::DeviceInfo out_info = audio_->getDeviceInfo(out_params.deviceId);
         output_name_ = out_info.name;
         if (request.output_channels > static_cast<int>(out_info.outputChannels))
-            throw std::runtime_error(fmt::format(
-                "output device '{}' has {} channels; {} asked for", out_info.name,
-                out_info.outputChannels, request.output_channels));
+            throw std::runtime_error(fmt::format("output device '{}' has {} channels; {} asked for",
+                                                 out_info.name, out_info.outputChannels,
+                                                 request.output_channels));
         const bool with_input = request.input_channels != 0;
         if (with_input) {
             in_params.deviceId = find_device(*audio_, request.input_device, false);
@@ -95,9 +97,10 @@ DeviceStream::DeviceStream(const StreamRequest& request) {
         }
         sample_rate_hz_ = request.sample_rate_hz;
         if (sample_rate_hz_ <= 0)
-            sample_rate_hz_ = out_info.preferredSampleRate > 0
-                                  ? out_info.preferredSampleRate
-                                  : (out_info.sampleRates.empty() ? 48000 : out_info.sampleRates[0]);
+            sample_rate_hz_ =
+                out_info.preferredSampleRate > 0
+                    ? out_info.preferredSampleRate
+                    : (out_info.sampleRates.empty() ? 48000 : out_info.sampleRates[0]);
         block_frames_ = static_cast<unsigned int>(request.block_frames);
         RtAudio::StreamOptions options;
         options.flags = RTAUDIO_NONINTERLEAVED | RTAUDIO_SCHEDULE_REALTIME;
@@ -155,7 +158,7 @@ int DeviceStream::on_audio(void* out, void* in, unsigned int frames, double,
     auto& stream = *static_cast<DeviceStream*>(self);
     if (status != 0) stream.callback_->note_xrun();
     stream.callback_->process(static_cast<const float*>(in), static_cast<float*>(out),
-                             static_cast<int>(frames));
+                              static_cast<int>(frames));
     return 0;
 }
 

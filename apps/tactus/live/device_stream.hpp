@@ -27,8 +27,8 @@ std::vector<RtAudio::Api> backends();
 
 struct StreamRequest {
     RtAudio::Api backend = RtAudio::UNSPECIFIED;
-    std::string input_device;   // name, part of a name, or index; empty: no input
-    int input_channels = 0;     // opened from input_first_channel; -1: all the device has
+    std::string input_device;  // name, part of a name, or index; empty: no input
+    int input_channels = 0;    // opened from input_first_channel; -1: all the device has
     int input_first_channel = 0;
     std::string output_device;  // empty: the default output
     int output_channels = 0;

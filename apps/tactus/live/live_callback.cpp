@@ -23,9 +23,10 @@ float peak(const float* x, int count) noexcept {
 
 }  // namespace
 
-LiveCallback::LiveCallback(Engine& engine, Player* player, Routing routing,
-                           int sync_delay_samples)
-    : engine_(engine), player_(player), routing_(std::move(routing)),
+LiveCallback::LiveCallback(Engine& engine, Player* player, Routing routing, int sync_delay_samples)
+    : engine_(engine),
+      player_(player),
+      routing_(std::move(routing)),
       sync_delay_(std::max(0, sync_delay_samples)) {
     if (static_cast<int>(routing_.actuator_channels.size()) != engine.actuators())
         throw std::invalid_argument("live: one device channel per actuator output");
@@ -71,7 +72,8 @@ void LiveCallback::process_chunk(const float* in, int in_stride, float* out, int
     if (player_) {
         player_->read(played_pointers_.data(), count);
         sources = player_->channels();
-        for (int c = 0; c < sources; ++c) in_pointers_[static_cast<size_t>(c)] = played_[static_cast<size_t>(c)].data();
+        for (int c = 0; c < sources; ++c)
+            in_pointers_[static_cast<size_t>(c)] = played_[static_cast<size_t>(c)].data();
     } else {
         for (int c = 0; c < sources; ++c)
             in_pointers_[static_cast<size_t>(c)] =
@@ -86,14 +88,20 @@ void LiveCallback::process_chunk(const float* in, int in_stride, float* out, int
         const int n_sound = static_cast<int>(routing_.sound_channels.size());
         for (int s = 0; s < n_sound; ++s) {
             const float* from = played_[static_cast<size_t>(s % sources)].data();
-            float* to = out + static_cast<ptrdiff_t>(routing_.sound_channels[static_cast<size_t>(s)]) * out_stride + offset;
+            float* to = out +
+                        static_cast<ptrdiff_t>(routing_.sound_channels[static_cast<size_t>(s)]) *
+                            out_stride +
+                        offset;
             std::copy(from, from + count, to);
         }
         if (sync_delay_ > 0) {  // every sound channel reads its source through one ring
             int at = delay_at_;
             for (int s = 0; s < n_sound; ++s) {
                 auto& ring = delay_[static_cast<size_t>(s % sources)];
-                float* x = out + static_cast<ptrdiff_t>(routing_.sound_channels[static_cast<size_t>(s)]) * out_stride + offset;
+                float* x = out +
+                           static_cast<ptrdiff_t>(routing_.sound_channels[static_cast<size_t>(s)]) *
+                               out_stride +
+                           offset;
                 at = delay_at_;
                 if (s < sources) {  // the first channel reading a source turns its ring
                     for (int i = 0; i < count; ++i) {
@@ -103,7 +111,12 @@ void LiveCallback::process_chunk(const float* in, int in_stride, float* out, int
                         if (++at == sync_delay_) at = 0;
                     }
                 } else {  // later ones copy what the first read
-                    const float* first = out + static_cast<ptrdiff_t>(routing_.sound_channels[static_cast<size_t>(s % sources)]) * out_stride + offset;
+                    const float* first =
+                        out +
+                        static_cast<ptrdiff_t>(
+                            routing_.sound_channels[static_cast<size_t>(s % sources)]) *
+                            out_stride +
+                        offset;
                     std::copy(first, first + count, x);
                 }
             }

@@ -68,7 +68,7 @@ class LiveCallback final : public AudioCallback {
     std::vector<float*> played_pointers_;
     std::vector<const float*> in_pointers_;
     std::vector<float*> out_pointers_;
-    std::vector<std::vector<float>> delay_;   // --sync: per player channel, a ring
+    std::vector<std::vector<float>> delay_;  // --sync: per player channel, a ring
     int delay_at_ = 0;
     std::atomic<float> input_peak_{0}, output_peak_{0};
     std::atomic<double> load_{0};

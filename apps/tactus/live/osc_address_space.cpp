@@ -16,14 +16,17 @@ namespace {
 constexpr size_t kMaxNameBytes = 4096;  // a preset name or path
 
 [[noreturn]] void refuse(const OscMessage& m, const std::string& why) {
-    throw std::invalid_argument(fmt::format("osc {}: {}", printable(std::string_view(m.address).substr(0, 200)), why));
+    throw std::invalid_argument(
+        fmt::format("osc {}: {}", printable(std::string_view(m.address).substr(0, 200)), why));
 }
 
 bool is_number(const OscArg& a) {
     return a.type == 'i' || a.type == 'h' || a.type == 'f' || a.type == 'd' || a.type == 'T' ||
            a.type == 'F';
 }
-bool is_text(const OscArg& a) { return a.type == 's' || a.type == 'S'; }
+bool is_text(const OscArg& a) {
+    return a.type == 's' || a.type == 'S';
+}
 
 double number_arg(const OscMessage& m, size_t i, std::string_view what) {
     if (i >= m.args.size() || !is_number(m.args[i]))
@@ -41,8 +44,8 @@ void expect_args(const OscMessage& m, size_t low, size_t high, std::string_view 
 OscCommand parse_parameter(const OscMessage& m, std::string_view key) {
     const std::optional<P> id = find_param(key);
     if (!id)
-        refuse(m, fmt::format("unknown address (did you mean {}{}?)", kOscRoot,
-                              nearest_param(key)));
+        refuse(m,
+               fmt::format("unknown address (did you mean {}{}?)", kOscRoot, nearest_param(key)));
     expect_args(m, 1, 1, "one value");
     Settings checked;  // Settings validates against the table, naming the key
     try {
@@ -72,8 +75,8 @@ OscCommand parse_actuator(const OscMessage& m, std::string_view rest, int actuat
     const std::string_view digits = rest.substr(0, slash);
     const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), n);
     if (error != std::errc() || end != digits.data() + digits.size() || n < 1 || n > actuators)
-        refuse(m, fmt::format("actuator '{}' does not exist: 1 to {}", printable(digits),
-                              actuators));
+        refuse(m,
+               fmt::format("actuator '{}' does not exist: 1 to {}", printable(digits), actuators));
     expect_args(m, 1, 1, "one gain in dB");
     const double gain_db = number_arg(m, 0, "gain_db");
     if (gain_db < ActuatorOutput::kMinGainDb || gain_db > 0)
@@ -95,8 +98,9 @@ OscCommand parse_osc(const OscMessage& m, int actuators) {
         const std::string& name = m.args[0].text;
         const bool plain = !name.empty() && name.size() <= kMaxNameBytes && name[0] != '.' &&
                            !name.ends_with(".toml") &&
-                           name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTU"
-                                                  "VWXYZ0123456789_-.") == std::string::npos;
+                           name.find_first_not_of(
+                               "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTU"
+                               "VWXYZ0123456789_-.") == std::string::npos;
         if (!plain)  // a message from the network reads no file it names
             refuse(m, fmt::format("'{}' is not a preset name (see `tactus presets`; files are "
                                   "not loaded over OSC)",
@@ -121,15 +125,14 @@ OscCommand parse_osc(const OscMessage& m, int actuators) {
 std::vector<std::string> osc_address_lines() {
     std::vector<std::string> lines;
     for (const ParamSpec& s : param_table()) {
-        const std::string argument = s.choices.empty()
-                                         ? range_text(s)
-                                         : fmt::format("{}", fmt::join(s.choices, "|"));
+        const std::string argument =
+            s.choices.empty() ? range_text(s) : fmt::format("{}", fmt::join(s.choices, "|"));
         lines.push_back(fmt::format("{}{} <{}>", kOscRoot, s.key, argument));
     }
     lines.push_back(fmt::format("{}preset <name>", kOscRoot));
     lines.push_back(fmt::format("{}trigger [frequency_hz amplitude]", kOscRoot));
-    lines.push_back(fmt::format("{}actuator/<n>/gain <{} to 0 dB>", kOscRoot,
-                                ActuatorOutput::kMinGainDb));
+    lines.push_back(
+        fmt::format("{}actuator/<n>/gain <{} to 0 dB>", kOscRoot, ActuatorOutput::kMinGainDb));
     return lines;
 }
 

@@ -25,9 +25,8 @@ OscMessage decode_message(std::span<const std::byte> bytes) {
     const std::unique_ptr<std::remove_pointer_t<lo_message>, decltype(&lo_message_free)> message(
         lo_message_deserialise(copy.data(), copy.size(), &result), &lo_message_free);
     if (!message)
-        throw std::invalid_argument(
-            fmt::format("osc: a malformed message of {} bytes (liblo error {})", bytes.size(),
-                        result));
+        throw std::invalid_argument(fmt::format(
+            "osc: a malformed message of {} bytes (liblo error {})", bytes.size(), result));
     OscMessage out;
     const size_t path_end = strnlen(reinterpret_cast<const char*>(copy.data()), copy.size());
     out.address.assign(reinterpret_cast<const char*>(copy.data()), path_end);
@@ -38,15 +37,32 @@ OscMessage decode_message(std::span<const std::byte> bytes) {
         OscArg a;
         a.type = types[i];
         switch (types[i]) {
-            case LO_INT32: a.number = argv[i]->i; break;
-            case LO_INT64: a.number = static_cast<double>(argv[i]->h); break;
-            case LO_FLOAT: a.number = argv[i]->f; break;
-            case LO_DOUBLE: a.number = argv[i]->d; break;
-            case LO_TRUE: a.number = 1; break;
-            case LO_FALSE: a.number = 0; break;
-            case LO_STRING: a.text = &argv[i]->s; break;
-            case LO_SYMBOL: a.text = &argv[i]->S; break;
-            default: break;  // kept with its type: parse_osc refuses it by name
+            case LO_INT32:
+                a.number = argv[i]->i;
+                break;
+            case LO_INT64:
+                a.number = static_cast<double>(argv[i]->h);
+                break;
+            case LO_FLOAT:
+                a.number = argv[i]->f;
+                break;
+            case LO_DOUBLE:
+                a.number = argv[i]->d;
+                break;
+            case LO_TRUE:
+                a.number = 1;
+                break;
+            case LO_FALSE:
+                a.number = 0;
+                break;
+            case LO_STRING:
+                a.text = &argv[i]->s;
+                break;
+            case LO_SYMBOL:
+                a.text = &argv[i]->S;
+                break;
+            default:
+                break;  // kept with its type: parse_osc refuses it by name
         }
         out.args.push_back(std::move(a));
     }
@@ -64,9 +80,8 @@ void decode(std::span<const std::byte> bytes, int depth, std::vector<OscMessage>
             const uint32_t size = big_endian_u32(bytes.data() + at);
             at += 4;
             if (size == 0 || size % 4 != 0 || size > bytes.size() - at)
-                throw std::invalid_argument(
-                    fmt::format("osc: a bundle element of {} bytes in {} left", size,
-                                bytes.size() - at));
+                throw std::invalid_argument(fmt::format(
+                    "osc: a bundle element of {} bytes in {} left", size, bytes.size() - at));
             decode(bytes.subspan(at, size), depth + 1, out);
             at += size;
         }

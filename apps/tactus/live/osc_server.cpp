@@ -34,8 +34,8 @@ OscEndpoint parse_endpoint(const std::string& text, const std::string& option,
         port = text.substr(colon + 1);
     }
     const auto [end, error] = std::from_chars(port.data(), port.data() + port.size(), e.port);
-    if (e.host.empty() || error != std::errc() || end != port.data() + port.size() ||
-        e.port < 1 || e.port > 65535)
+    if (e.host.empty() || error != std::errc() || end != port.data() + port.size() || e.port < 1 ||
+        e.port > 65535)
         throw std::invalid_argument(
             fmt::format("{} {}: give [HOST:]PORT with a port from 1 to 65535", option, text));
     return e;
@@ -82,8 +82,8 @@ OscServer::OscServer(const OscEndpoint& endpoint, LiveControl& control) : contro
     addrinfo* found = nullptr;
     const std::string port = std::to_string(endpoint.port);
     if (const int error = getaddrinfo(endpoint.host.c_str(), port.c_str(), &hints, &found))
-        throw std::runtime_error(fmt::format("--osc-port {}:{}: {}", endpoint.host, endpoint.port,
-                                             gai_strerror(error)));
+        throw std::runtime_error(
+            fmt::format("--osc-port {}:{}: {}", endpoint.host, endpoint.port, gai_strerror(error)));
     std::string why = "no address";
     for (addrinfo* a = found; a; a = a->ai_next) {
         socket_ = ::socket(a->ai_family, a->ai_socktype, a->ai_protocol);
@@ -100,9 +100,8 @@ OscServer::OscServer(const OscEndpoint& endpoint, LiveControl& control) : contro
     sockaddr_storage bound{};
     socklen_t length = sizeof bound;
     getsockname(socket_, reinterpret_cast<sockaddr*>(&bound), &length);
-    port_ = ntohs(bound.ss_family == AF_INET6
-                      ? reinterpret_cast<sockaddr_in6*>(&bound)->sin6_port
-                      : reinterpret_cast<sockaddr_in*>(&bound)->sin_port);
+    port_ = ntohs(bound.ss_family == AF_INET6 ? reinterpret_cast<sockaddr_in6*>(&bound)->sin6_port
+                                              : reinterpret_cast<sockaddr_in*>(&bound)->sin_port);
 }
 
 OscServer::~OscServer() {

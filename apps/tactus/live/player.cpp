@@ -34,8 +34,8 @@ Player::Player(const std::vector<std::filesystem::path>& files, double sample_ra
         while (const int n = reader.read(pointers.data(), kChunk))
             for (int c = 0; c < channels_; ++c)
                 samples_[static_cast<size_t>(c)].insert(samples_[static_cast<size_t>(c)].end(),
-                                                         chunk[static_cast<size_t>(c)].begin(),
-                                                         chunk[static_cast<size_t>(c)].begin() + n);
+                                                        chunk[static_cast<size_t>(c)].begin(),
+                                                        chunk[static_cast<size_t>(c)].begin() + n);
     }
     if (frames() == 0) throw std::runtime_error(fmt::format("{}: no audio", files[0].string()));
 }

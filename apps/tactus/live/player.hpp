@@ -19,7 +19,9 @@ class Player {
     static double sample_rate_of(const std::filesystem::path& file);
 
     int channels() const { return channels_; }
-    int64_t frames() const { return static_cast<int64_t>(samples_.empty() ? 0 : samples_[0].size()); }
+    int64_t frames() const {
+        return static_cast<int64_t>(samples_.empty() ? 0 : samples_[0].size());
+    }
 
     // Audio thread: the next `count` frames into channels[0 .. channels()), silence once the
     // files are done (never, with loop).

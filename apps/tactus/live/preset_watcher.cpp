@@ -13,8 +13,8 @@
 namespace tactus::live {
 namespace {
 
-constexpr int kPollMs = 50;     // how soon the thread notices it should stop
-constexpr int kSettleMs = 30;   // events of one save arrive together: read them all first
+constexpr int kPollMs = 50;    // how soon the thread notices it should stop
+constexpr int kSettleMs = 30;  // events of one save arrive together: read them all first
 
 }  // namespace
 
@@ -24,8 +24,7 @@ PresetWatcher::PresetWatcher(std::filesystem::path preset, LiveControl& control,
     inotify_ = inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
     const std::filesystem::path folder = preset_.parent_path();
     if (inotify_ < 0 ||
-        inotify_add_watch(inotify_, folder.c_str(),
-                          IN_CLOSE_WRITE | IN_MOVED_TO | IN_CREATE) < 0) {
+        inotify_add_watch(inotify_, folder.c_str(), IN_CLOSE_WRITE | IN_MOVED_TO | IN_CREATE) < 0) {
         const std::string why = std::strerror(errno);
         if (inotify_ >= 0) ::close(inotify_);
         throw std::runtime_error(

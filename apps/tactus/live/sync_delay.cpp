@@ -46,17 +46,18 @@ int vibration_delay_samples(const Settings& settings, double sample_rate_hz,
     }
     std::vector<int64_t> delays;
     for (const int64_t at : hits) {
-        const auto from = y.begin() + at, to = y.begin() + std::min<int64_t>(at + spacing, static_cast<int64_t>(y.size()));
+        const auto from = y.begin() + at,
+                   to = y.begin() + std::min<int64_t>(at + spacing, static_cast<int64_t>(y.size()));
         float peak = 0;
         for (auto i = from; i != to; ++i) peak = std::max(peak, std::abs(*i));
         if (peak <= 0) continue;
-        const auto rise = std::find_if(from, to, [&](float v) {
-            return std::abs(v) >= kPulseRiseFraction * peak;
-        });
+        const auto rise = std::find_if(
+            from, to, [&](float v) { return std::abs(v) >= kPulseRiseFraction * peak; });
         delays.push_back(rise - from);
     }
     if (delays.empty()) return engine.latency();  // settings that never pulse: the look-ahead
-    std::nth_element(delays.begin(), delays.begin() + static_cast<long>(delays.size() / 2), delays.end());
+    std::nth_element(delays.begin(), delays.begin() + static_cast<long>(delays.size() / 2),
+                     delays.end());
     return static_cast<int>(delays[delays.size() / 2]);
 }
 

@@ -19,7 +19,7 @@ struct SweepSpec {
     double sample_rate_hz = 48000;
     double low_hz = 20, high_hz = 2000;  // swept, exponentially
     double seconds = 5;
-    double level = 0.5;                  // full scale
+    double level = 0.5;                     // full scale
     static constexpr double kFadeS = 0.01;  // raised-cosine fades at both ends
 };
 

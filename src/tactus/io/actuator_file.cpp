@@ -189,9 +189,10 @@ std::string actuator_text(const ActuatorProfile& a, std::string_view comment) {
                      type_name(a.type), quoted(a.description));
     t += fmt::format("displacement_um = {}\nreference_hz = {}\nmax_drive = {}\ndc = {}\n",
                      a.displacement_um, a.reference_hz, a.max_drive, a.dc);
-    t += fmt::format("band_low_hz = {}\nband_high_hz = {}\nrolloff_db_per_octave = {}\n"
-                     "rise_ms = {}\n",
-                     a.band_low_hz, a.band_high_hz, a.rolloff_db_per_octave, a.rise_ms);
+    t += fmt::format(
+        "band_low_hz = {}\nband_high_hz = {}\nrolloff_db_per_octave = {}\n"
+        "rise_ms = {}\n",
+        a.band_low_hz, a.band_high_hz, a.rolloff_db_per_octave, a.rise_ms);
     constexpr std::string_view kKinds[] = {"none", "low-pass", "band-pass"};
     t += fmt::format("\n[response]\nkind = \"{}\"\n", kKinds[static_cast<int>(a.resonance)]);
     if (a.resonance != ResonanceKind::none)
@@ -202,8 +203,9 @@ std::string actuator_text(const ActuatorProfile& a, std::string_view comment) {
         t += "]\n";
     }
     if (a.type == ActuatorType::erm)
-        t += fmt::format("\n[erm]\nfrequency_at_min_drive_hz = {}\nfrequency_at_max_drive_hz = {}\n",
-                         a.erm_min_drive_hz, a.erm_max_drive_hz);
+        t +=
+            fmt::format("\n[erm]\nfrequency_at_min_drive_hz = {}\nfrequency_at_max_drive_hz = {}\n",
+                        a.erm_min_drive_hz, a.erm_max_drive_hz);
     return t;
 }
 
