@@ -226,15 +226,21 @@ int osc_send(const char* port, int argc, char** argv) {
 
 int print_message(const char* path, const char* types, lo_arg** argv, int argc, lo_message, void*) {
     std::printf("%s", path);
-    for (int i = 0; i < argc; ++i) {
-        if (types[i] == LO_FLOAT)
-            std::printf(" %.9g", argv[i]->f);
-        else if (types[i] == LO_INT32)
-            std::printf(" %d", argv[i]->i);
-        else if (types[i] == LO_STRING)
-            std::printf(" %s", &argv[i]->s);
-        else
+    for (int i = 0; i < argc; ++i) {  // 4-byte aligned: read the bytes, not the lo_arg union
+        const auto* bytes = reinterpret_cast<const char*>(argv[i]);
+        float f = 0;
+        int32_t n = 0;
+        if (types[i] == LO_FLOAT) {
+            std::memcpy(&f, bytes, sizeof f);
+            std::printf(" %.9g", f);
+        } else if (types[i] == LO_INT32) {
+            std::memcpy(&n, bytes, sizeof n);
+            std::printf(" %d", n);
+        } else if (types[i] == LO_STRING) {
+            std::printf(" %s", bytes);
+        } else {
             std::printf(" ?%c", types[i]);
+        }
     }
     std::printf("\n");
     return 0;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <lo/lo.h>
 
+#include <cstdint>
 #include <cstring>
 #include <memory>
 #include <stdexcept>
@@ -36,18 +37,24 @@ OscMessage decode_message(std::span<const std::byte> bytes) {
     for (int i = 0; i < argc; ++i) {
         OscArg a;
         a.type = types[i];
+        // liblo's arguments are 4-byte aligned, its lo_arg union 8: read the bytes, not the union.
+        const auto* bytes = reinterpret_cast<const char*>(argv[i]);
+        const auto read = [&]<typename T>(T value) {
+            std::memcpy(&value, bytes, sizeof value);
+            return static_cast<double>(value);
+        };
         switch (types[i]) {
             case LO_INT32:
-                a.number = argv[i]->i;
+                a.number = read(int32_t{});
                 break;
             case LO_INT64:
-                a.number = static_cast<double>(argv[i]->h);
+                a.number = read(int64_t{});
                 break;
             case LO_FLOAT:
-                a.number = argv[i]->f;
+                a.number = read(float{});
                 break;
             case LO_DOUBLE:
-                a.number = argv[i]->d;
+                a.number = read(double{});
                 break;
             case LO_TRUE:
                 a.number = 1;
@@ -56,10 +63,8 @@ OscMessage decode_message(std::span<const std::byte> bytes) {
                 a.number = 0;
                 break;
             case LO_STRING:
-                a.text = &argv[i]->s;
-                break;
             case LO_SYMBOL:
-                a.text = &argv[i]->S;
+                a.text = bytes;
                 break;
             default:
                 break;  // kept with its type: parse_osc refuses it by name
