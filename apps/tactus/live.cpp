@@ -228,8 +228,9 @@ void live_run(const LiveOptions& o) {
         if (!lost && stream->lost()) {
             lost = true;
             std::cerr << (terminal ? "\n" : "")
-                      << "tactus: the audio device stopped; retrying every second until it "
-                         "returns (Ctrl-C stops)\n";
+                      << fmt::format("tactus: the audio device stopped after {:.2f} s of audio; "
+                                     "retrying every second until it returns (Ctrl-C stops)\n",
+                                     callback.frames() / rate_hz);
         }
         if (lost && now >= next_retry) {
             next_retry = now + kRetryPeriod;

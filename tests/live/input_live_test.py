@@ -28,10 +28,10 @@ pulses = int(re.search(r"(\d+) pulses", r.stderr).group(1))
 rendered = soundfile.read(rendered_path, dtype="float32")[0]
 
 recording_path = os.path.join(d, "rec.wav")
-recorder = jack.client(client, "record", "rec", "1", "8", recording_path)
+recorder = jack.client(client, "record", "rec", "1", "12", recording_path)
 jack.client(client, "play", "src", AMEN)
 live = jack.run([tactus, "live", "--backend", "jack", "--input", "src", "--output", "rec",
-                 "--duration", "3.5"])
+                 "--duration", "6"])
 print(live.stderr, end="")
 check(live.returncode == 0, "tactus live --input exits 0")
 heard = int(re.search(r"(\d+) onsets", live.stderr).group(1))
@@ -41,10 +41,11 @@ recorder.wait(timeout=30)
 recording = soundfile.read(recording_path, dtype="float32")[0]
 
 # Align by cross-correlation, then compare.
-corr = np.correlate(recording, rendered, mode="valid")
-lag = int(np.argmax(corr))
+size = 1 << int(np.ceil(np.log2(len(recording) + len(rendered))))
+corr = np.fft.irfft(np.fft.rfft(recording, size) * np.conj(np.fft.rfft(rendered, size)), size)
+lag = int(np.argmax(corr[:len(recording) - len(rendered) + 1]))
 live_out = recording[lag:lag + len(rendered)]
-similarity = corr[lag] / np.sqrt(np.sum(live_out ** 2) * np.sum(rendered ** 2))
+similarity = np.dot(live_out, rendered) / np.sqrt(np.sum(live_out ** 2) * np.sum(rendered ** 2))
 level_db = 20 * np.log10(np.sqrt(np.mean(live_out ** 2)) / np.sqrt(np.mean(rendered ** 2)))
 print(f"correlation with the render {similarity:.3f}, level {level_db:+.2f} dB")
 check(similarity > 0.9, "the vibration has the render's shape")

@@ -5,6 +5,7 @@ A test that cannot start jackd exits with SKIP (77, ctest's SKIP_RETURN_CODE) an
 everything started is stopped on exit, whatever happens."""
 
 import atexit
+import ctypes
 import os
 import shutil
 import signal
@@ -14,6 +15,16 @@ import tempfile
 import time
 
 SKIP = 77
+PR_SET_PDEATHSIG = 1
+
+
+def _die_with_parent():
+    """In each child: SIGTERM when the test's process dies, even by SIGKILL (a ctest timeout)."""
+    ctypes.CDLL("libc.so.6", use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGTERM)
+
+
+def _exit_on_signal(signum, frame):
+    sys.exit(128 + signum)  # runs the atexit clean-up
 
 
 class JackServer:
@@ -23,6 +34,8 @@ class JackServer:
         self.dir = tempfile.mkdtemp(prefix="tactus-jack-")
         self.processes = []
         atexit.register(self.close)
+        signal.signal(signal.SIGTERM, _exit_on_signal)
+        signal.signal(signal.SIGINT, _exit_on_signal)
         if shutil.which("jackd") is None:
             skip("jackd is not installed (Debian jackd2)")
         self.rate_hz, self.period = rate_hz, period
@@ -35,7 +48,8 @@ class JackServer:
             # period slows the dummy clock down instead of dropping blocks.
             ["jackd", "--no-realtime", "-S", "-n", self.name, "-d", "dummy", "-r",
              str(self.rate_hz), "-p", str(self.period)],
-            stdout=log, stderr=subprocess.STDOUT, env=self.env, start_new_session=True)
+            stdout=log, stderr=subprocess.STDOUT, env=self.env, start_new_session=True,
+            preexec_fn=_die_with_parent)
         self.processes.append(self.jackd)
         for _ in range(100):
             if self.jackd.poll() is not None:
@@ -55,7 +69,8 @@ class JackServer:
 
     def start(self, args, **kwargs):
         """A process of the test, stopped (SIGTERM) at the end if still running."""
-        p = subprocess.Popen(args, env=self.env, start_new_session=True, **kwargs)
+        p = subprocess.Popen(args, env=self.env, start_new_session=True,
+                             preexec_fn=_die_with_parent, **kwargs)
         self.processes.append(p)
         return p
 

@@ -1,7 +1,8 @@
 // The live tests' own JACK and OSC client, run against a JACK server of the test (dummy driver):
 //   live_test_client record NAME CHANNELS SECONDS OUT.wav
-//       registers input ports NAME:in_1 ... in_CHANNELS and records them, from activation, for
-//       SECONDS (or until SIGTERM / SIGINT) into a float WAV.
+//       registers input ports NAME:in_1 ... in_CHANNELS and records them, from activation, until
+//       SIGTERM / SIGINT or SECONDS of audio (the server's clock: a busy synchronous server runs
+//       slower than the wall clock) into a float WAV.
 //   live_test_client filter NAME ACTUATOR.toml
 //       NAME:in -> NAME:out through the actuator profile's band-pass resonance (a biquad whose
 //       magnitude is ActuatorProfile::response_db's resonance term: an actuator the calibration
@@ -104,7 +105,8 @@ int record(const char* name, int channels, double seconds, const char* path) {
     if (jack_activate(client) != 0) return 1;
     std::printf("ready\n");
     std::fflush(stdout);
-    wait_for_stop(seconds);
+    while (!g_stop && r.frames.load() < r.samples[0].size())
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
     jack_deactivate(client);
     jack_client_close(client);
     const size_t frames = r.frames.load();
