@@ -1,12 +1,14 @@
-// make_drum_corpus OUTDIR [SEED]: writes the drum corpus (see drum_corpus.hpp) as float WAVs with
-// ground truth beside each: NAME.wav, NAME.onsets.txt (one onset per line, seconds) and
-// NAME.hits.csv (time_s,instrument,gain_db).
+// make_drum_corpus OUTDIR [SEED [KIT...]]: writes the drum corpus (see drum_corpus.hpp) as float
+// WAVs with ground truth beside each: NAME.wav, NAME.onsets.txt (one onset per line, seconds) and
+// NAME.hits.csv (time_s,instrument,gain_db). Kits named on the command line replace Sonic Pi's:
+// KIT_kick.flac, KIT_snare.flac and KIT_hat.flac in the sample directory (eval/gm_kits.py).
 #include <fmt/format.h>
 
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include "drum_corpus.hpp"
 #include "tactus/io/audio_writer.hpp"
@@ -30,17 +32,21 @@ void write(const tactus::corpus::Track& track, const std::filesystem::path& dir)
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc < 2 || argc > 3) {
-        std::cerr << "usage: make_drum_corpus OUTDIR [SEED]\n";
+    if (argc < 2) {
+        std::cerr << "usage: make_drum_corpus OUTDIR [SEED [KIT...]]\n";
         return 2;
     }
     try {
         const std::filesystem::path dir = argv[1];
-        const uint64_t seed = argc == 3 ? std::strtoull(argv[2], nullptr, 10) : 1;
+        const uint64_t seed = argc >= 3 ? std::strtoull(argv[2], nullptr, 10) : 1;
         std::filesystem::create_directories(dir);
         using namespace tactus::corpus;
+        std::vector<DrumKit> named;
+        for (int i = 3; i < argc; ++i)
+            named.push_back({argv[i], std::string(argv[i]) + "_kick",
+                             std::string(argv[i]) + "_snare", std::string(argv[i]) + "_hat"});
         uint64_t k = 0;
-        for (const DrumKit& kit : kits()) {
+        for (const DrumKit& kit : named.empty() ? kits() : named) {
             ++k;
             write(breakbeat(kit, seed * 1000 + k), dir);
             write(breakbeat(kit, seed * 1000 + k, -20.0), dir);

@@ -58,11 +58,10 @@ class FrameWriter {
     void vibration(const float* samples, int count) {
         meter_.write(samples, count,
                      [this](const perception::MeterReading& r) { readings_.push_back(r); });
-        metered_samples_ += count;
-        write_rows_up_to(static_cast<double>(metered_samples_));
+        write_rows(false);
     }
     void finish() {
-        write_rows_up_to(INFINITY);
+        write_rows(true);
         if (json_) out_ << "\n]\n";
     }
 
@@ -84,21 +83,28 @@ class FrameWriter {
                             c.pressure});
         onsets_ += f.onset;
     }
-    // Writes the pending rows whose time (in samples) the meter has reached, each with the
-    // latest reading at or before it.
-    void write_rows_up_to(double samples) {
-        const double sample_rate_hz = engine_.sample_rate_hz();
-        while (!pending_.empty() && pending_.front()[0] * sample_rate_hz <= samples + 0.5) {
+    // Writes the pending rows the meter has read past, each with the sensation levels at its
+    // own time: interpolated between the 10 ms readings around it, so they line up with
+    // `meter -o` of the rendered vibration. `finished`: the rest, with the last reading.
+    void write_rows(bool finished) {
+        while (!pending_.empty()) {
             Row values = pending_.front();
-            pending_.pop_front();
-            while (!readings_.empty() && readings_.front().time_s <= values[0] + 1e-9) {
-                current_ = readings_.front();
+            const double t = values[0];
+            while (!readings_.empty() && readings_.front().time_s <= t + 1e-9) {
+                before_ = readings_.front();
                 readings_.pop_front();
             }
+            if (readings_.empty() && !finished) return;  // the reading after t is yet to come
+            pending_.pop_front();
+            const perception::MeterReading& after = readings_.empty() ? before_ : readings_.front();
+            const double span = after.time_s - before_.time_s;
+            const double w = span > 0 ? (t - before_.time_s) / span : 0.0;
             const size_t first = values.size() - kMeterColumns;
-            for (size_t i = 0; i < current_.level_db.size(); ++i)
-                values[first + i] = current_.level_db[i];
-            values[first + current_.level_db.size()] = current_.combined_db;
+            for (size_t i = 0; i < before_.level_db.size(); ++i)
+                values[first + i] =
+                    before_.level_db[i] + w * (after.level_db[i] - before_.level_db[i]);
+            values[first + before_.level_db.size()] =
+                before_.combined_db + w * (after.combined_db - before_.combined_db);
             write_row(values);
         }
     }
@@ -122,8 +128,7 @@ class FrameWriter {
     perception::SensationMeter meter_;
     std::deque<Row> pending_;
     std::deque<perception::MeterReading> readings_;
-    perception::MeterReading current_;
-    int64_t metered_samples_ = 0;
+    perception::MeterReading before_;  // the latest reading at or before the next row
     size_t rows_ = 0, onsets_ = 0;
 };
 

@@ -40,13 +40,19 @@ struct Job {
     fs::path input, output;
 };
 
-class OnsetCounter final : public FrameObserver {
+// The pulses a render triggers and the loudest its input got (for the summary and the warning
+// that audible input gave no vibration).
+class RenderStats final : public FrameObserver {
   public:
-    void on_frame(const Features&, const ControlFrame& control) noexcept override {
+    void on_frame(const Features& features, const ControlFrame& control) noexcept override {
         onsets += control.trigger;
+        loudest_db = std::max(loudest_db, features.loudness_db);
     }
-    FeatureSet reads() const noexcept override { return FeatureSet::none(); }
+    FeatureSet reads() const noexcept override {
+        return {.loudness = true, .spectrum = false, .pitch = false};
+    }
     int onsets = 0;
+    double loudest_db = -INFINITY;
 };
 
 // Where each input's vibration goes: -o for one input, DIR/<stem>.vibration.wav with -O. Refuses
@@ -84,8 +90,8 @@ std::string render_one(const Job& job, const Settings& settings,
     Engine engine(settings);
     engine.set_actuators(std::vector<ActuatorOutput>(static_cast<size_t>(channels),
                                                      ActuatorOutput{.profile = actuator}));
-    OnsetCounter counter;
-    engine.set_observer(&counter);
+    RenderStats stats;
+    engine.set_observer(&stats);
     std::optional<AudioWriter> writer;  // opened at the input's sample rate
     float peak = 0.0f;
     const auto write = [&](const float* const* v, int n) {
@@ -99,9 +105,17 @@ std::string render_one(const Job& job, const Settings& settings,
     const RunSummary summary = run_file(
         job.input, engine, {.on_output = write, .on_progress = on_progress, .on_start = open});
     writer->commit();
+    // A drone or a tone that fades in has no onset: a preset that pulses only at onsets leaves it
+    // silent. Say so rather than hand back digital silence without a word.
+    if (peak == 0 && stats.loudest_db > settings[P::mapping_gate_db])
+        std::cerr << fmt::format(
+            "tactus: warning: {}: the input is audible (loudness up to {:.0f} dB) but gave no "
+            "vibration: it has no onset for the pulses; for sustained sounds try --preset "
+            "sustained\n",
+            job.input.string(), stats.loudest_db);
     return fmt::format("{}: {:.2f} s at {:g} Hz, {} pulses, peak {:.1f} dBFS, {} channel(s)",
                        job.output.string(), summary.frames / summary.sample_rate_hz,
-                       summary.sample_rate_hz, counter.onsets,
+                       summary.sample_rate_hz, stats.onsets,
                        peak > 0 ? 20 * std::log10(peak) : -INFINITY, channels);
 }
 

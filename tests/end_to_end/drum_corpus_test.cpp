@@ -178,7 +178,7 @@ TEST(DrumCorpus, VibrationOfIsolatedHits) {
         std::cout << kit.name << ": kick " << frequency_hz[0] << " Hz, snare " << frequency_hz[1]
                   << " Hz, ratio " << ratio << '\n';
         ratios.push_back(ratio);
-        // About two frequency-discrimination steps (Weber fraction ~0.2, perception.md).
+        // About two frequency-discrimination steps (Weber fraction ~0.2, docs/perception.md).
         EXPECT_GE(ratio, 1.5) << kit.name;
     }
     std::cout << "median snare/kick ratio " << median(ratios) << ", median onset -> half peak "

@@ -51,7 +51,7 @@ double level(Channel c, const MeterReading& r) {
 }
 
 TEST(SensationMeter, SteadySineReadsLevelMinusThreshold) {
-    for (double f : {80.0, 250.0, 400.0}) {
+    for (double f : {40.0, 80.0, 250.0, 400.0}) {
         // 0.5 full scale x 10 um = 5 um peak: 20 log10(5) = 14 dB re 1 um.
         const auto x = test::sine(f, kFs, static_cast<size_t>(3 * kFs), 0.5);
         const MeterReading r = meter(x, flat_10um).at(2.8);
@@ -87,6 +87,26 @@ TEST(SensationMeter, PBurstsFollowTemporalSummation) {
             20 * std::log10(5.0) - threshold_db(Channel::P, 250, {.duration_s = d});
         EXPECT_NEAR(meter(x, flat_10um).max(Channel::P), expected, 1.0) << d << " s";
     }
+}
+
+// Temporal summation lowers the threshold of longer stimuli; it does not make a sensation outlast
+// its stimulus: a 50 ms burst at 1 s reads P only while it is inside P's window.
+TEST(SensationMeter, PFollowsTheStimulusInTime) {
+    std::vector<float> x(static_cast<size_t>(3 * kFs), 0.0f);
+    const auto burst = test::sine(250, kFs, static_cast<size_t>(0.05 * kFs), 0.5);
+    std::copy(burst.begin(), burst.end(), x.begin() + static_cast<long>(kFs));
+    double first_s = 0, last_s = 0;
+    for (const auto& r : meter(x, flat_10um).readings)
+        if (level(Channel::P, r) > 0) {
+            if (first_s == 0) first_s = r.time_s;
+            last_s = r.time_s;
+        }
+    const double window_s = SensationMeter::kHopsPerWindow *
+                            SensationMeter::kHopSteps[static_cast<int>(Channel::P)] *
+                            SensationMeter::kStepS;
+    EXPECT_GT(first_s, 1.0);
+    EXPECT_LE(first_s, 1.05 + SensationMeter::kHopSteps[0] * SensationMeter::kStepS);
+    EXPECT_LE(last_s, 1.05 + window_s + SensationMeter::kStepS) << "window " << window_s << " s";
 }
 
 TEST(SensationMeter, SmallerContactRaisesPThreshold) {

@@ -33,7 +33,7 @@ TEST(PThreshold, ClosedForm) {
     }
 }
 
-// ---- The four channels, with the tolerances of perception.md ("Test tolerances") ----
+// ---- The four channels, with the tolerances of docs/perception.md ("Test tolerances") ----
 
 double octave_slope(Channel c, double from_hz, double to_hz, const Stimulus& s = {}) {
     return (threshold_db(c, to_hz, s) - threshold_db(c, from_hz, s)) / std::log2(to_hz / from_hz);
@@ -60,7 +60,7 @@ TEST(ChannelThresholds, PSlopes) {
 
 TEST(ChannelThresholds, AbsoluteLevels) {
     EXPECT_NEAR(threshold_db(Channel::P, 250), -20.0, 5.0);  // thenar, 2.9 cm^2 [recalled]
-    // perception.md's listed values of the closed form.
+    // docs/perception.md's listed values of the closed form.
     EXPECT_NEAR(threshold_db(Channel::P, 25), 16.3, 0.1);
     EXPECT_NEAR(threshold_db(Channel::P, 40), 8.2, 0.1);
     EXPECT_NEAR(threshold_db(Channel::P, 100), -7.8, 0.1);
@@ -147,7 +147,7 @@ TEST(ChannelThresholds, MinRule) {
     EXPECT_EQ(detecting_channel(250.0), Channel::P);
     EXPECT_EQ(detecting_channel(0.5), Channel::NPIII);
     // NPII is far above P with a large contactor; with a 0.02 cm^2 one P has lost its spatial
-    // summation and the two nearly meet (perception.md: the curve is then set by NPII).
+    // summation and the two nearly meet (docs/perception.md: the curve is then set by NPII).
     EXPECT_GT(threshold_db(Channel::NPII, 250) - threshold_db(Channel::P, 250), 20.0);
     const Stimulus small{.contact_area_cm2 = 0.02};
     EXPECT_LT(

@@ -1,5 +1,5 @@
 // Real-time safety of `tactus live`'s audio callback (apps/tactus/live/live_callback.hpp): the
-// callback runs block after block under the allocation and lock guard (realtime/guard.hpp) while,
+// callback runs block after block under the allocation and lock guard (support/allocation_counter.hpp) while,
 // on their own threads as in `tactus live`, the OSC server receives real UDP traffic sent with
 // liblo (every live parameter turned, a structural change, triggers, actuator trims, malformed
 // and out-of-range messages), the preset watcher reloads a preset file rewritten on disk, and the
@@ -19,7 +19,7 @@
 #include "live/osc_server.hpp"
 #include "live/player.hpp"
 #include "live/preset_watcher.hpp"
-#include "realtime/guard.hpp"
+#include "support/allocation_counter.hpp"
 #include "support/live_values.hpp"
 #include "support/signals.hpp"
 #include "support/sound_file.hpp"
@@ -28,6 +28,11 @@
 
 namespace tactus {
 namespace {
+
+using test::g_allocator_calls;
+using test::g_mutex_locks;
+using test::Guard;
+using test::reset_counts;
 
 constexpr double kRateHz = 48000;
 

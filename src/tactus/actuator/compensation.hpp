@@ -4,8 +4,9 @@
 // peaking cut of kBoundDb at f0 with Q' = Q 10^(-kBoundDb/40), followed by the gain that brings
 // f0 to its target (kBoundDb less the response at f0): exactly |s^2 + s/Q + 1| /
 // |s^2 + s/Q'' + 1| scaled, Q'' = Q 10^(-kBoundDb/20), the inverse resonance levelling off at the
-// bound away from f0 (Android's HapticGenerator notches its LRA's f0 likewise: perception.md). What
-// remains (tables, low-pass resonances) is fitted by FittedEq over the usable band.
+// bound away from f0 (Android's HapticGenerator notches its LRA's f0 likewise:
+// docs/perception.md). What remains (tables, low-pass resonances) is fitted by FittedEq over the
+// usable band.
 #pragma once
 
 #include "tactus/actuator/profile.hpp"

@@ -1,5 +1,5 @@
 // An actuator profile: what the output stage drives and how a full-scale signal becomes skin
-// displacement (paper §4; perception.md "Actuators"). Read from TOML (actuators/*.toml):
+// displacement (paper §4; docs/perception.md "Actuators"). Read from TOML (actuators/*.toml):
 //   name, type ("voice-coil", "lra", "erm"), description
 //   displacement_um   peak displacement (um) for a full-scale sine at reference_hz
 //   reference_hz      where displacement_um holds (the response is 0 dB there)
@@ -12,7 +12,7 @@
 //              (interpolated on log-frequency, flat beyond its ends; added to the resonance)
 //   [erm] frequency_at_min_drive_hz, frequency_at_max_drive_hz  (ERM: frequency follows drive)
 // Values in the shipped profiles are typical of the actuator class, not measurements: measure
-// actuators loaded by skin, free-air responses differ a lot (perception.md). Reading them from
+// actuators loaded by skin, free-air responses differ a lot (docs/perception.md). Reading them from
 // files: io/actuator_file.hpp.
 #pragma once
 

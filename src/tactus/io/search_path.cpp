@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <dlfcn.h>
+#include <link.h>
+
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
@@ -13,7 +16,17 @@ namespace tactus {
 std::filesystem::path installed_data_dir() {
     std::error_code error;
     const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", error);
-    if (error) return {};
+    // The object holding this code: the program itself (its link map has no name), or a shared
+    // object loaded into another program (a Pd external, a plugin, a Python module).
+    Dl_info info{};
+    link_map* object = nullptr;
+    if (dladdr1(reinterpret_cast<const void*>(&installed_data_dir), &info,
+                reinterpret_cast<void**>(&object), RTLD_DL_LINKMAP) != 0 &&
+        object && object->l_name && object->l_name[0] != '\0') {
+        const std::filesystem::path module = std::filesystem::weakly_canonical(object->l_name, error);
+        if (!error) return module.parent_path();
+    }
+    if (program.empty()) return {};
     return program.parent_path().parent_path() / "share" / "tactus";
 }
 

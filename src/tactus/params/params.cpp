@@ -189,7 +189,7 @@ constexpr ParamSpec kTable[] = {
      "limiter look-ahead (adds latency)"},
     {P::post_release_ms, 74, "post.release_ms", "ms", real, 1, 2000, 80, log, live, 0,
      "limiter gain recovery time constant"},
-    // Perception model (perception.md): conditions the thresholds depend on.
+    // Perception model (docs/perception.md): conditions the thresholds depend on.
     {P::perception_contact_area_cm2, 75, "perception.contact_area_cm2", "cm2", real, 0.005, 20, 2.9, log, live, 50,
      "skin contact area of the actuator (P channel spatial summation; 2.9 = reference curves)"},
 };

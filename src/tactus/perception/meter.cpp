@@ -106,7 +106,9 @@ void SensationMeter::step(const std::function<void(const MeterReading&)>& on_rea
             if (++c->next_frame == c->frames.size()) c->next_frame = 0;
             double sum = 0;
             for (double v : c->frames) sum += v;
-            c->value = sum / static_cast<double>(c->frames.size());
+            // P: the last second's energy (temporal summation lowers the threshold of longer
+            // stimuli), never more than the window's own: the sensation ends with its stimulus.
+            c->value = std::min(power, sum / static_cast<double>(c->frames.size()));
         }
         reading.level_db[static_cast<int>(c->channel)] =
             c->value > 1.0 ? power_to_db(c->value) : 0.0;

@@ -1,5 +1,5 @@
 // Sensation-level meter: which channels of touch a vibration signal engages, and how strongly,
-// over time (paper §3.5 and §5; perception.md).
+// over time (paper §3.5 and §5; docs/perception.md).
 // The signal (full scale 1) becomes skin displacement through an actuator calibration, um peak
 // per full-scale sine vs frequency (0 where the actuator cannot move, e.g. DC without DC
 // capability). Each channel is one detector integrating stimulus energy across its frequencies
@@ -10,12 +10,15 @@
 // (temporal summation, -3 dB per doubling of duration up to ~1 s: Verrillo 1965 [recalled],
 // Gescheider 1976): its frame values are averaged over the last second, so a burst of d < 1 s
 // reads 10 log10(d / 1 s) lower, which is P's duration law (applied in full at every frequency
-// and contact area, where threshold.hpp weakens it below 80 Hz and for small contacts); NP channels
-// do not sum over time and read their window alone (bursts shorter than ~3/8 of the window read
-// low). Windows resolve each channel's lowest frequencies: 0.4 s (P, NPI: 2.5 Hz bins), 0.08 s
-// (NPII, from 100 Hz), 5.12 s (NPIII, from 0.4 Hz). Readings are causal, every 10 ms; a static
-// offset reads 3 dB high (its peak equals its RMS). Sensation levels are dB SL, 0 = below threshold
-// (not engaged); the combined column is perception::combined_sensation_db (Hollins & Roy 1996).
+// and contact area, where threshold.hpp weakens it below 80 Hz and for small contacts), and the
+// reading never exceeds the current frame's own value: summation lowers the threshold of longer
+// stimuli, it does not make a sensation outlast its stimulus. NP channels do not sum over time
+// and read their window alone (bursts shorter than ~3/8 of the window read low). Windows resolve
+// each channel's lowest frequencies: 0.16 s (P, from 40 Hz: 6.25 Hz bins), 0.4 s (NPI: 2.5 Hz
+// bins), 0.08 s (NPII, from 100 Hz), 5.12 s (NPIII, from 0.4 Hz). Readings are causal, every
+// 10 ms; a static offset reads 3 dB high (its peak equals its RMS). Sensation levels are dB SL,
+// 0 = below threshold (not engaged); the combined column is perception::combined_sensation_db
+// (Hollins & Roy 1996).
 #pragma once
 
 #include <array>
@@ -43,7 +46,7 @@ class SensationMeter {
     static constexpr double kStepS = 0.01;
     static constexpr double kPIntegrationS = 1.0;  // P temporal summation up to ~1 s
     // Each channel's hop, in 10 ms steps; its window is kHopsPerWindow hops.
-    static constexpr std::array<int, 4> kHopSteps = {5, 5, 1, 64};  // P, NPI, NPII, NPIII
+    static constexpr std::array<int, 4> kHopSteps = {2, 5, 1, 64};  // P, NPI, NPII, NPIII
     static constexpr int kHopsPerWindow = 8;
 
     using Calibration = std::function<double(double frequency_hz)>;  // um peak per full scale

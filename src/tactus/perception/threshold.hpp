@@ -1,5 +1,5 @@
 // Vibrotactile detection thresholds of the four channels (channels.hpp) vs frequency, in dB re
-// 1 um peak displacement, after perception.md. Reference condition: thenar eminence, 2.9 cm^2
+// 1 um peak displacement, after docs/perception.md. Reference condition: thenar eminence, 2.9 cm^2
 // contactor with a rigid surround, 1 s bursts (Bolanowski, Gescheider, Verrillo & Checkosky
 // 1988, JASA 84:1680).
 //   P:     T_P(f) = T_Pmin + 10 log10( (3/7)(f_m/f)^4 + (4/7)(f/f_m)^3 ), f_m = 250 Hz: falls
@@ -21,7 +21,7 @@
 namespace tactus::perception {
 
 // P channel, reference condition.
-constexpr double kPBestHz = 250.0;                             // f_m [derived, perception.md]
+constexpr double kPBestHz = 250.0;                             // f_m [derived, docs/perception.md]
 constexpr double kPMinimumDb = -20.0;                          // T_Pmin [recalled, +-5 dB]
 constexpr double kPLowEdgeHz = info(Channel::P).range_low_hz;  // 40-500 Hz (paper Table 1)
 constexpr double kPHighEdgeHz = info(Channel::P).range_high_hz;

@@ -1,0 +1,284 @@
+// The tactus plugin (DPF: LV2, VST3, CLAP and the JACK standalone from this one source): music
+// in, the engine's vibration out on every actuator channel, the music passed through delayed by
+// the engine's latency, which is reported to the host.
+//
+// Threads. The host's audio thread calls run() and, often, setParameterValue(); neither
+// allocates, locks or makes a system call: a parameter goes into HostParameters' atomics and
+// the ControlThread hands it to Engine::set (a live parameter glides, a structural one is
+// built there and crossfaded in by the engine); a program (a preset read at construction)
+// is stored the same way. The host's main thread calls activate(), setState() and getState();
+// engine_mutex_ keeps it and the control thread off the engine's setup at the same time. The
+// audio thread never takes that mutex.
+//
+// Parameters come from the one table (plugin_params.hpp: index = stable id, 0 = bypass), the
+// state is the engine's TOML (plugin_state.hpp), the programs are presets/*.toml.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <vector>
+
+#include "DistrhoPlugin.hpp"
+#include "bypass_ramp.hpp"
+#include "control_thread.hpp"
+#include "factory_presets.hpp"
+#include "host_parameters.hpp"
+#include "pass_through_delay.hpp"
+#include "plugin_params.hpp"
+#include "plugin_state.hpp"
+#include "tactus/core/units.hpp"
+#include "tactus/engine/engine.hpp"
+#include "tactus/io/preset.hpp"
+
+START_NAMESPACE_DISTRHO
+
+namespace tp = tactus::plugin;
+
+class TactusPlugin : public Plugin {
+  public:
+    static constexpr int kInputs = DISTRHO_PLUGIN_NUM_INPUTS;
+    static constexpr int kActuators = DISTRHO_PLUGIN_NUM_OUTPUTS - DISTRHO_PLUGIN_NUM_INPUTS;
+
+    TactusPlugin()
+        : Plugin(tp::parameter_count(), static_cast<uint32_t>(std::size(tp::kFactoryPresets)), 1),
+          rows_(tp::parameter_count()) {
+        for (uint32_t index = 0; index < rows_.size(); ++index) rows_[index] = tp::param_at(index);
+        // Presets read here, once: a host may select one from its audio thread. The one that
+        // is the table's defaults comes first (program 0, which some hosts load at start).
+        for (const tp::FactoryPreset& preset : tp::kFactoryPresets) {
+            Program& program = programs_.emplace_back(Program{preset.name, {}});
+            try {
+                tactus::apply_preset_text(program.settings, preset.text, preset.name);
+            } catch (const std::exception& e) {
+                d_stderr2("tactus: %s", e.what());
+                program.settings = tactus::Settings{};
+            }
+        }
+        std::stable_partition(programs_.begin(), programs_.end(), [](const Program& p) {
+            return tp::state_text(p.settings) == tp::state_text(tactus::Settings{});
+        });
+        engine_.set_actuators(std::vector<tactus::ActuatorOutput>(kActuators));
+        if (!isDummyInstance())
+            control_ = std::make_unique<tp::ControlThread>([this] { take_changes(); });
+    }
+    ~TactusPlugin() override { control_.reset(); }  // before the engine it drives
+
+  protected:
+    // ---- description ----
+    const char* getLabel() const override { return "tactus"; }
+    const char* getDescription() const override {
+        return "Music to vibrotactile feedback: analysis, mapping, synthesis and "
+               "post-processing for vibration actuators (Birnbaum & Wanderley)";
+    }
+    const char* getMaker() const override { return "tactus"; }
+    const char* getHomePage() const override { return "urn:tactus"; }
+    const char* getLicense() const override { return "GPL-3.0-or-later"; }
+    uint32_t getVersion() const override { return d_version(0, 1, 0); }
+    int64_t getUniqueId() const override { return d_cconst('t', 'c', 't', 's'); }
+
+    void initAudioPort(bool input, uint32_t index, AudioPort& port) override {
+        if (input) {
+            port.groupId = kPortGroupStereo;
+            port.name = index == 0 ? "Music L" : "Music R";
+            port.symbol = index == 0 ? "music_l" : "music_r";
+        } else if (index < kActuators) {
+            port.groupId = kVibrationGroup;
+            port.name = String(fmt::format("Vibration {}", index + 1).c_str());
+            port.symbol = String(fmt::format("vibration_{}", index + 1).c_str());
+        } else {
+            port.groupId = kPortGroupStereo;
+            port.name = index == kActuators ? "Music L (delayed)" : "Music R (delayed)";
+            port.symbol = index == kActuators ? "music_out_l" : "music_out_r";
+        }
+    }
+    void initPortGroup(uint32_t groupId, PortGroup& group) override {
+        if (groupId != kVibrationGroup) return Plugin::initPortGroup(groupId, group);
+        group.name = "Vibration";
+        group.symbol = "vibration";
+    }
+
+    void initParameter(uint32_t index, Parameter& parameter) override {
+        if (index == tp::kBypassIndex)
+            return parameter.initDesignation(kParameterDesignationBypass);
+        const std::optional<tactus::P> row = rows_[index];
+        if (!row) {  // a retired id: kept so that no later id moves
+            parameter.name = parameter.symbol = String(fmt::format("retired_{}", index).c_str());
+            parameter.hints = 0;
+            return;
+        }
+        const tactus::ParamSpec& s = tactus::spec(*row);
+        using tactus::ParamType;
+        parameter.hints = kParameterIsAutomatable;
+        if (s.type != ParamType::real) parameter.hints |= kParameterIsInteger;
+        if (s.type == ParamType::toggle) parameter.hints |= kParameterIsBoolean;
+        if (s.curve == tactus::ParamCurve::log && s.min > 0)
+            parameter.hints |= kParameterIsLogarithmic;
+        parameter.name = String(std::string(s.key).c_str());
+        parameter.symbol = String(tp::symbol_of(s).c_str());
+        parameter.unit = String(std::string(s.unit).c_str());
+        parameter.description = String(std::string(s.help).c_str());
+        parameter.ranges = ParameterRanges(static_cast<float>(s.default_value),
+                                           static_cast<float>(s.min), static_cast<float>(s.max));
+        if (s.type == ParamType::choice && !s.choices.empty()) {
+            const auto count = static_cast<uint32_t>(s.choices.size());
+            auto* values = new ParameterEnumerationValue[count];
+            for (uint32_t i = 0; i < count; ++i)
+                values[i] = ParameterEnumerationValue(static_cast<float>(i),
+                                                      std::string(s.choices[i]).c_str());
+            parameter.enumValues.count = count;
+            parameter.enumValues.restrictedMode = true;
+            parameter.enumValues.values = values;  // DPF deletes it
+        }
+    }
+
+    void initProgramName(uint32_t index, String& name) override {
+        name = String(std::string(programs_[index].name).c_str());
+    }
+    void initState(uint32_t, State& state) override {
+        state.key = tp::kStateKey;
+        state.label = "tactus settings (preset TOML)";
+        state.defaultValue = String(tp::state_text(tactus::Settings{}).c_str());
+        state.hints = kStateIsOnlyForDSP;
+    }
+
+    // ---- parameters: any thread, the audio thread included ----
+    float getParameterValue(uint32_t index) const override {
+        if (index == tp::kBypassIndex) return bypassed_.load() ? 1.0f : 0.0f;
+        const std::optional<tactus::P> row = index < rows_.size() ? rows_[index] : std::nullopt;
+        return row ? static_cast<float>(host_.value(*row)) : 0.0f;
+    }
+    void setParameterValue(uint32_t index, float value) override {
+        if (index == tp::kBypassIndex) return bypassed_.store(value > 0.5f);
+        if (index < rows_.size())
+            if (const std::optional<tactus::P> row = rows_[index]) host_.set_from_host(*row, value);
+    }
+
+    // Any thread (LV2 hosts may select a program from their audio thread): atomics only.
+    void loadProgram(uint32_t index) override {
+        if (index < programs_.size()) host_.set_all(programs_[index].settings);
+    }
+
+    // ---- main thread ----
+    String getState(const char* key) const override {
+        if (std::string_view(key) != tp::kStateKey) return String();
+        return String(tp::state_text(host_.settings()).c_str());
+    }
+    void setState(const char* key, const char* value) override {
+        if (std::string_view(key) != tp::kStateKey) return;
+        const tp::RestoredState restored = tp::restore_state(value);
+        if (!restored.error.empty())
+            d_stderr2("tactus: state not restored, defaults instead: %s", restored.error.c_str());
+        host_.set_all(restored.settings);
+    }
+
+    void activate() override {
+        const std::lock_guard lock(engine_mutex_);
+        apply_changes();
+        const int block =
+            std::clamp(static_cast<int>(getBufferSize()), 1, tactus::Engine::kMaxBlock);
+        try {
+            engine_.prepare(
+                {.sample_rate_hz = getSampleRate(), .max_block = block, .channels = kInputs});
+        } catch (const std::exception& e) {  // a sample rate the engine does not run at
+            d_stderr2("tactus: %s", e.what());
+            prepared_ = false;
+            return;
+        }
+        input_.assign(kInputs, std::vector<float>(static_cast<size_t>(block)));
+        block_ = block;
+        // The longest look-ahead the table allows, plus the upsampler's few samples.
+        const double lookahead_ms = tactus::spec(tactus::P::post_lookahead_ms).max;
+        delay_.prepare(kInputs,
+                       static_cast<int>(tactus::ms_to_samples(lookahead_ms, getSampleRate())) +
+                           kUpsamplerMarginSamples);
+        ramp_.prepare(getSampleRate());
+        ramp_.reset(bypassed_.load());
+        latency_samples_ = engine_.latency();
+        setLatency(static_cast<uint32_t>(latency_samples_));
+        prepared_ = true;
+    }
+    void deactivate() override {}
+
+    // ---- audio thread ----
+    void run(const float** inputs, float** outputs, uint32_t frames) override {
+        if (!prepared_) {
+            for (int c = 0; c < DISTRHO_PLUGIN_NUM_OUTPUTS; ++c)
+                std::fill_n(outputs[c], frames, 0.0f);
+            return;
+        }
+        const bool bypassed = bypassed_.load(std::memory_order_relaxed);
+        for (uint32_t done = 0; done < frames;) {
+            const int count =
+                static_cast<int>(std::min<uint32_t>(frames - done, static_cast<uint32_t>(block_)));
+            // Copied first: hosts may hand the same buffer in and out.
+            const float* in[kInputs];
+            for (int c = 0; c < kInputs; ++c) {
+                std::copy_n(inputs[c] + done, count, input_[static_cast<size_t>(c)].data());
+                in[c] = input_[static_cast<size_t>(c)].data();
+            }
+            float* vibration[kActuators];
+            for (int k = 0; k < kActuators; ++k) vibration[k] = outputs[k] + done;
+            float* music[kInputs];
+            for (int c = 0; c < kInputs; ++c) music[c] = outputs[kActuators + c] + done;
+            engine_.process(in, vibration, count);
+            ramp_.process(vibration, kActuators, count, bypassed);
+            delay_.process(in, music, count, engine_.latency());
+            done += static_cast<uint32_t>(count);
+        }
+        if (const int latency = engine_.latency(); latency != latency_samples_) {
+            latency_samples_ = latency;
+            setLatency(static_cast<uint32_t>(latency));
+        }
+    }
+
+  private:
+    static constexpr uint32_t kVibrationGroup = 1;  // DPF's own groups are kPortGroupMono, Stereo
+    static constexpr int kUpsamplerMarginSamples = 256;
+
+    // Control thread: the host's changes to the engine.
+    void take_changes() {
+        if (!host_.changed()) return;
+        const std::lock_guard lock(engine_mutex_);
+        apply_changes();
+    }
+    void apply_changes() {  // engine_mutex_ held
+        host_.take_changes([this](tactus::P id, double value) {
+            // A restored state or a program sets every parameter: only the ones that differ
+            // reach the engine (a structural one builds a pipeline even for the same value).
+            if (engine_.settings()[id] == value) return;
+            try {
+                engine_.set(id, value);
+            } catch (const std::exception& e) {
+                d_stderr2("tactus: %s", e.what());
+            }
+        });
+    }
+
+    std::vector<std::optional<tactus::P>> rows_;  // host parameter index -> table row
+    struct Program {
+        std::string_view name;
+        tactus::Settings settings;
+    };
+    std::vector<Program> programs_;  // kFactoryPresets, read; the defaults first
+    tp::HostParameters host_;
+    std::atomic<bool> bypassed_{false};
+    tactus::Engine engine_;
+    std::mutex engine_mutex_;  // main and control threads, never the audio thread
+    bool prepared_ = false;
+    int block_ = 0;
+    int latency_samples_ = 0;
+    std::vector<std::vector<float>> input_;
+    tp::PassThroughDelay delay_;
+    tp::BypassRamp ramp_;
+    std::unique_ptr<tp::ControlThread> control_;
+
+    DISTRHO_DECLARE_NON_COPYABLE_WITH_LEAK_DETECTOR(TactusPlugin)
+};
+
+Plugin* createPlugin() {
+    return new TactusPlugin();
+}
+
+END_NAMESPACE_DISTRHO
