@@ -24,6 +24,11 @@ int main(int argc, char** argv) {
     tactus::cli::add_export(app);
     tactus::cli::add_actuators(app);
     tactus::cli::add_report(app);
+#ifdef TACTUS_LIVE
+    tactus::cli::add_live(app);
+    tactus::cli::add_devices(app);
+    tactus::cli::add_calibrate(app);
+#endif
     if (const auto unknown = tactus::cli::unknown_command(app, argc, argv)) {
         std::cerr << "tactus: error: " << *unknown << '\n';
         return 2;

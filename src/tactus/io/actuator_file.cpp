@@ -165,4 +165,48 @@ ActuatorProfile load_actuator(const fs::path& path) {
     return parse_actuator(text, path.string());
 }
 
+std::string actuator_text(const ActuatorProfile& a, std::string_view comment) {
+    const auto quoted = [](std::string_view text) {
+        std::string out = "\"";
+        for (const char c : text) {
+            if (c == '"' || c == '\\') out += '\\';
+            if (static_cast<unsigned char>(c) < 0x20) {
+                out += fmt::format("\\u{:04x}", static_cast<unsigned char>(c));
+                continue;
+            }
+            out += c;
+        }
+        return out + '"';
+    };
+    std::string t;
+    std::string_view rest = comment;
+    while (!rest.empty()) {
+        const size_t end = rest.find('\n');
+        t += fmt::format("# {}\n", rest.substr(0, end));
+        rest = end == std::string_view::npos ? std::string_view{} : rest.substr(end + 1);
+    }
+    t += fmt::format("name = {}\ntype = \"{}\"\ndescription = {}\n", quoted(a.name),
+                     type_name(a.type), quoted(a.description));
+    t += fmt::format("displacement_um = {}\nreference_hz = {}\nmax_drive = {}\ndc = {}\n",
+                     a.displacement_um, a.reference_hz, a.max_drive, a.dc);
+    t += fmt::format(
+        "band_low_hz = {}\nband_high_hz = {}\nrolloff_db_per_octave = {}\n"
+        "rise_ms = {}\n",
+        a.band_low_hz, a.band_high_hz, a.rolloff_db_per_octave, a.rise_ms);
+    constexpr std::string_view kKinds[] = {"none", "low-pass", "band-pass"};
+    t += fmt::format("\n[response]\nkind = \"{}\"\n", kKinds[static_cast<int>(a.resonance)]);
+    if (a.resonance != ResonanceKind::none)
+        t += fmt::format("resonance_hz = {}\nq = {}\n", a.resonance_hz, a.q);
+    if (!a.points.empty()) {
+        t += "points = [\n";
+        for (const auto& [f, db] : a.points) t += fmt::format("  [{}, {}],\n", f, db);
+        t += "]\n";
+    }
+    if (a.type == ActuatorType::erm)
+        t +=
+            fmt::format("\n[erm]\nfrequency_at_min_drive_hz = {}\nfrequency_at_max_drive_hz = {}\n",
+                        a.erm_min_drive_hz, a.erm_max_drive_hz);
+    return t;
+}
+
 }  // namespace tactus

@@ -17,5 +17,9 @@ std::filesystem::path resolve_actuator(std::string_view name_or_path);
 // Reads and validates a profile; throws std::runtime_error "FILE:LINE:COL: key: problem".
 ActuatorProfile load_actuator(const std::filesystem::path& path);
 ActuatorProfile parse_actuator(std::string_view toml_text, std::string_view origin);
+// Every field of `profile` as a profile file (`comment` atop it, each line prefixed "# "; reals
+// in the shortest form that reads back as the same double): parse_actuator() of it gives the
+// profile back.
+std::string actuator_text(const ActuatorProfile& profile, std::string_view comment);
 
 }  // namespace tactus

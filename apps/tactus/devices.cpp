@@ -1,0 +1,47 @@
+// tactus devices: every audio backend of this build (RtAudio: ALSA, PulseAudio, JACK) with its
+// devices, their channel counts and rates, as `tactus live --backend B --output DEV` names them.
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <iostream>
+
+#include "commands.hpp"
+#include "live/device_stream.hpp"
+
+namespace tactus::cli {
+namespace {
+
+void list_devices() {
+    for (const RtAudio::Api api : live::backends()) {
+        std::cout << RtAudio::getApiName(api) << " (" << RtAudio::getApiDisplayName(api) << ")\n";
+        try {
+            RtAudio audio(api);
+            audio.showWarnings(false);
+            const unsigned int count = audio.getDeviceCount();
+            if (count == 0)
+                std::cout << (api == RtAudio::UNIX_JACK ? "  no devices (no JACK server running)\n"
+                                                        : "  no devices\n");
+            for (unsigned int i = 0; i < count; ++i) {
+                const RtAudio::DeviceInfo info = audio.getDeviceInfo(i);
+                if (!info.probed) continue;
+                const std::string rates = fmt::format("{}", fmt::join(info.sampleRates, " "));
+                std::cout << fmt::format("  {}: {}  in {}  out {}  rates {}{}{}\n", i, info.name,
+                                         info.inputChannels, info.outputChannels, rates,
+                                         info.isDefaultOutput ? "  default output" : "",
+                                         info.isDefaultInput ? "  default input" : "");
+            }
+        } catch (const RtAudioError& e) {
+            std::cout << "  unavailable: " << e.getMessage() << '\n';
+        }
+    }
+}
+
+}  // namespace
+
+void add_devices(CLI::App& app) {
+    CLI::App* command =
+        app.add_subcommand("devices", "list the audio backends and devices `tactus live` can use");
+    command->callback([] { list_devices(); });
+}
+
+}  // namespace tactus::cli

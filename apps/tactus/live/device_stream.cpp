@@ -1,0 +1,165 @@
+#include "device_stream.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <charconv>
+#include <stdexcept>
+
+namespace tactus::live {
+namespace {
+
+std::string lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+    return s;
+}
+
+}  // namespace
+
+std::vector<RtAudio::Api> backends() {
+    std::vector<RtAudio::Api> apis;
+    RtAudio::getCompiledApi(apis);
+    std::erase(apis, RtAudio::RTAUDIO_DUMMY);
+    return apis;
+}
+
+RtAudio::Api backend_named(const std::string& name) {
+    const RtAudio::Api api = RtAudio::getCompiledApiByName(name);
+    if (api == RtAudio::UNSPECIFIED || api == RtAudio::RTAUDIO_DUMMY) {
+        std::string known;
+        for (RtAudio::Api a : backends())
+            known += (known.empty() ? "" : ", ") + RtAudio::getApiName(a);
+        throw std::runtime_error(
+            fmt::format("--backend {}: not a backend of this build (it has: {})", name, known));
+    }
+    return api;
+}
+
+unsigned int find_device(RtAudio& audio, const std::string& name, bool output) {
+    const unsigned int count = audio.getDeviceCount();
+    std::vector<std::string> names;
+    for (unsigned int i = 0; i < count; ++i) names.push_back(audio.getDeviceInfo(i).name);
+    const auto usable = [&](unsigned int i) {
+        const RtAudio::DeviceInfo info = audio.getDeviceInfo(i);
+        return output ? info.outputChannels > 0 : info.inputChannels > 0;
+    };
+    unsigned int index = 0;
+    if (const auto [end, error] = std::from_chars(name.data(), name.data() + name.size(), index);
+        error == std::errc() && end == name.data() + name.size() && index < count)
+        return index;
+    for (unsigned int i = 0; i < count; ++i)
+        if (names[i] == name && usable(i)) return i;
+    std::vector<unsigned int> partial;
+    for (unsigned int i = 0; i < count; ++i)
+        if (lower(names[i]).find(lower(name)) != std::string::npos && usable(i))
+            partial.push_back(i);
+    if (partial.size() == 1) return partial[0];
+    std::string known;
+    for (unsigned int i = 0; i < count; ++i)
+        if (usable(i)) known += fmt::format("{}{}: {}", known.empty() ? "" : ", ", i, names[i]);
+    throw std::runtime_error(
+        fmt::format("{} device '{}': {} ({} devices: {})", output ? "output" : "input", name,
+                    partial.empty() ? "no such device" : "more than one device matches",
+                    RtAudio::getApiName(audio.getCurrentApi()), known.empty() ? "none" : known));
+}
+
+DeviceStream::DeviceStream(const StreamRequest& request) {
+    try {
+        audio_ = std::make_unique<RtAudio>(request.backend);
+        audio_->showWarnings(false);
+        if (audio_->getDeviceCount() == 0)
+            throw std::runtime_error(fmt::format("{}: no devices (is the server running?)",
+                                                 RtAudio::getApiName(audio_->getCurrentApi())));
+        RtAudio::StreamParameters out_params, in_params;
+        out_params.deviceId = request.output_device.empty()
+                                  ? audio_->getDefaultOutputDevice()
+                                  : find_device(*audio_, request.output_device, true);
+        out_params.nChannels = static_cast<unsigned int>(request.output_channels);
+        const RtAudio::DeviceInfo out_info = audio_->getDeviceInfo(out_params.deviceId);
+        output_name_ = out_info.name;
+        if (request.output_channels > static_cast<int>(out_info.outputChannels))
+            throw std::runtime_error(fmt::format("output device '{}' has {} channels; {} asked for",
+                                                 out_info.name, out_info.outputChannels,
+                                                 request.output_channels));
+        const bool with_input = request.input_channels != 0;
+        if (with_input) {
+            in_params.deviceId = find_device(*audio_, request.input_device, false);
+            const RtAudio::DeviceInfo in_info = audio_->getDeviceInfo(in_params.deviceId);
+            input_channels_ = request.input_channels < 0 ? static_cast<int>(in_info.inputChannels)
+                                                         : request.input_channels;
+            in_params.nChannels = static_cast<unsigned int>(input_channels_);
+            in_params.firstChannel = static_cast<unsigned int>(request.input_first_channel);
+            if (request.input_first_channel + input_channels_ >
+                static_cast<int>(in_info.inputChannels))
+                throw std::runtime_error(fmt::format(
+                    "input device '{}' has {} channels; channel {} asked for", in_info.name,
+                    in_info.inputChannels, request.input_first_channel + input_channels_));
+        }
+        sample_rate_hz_ = request.sample_rate_hz;
+        if (sample_rate_hz_ <= 0)
+            sample_rate_hz_ =
+                out_info.preferredSampleRate > 0
+                    ? out_info.preferredSampleRate
+                    : (out_info.sampleRates.empty() ? 48000 : out_info.sampleRates[0]);
+        block_frames_ = static_cast<unsigned int>(request.block_frames);
+        RtAudio::StreamOptions options;
+        options.flags = RTAUDIO_NONINTERLEAVED | RTAUDIO_SCHEDULE_REALTIME;
+        options.streamName = request.client_name;
+        audio_->openStream(&out_params, with_input ? &in_params : nullptr, RTAUDIO_FLOAT32,
+                           static_cast<unsigned int>(sample_rate_hz_), &block_frames_,
+                           &DeviceStream::on_audio, this, &options);
+        sample_rate_hz_ = audio_->getStreamSampleRate();
+    } catch (const RtAudioError& e) {
+        throw std::runtime_error(e.getMessage());
+    }
+}
+
+DeviceStream::~DeviceStream() {
+    stop();
+    try {
+        if (audio_ && audio_->isStreamOpen()) audio_->closeStream();
+    } catch (const RtAudioError&) {
+    }
+}
+
+void DeviceStream::start(AudioCallback& callback) {
+    callback_ = &callback;
+    try {
+        audio_->startStream();
+        started_ = true;
+    } catch (const RtAudioError& e) {
+        throw std::runtime_error(e.getMessage());
+    }
+}
+
+void DeviceStream::stop() noexcept {
+    if (!started_) return;
+    started_ = false;
+    try {
+        if (audio_->isStreamRunning()) audio_->stopStream();
+    } catch (const RtAudioError&) {
+    }
+}
+
+bool DeviceStream::lost() const {
+    return started_ && !audio_->isStreamRunning();
+}
+
+long DeviceStream::device_latency_frames() {
+    try {
+        return audio_->getStreamLatency();
+    } catch (const RtAudioError&) {
+        return 0;
+    }
+}
+
+int DeviceStream::on_audio(void* out, void* in, unsigned int frames, double,
+                           RtAudioStreamStatus status, void* self) noexcept {
+    auto& stream = *static_cast<DeviceStream*>(self);
+    if (status != 0) stream.callback_->note_xrun();
+    stream.callback_->process(static_cast<const float*>(in), static_cast<float*>(out),
+                              static_cast<int>(frames));
+    return 0;
+}
+
+}  // namespace tactus::live

@@ -1,0 +1,78 @@
+// An audio device stream through RtAudio (ALSA, PulseAudio, JACK): opens the named devices,
+// calls an AudioCallback from the device's thread with non-interleaved float buffers, and says
+// when the device went away so the caller can open it again.
+#pragma once
+
+#include <RtAudio.h>
+
+#include <atomic>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace tactus::live {
+
+// The audio thread's side of a stream. Both calls come from the device's thread only.
+class AudioCallback {
+  public:
+    virtual ~AudioCallback() = default;
+    // in: the input channels one after another (null without input), out: the output channels.
+    virtual void process(const float* in, float* out, int frames) noexcept = 0;
+    virtual void note_xrun() noexcept {}
+};
+
+// "jack", "alsa", "pulse": the backend names the command line takes (RtAudio's own).
+RtAudio::Api backend_named(const std::string& name);
+std::vector<RtAudio::Api> backends();
+
+struct StreamRequest {
+    RtAudio::Api backend = RtAudio::UNSPECIFIED;
+    std::string input_device;  // name, part of a name, or index; empty: no input
+    int input_channels = 0;    // opened from input_first_channel; -1: all the device has
+    int input_first_channel = 0;
+    std::string output_device;  // empty: the default output
+    int output_channels = 0;
+    double sample_rate_hz = 0;  // 0: the device's (JACK: the server's)
+    int block_frames = 256;
+    std::string client_name = "tactus";  // JACK's client name
+};
+
+class DeviceStream {
+  public:
+    // Opens (not starts) the stream; throws std::runtime_error naming the device and what RtAudio
+    // said.
+    DeviceStream(const StreamRequest& request);
+    ~DeviceStream();
+    DeviceStream(const DeviceStream&) = delete;
+    DeviceStream& operator=(const DeviceStream&) = delete;
+
+    // Calls `callback` from the device's thread until stop() or destruction.
+    void start(AudioCallback& callback);
+    void stop() noexcept;
+    // Control thread: the stream stopped without stop() (the device or server went away).
+    bool lost() const;
+
+    double sample_rate_hz() const { return sample_rate_hz_; }
+    int block_frames() const { return static_cast<int>(block_frames_); }
+    // The device's input + output latency as RtAudio reports it, in frames.
+    long device_latency_frames();
+    std::string output_name() const { return output_name_; }
+    int input_channels() const { return input_channels_; }
+
+  private:
+    static int on_audio(void* out, void* in, unsigned int frames, double, RtAudioStreamStatus,
+                        void* self) noexcept;
+    std::unique_ptr<RtAudio> audio_;
+    AudioCallback* callback_ = nullptr;
+    int input_channels_ = 0;
+    double sample_rate_hz_ = 0;
+    unsigned int block_frames_ = 0;
+    bool started_ = false;
+    std::string output_name_;
+};
+
+// Device `name` of `backend`: an exact name, an index, or the only device whose name contains
+// it. Throws std::runtime_error listing what there is.
+unsigned int find_device(RtAudio& audio, const std::string& name, bool output);
+
+}  // namespace tactus::live

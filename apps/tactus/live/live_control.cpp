@@ -1,0 +1,87 @@
+#include "live_control.hpp"
+
+#include <chrono>
+#include <stdexcept>
+#include <thread>
+
+#include "tactus/io/preset.hpp"
+
+namespace tactus::live {
+namespace {
+
+// How long a change waits for room in the engine's queue before it is given up.
+constexpr auto kQueueWait = std::chrono::seconds(2);
+constexpr auto kQueuePoll = std::chrono::milliseconds(1);
+
+}  // namespace
+
+LiveControl::LiveControl(Engine& engine, Settings running, std::vector<std::string> assignments)
+    : engine_(engine), running_(running), assignments_(std::move(assignments)) {}
+
+// Engine::set and friends throw std::runtime_error only when the queue to the audio thread is
+// full (validation errors are std::invalid_argument): wait for the audio thread to take some.
+template <typename F>
+void LiveControl::retry_while_full(F&& change) {
+    const auto give_up = std::chrono::steady_clock::now() + kQueueWait;
+    for (;;) {
+        try {
+            change();
+            return;
+        } catch (const std::invalid_argument&) {
+            throw;
+        } catch (const std::runtime_error&) {
+            if (std::chrono::steady_clock::now() > give_up) throw;
+            std::this_thread::sleep_for(kQueuePoll);
+        }
+    }
+}
+
+void LiveControl::set(P id, double value) {
+    const std::lock_guard lock(mutex_);
+    Settings next = running_;
+    next.set(id, value);
+    apply(next);
+}
+
+void LiveControl::apply(const Settings& next) {
+    for (int i = 0; i < static_cast<int>(P::count); ++i) {
+        const auto id = static_cast<P>(i);
+        if (next[id] == running_[id]) continue;
+        retry_while_full([&] { engine_.set(id, next[id]); });
+        running_.assign(id, next[id]);
+    }
+}
+
+void LiveControl::load_preset_file(const std::filesystem::path& path) {
+    Settings next;
+    apply_preset_file(next, path);  // everything validated before anything applies
+    for (const auto& a : assignments_) apply_assignment(next, a);
+    const std::lock_guard lock(mutex_);
+    apply(next);
+}
+
+void LiveControl::load_preset(const std::string& name_or_path) {
+    load_preset_file(resolve_preset(name_or_path));
+}
+
+void LiveControl::run(const OscCommand& command) {
+    if (const auto* c = std::get_if<SetParameter>(&command)) return set(c->id, c->value);
+    if (const auto* c = std::get_if<LoadPreset>(&command)) return load_preset(c->name);
+    if (const auto* c = std::get_if<ActuatorGain>(&command))
+        return retry_while_full([&] { engine_.set_actuator_gain_db(c->actuator, c->gain_db); });
+    const auto& t = std::get<TriggerPulse>(command);
+    double frequency_hz = t.frequency_hz, amplitude = t.amplitude;
+    if (!t.with_values) {
+        const Settings now = settings();
+        frequency_hz = now[P::frequency_out_max];
+        amplitude = now[P::amplitude_out_max];
+    }
+    engine_.trigger(frequency_hz, amplitude);
+}
+
+Settings LiveControl::settings() const {
+    const std::lock_guard lock(mutex_);
+    return running_;
+}
+
+}  // namespace tactus::live

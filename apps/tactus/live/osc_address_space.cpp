@@ -1,0 +1,139 @@
+#include "osc_address_space.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+
+#include "tactus/core/printable.hpp"
+#include "tactus/engine/output_trim.hpp"
+
+namespace tactus::live {
+namespace {
+
+constexpr size_t kMaxNameBytes = 4096;  // a preset name or path
+
+[[noreturn]] void refuse(const OscMessage& m, const std::string& why) {
+    throw std::invalid_argument(
+        fmt::format("osc {}: {}", printable(std::string_view(m.address).substr(0, 200)), why));
+}
+
+bool is_number(const OscArg& a) {
+    return a.type == 'i' || a.type == 'h' || a.type == 'f' || a.type == 'd' || a.type == 'T' ||
+           a.type == 'F';
+}
+bool is_text(const OscArg& a) {
+    return a.type == 's' || a.type == 'S';
+}
+
+double number_arg(const OscMessage& m, size_t i, std::string_view what) {
+    if (i >= m.args.size() || !is_number(m.args[i]))
+        refuse(m, fmt::format("argument {} ({}) must be a number", i + 1, what));
+    const double v = m.args[i].number;
+    if (!std::isfinite(v)) refuse(m, fmt::format("{} is not a finite number", what));
+    return v;
+}
+
+void expect_args(const OscMessage& m, size_t low, size_t high, std::string_view usage) {
+    if (m.args.size() < low || m.args.size() > high)
+        refuse(m, fmt::format("takes {} ({} given)", usage, m.args.size()));
+}
+
+OscCommand parse_parameter(const OscMessage& m, std::string_view key) {
+    const std::optional<P> id = find_param(key);
+    if (!id)
+        refuse(m,
+               fmt::format("unknown address (did you mean {}{}?)", kOscRoot, nearest_param(key)));
+    expect_args(m, 1, 1, "one value");
+    Settings checked;  // Settings validates against the table, naming the key
+    try {
+        const OscArg& a = m.args[0];
+        if (is_text(a)) {
+            if (a.text.size() > kMaxNameBytes) refuse(m, "the text is too long");
+            checked.set_from_text(*id, a.text);
+        } else if (is_number(a)) {
+            checked.set(*id, a.number);
+        } else {
+            refuse(m, fmt::format("the value must be a number or a name, not type '{}'",
+                                  printable(std::string_view(&a.type, 1))));
+        }
+    } catch (const std::invalid_argument& e) {
+        if (std::string_view(e.what()).starts_with("osc ")) throw;
+        refuse(m, e.what());
+    }
+    return SetParameter{*id, checked[*id]};
+}
+
+OscCommand parse_actuator(const OscMessage& m, std::string_view rest, int actuators) {
+    // rest: "<n>/gain"
+    const size_t slash = rest.find('/');
+    if (slash == std::string_view::npos || rest.substr(slash + 1) != "gain")
+        refuse(m, fmt::format("unknown address (an actuator's is {}actuator/<n>/gain)", kOscRoot));
+    int n = 0;
+    const std::string_view digits = rest.substr(0, slash);
+    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), n);
+    if (error != std::errc() || end != digits.data() + digits.size() || n < 1 || n > actuators)
+        refuse(m,
+               fmt::format("actuator '{}' does not exist: 1 to {}", printable(digits), actuators));
+    expect_args(m, 1, 1, "one gain in dB");
+    const double gain_db = number_arg(m, 0, "gain_db");
+    if (gain_db < ActuatorOutput::kMinGainDb || gain_db > 0)
+        refuse(m, fmt::format("gain {} dB is out of range: allowed {} to 0 dB", gain_db,
+                              ActuatorOutput::kMinGainDb));
+    return ActuatorGain{n - 1, gain_db};
+}
+
+}  // namespace
+
+OscCommand parse_osc(const OscMessage& m, int actuators) {
+    const std::string_view address = m.address;
+    if (!address.starts_with(kOscRoot))
+        refuse(m, fmt::format("unknown address (tactus listens under {})", kOscRoot));
+    const std::string_view rest = address.substr(kOscRoot.size());
+    if (rest == "preset") {
+        expect_args(m, 1, 1, "one preset name");
+        if (!is_text(m.args[0])) refuse(m, "the preset name must be a string");
+        const std::string& name = m.args[0].text;
+        const bool plain = !name.empty() && name.size() <= kMaxNameBytes && name[0] != '.' &&
+                           !name.ends_with(".toml") &&
+                           name.find_first_not_of(
+                               "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTU"
+                               "VWXYZ0123456789_-.") == std::string::npos;
+        if (!plain)  // a message from the network reads no file it names
+            refuse(m, fmt::format("'{}' is not a preset name (see `tactus presets`; files are "
+                                  "not loaded over OSC)",
+                                  printable(std::string_view(name).substr(0, 200))));
+        return LoadPreset{name};
+    }
+    if (rest == "trigger") {
+        expect_args(m, 0, 2, "no arguments, or frequency_hz and amplitude");
+        if (m.args.size() == 1) refuse(m, "takes no arguments, or frequency_hz and amplitude");
+        if (m.args.empty()) return TriggerPulse{};
+        const double f = number_arg(m, 0, "frequency_hz"), a = number_arg(m, 1, "amplitude");
+        const double highest_hz = spec(P::frequency_out_max).max;
+        if (!(f > 0 && f <= highest_hz) || !(a >= 0 && a <= 1))
+            refuse(m, fmt::format("{} Hz, amplitude {}: allowed 0-{} Hz and amplitude 0-1", f, a,
+                                  highest_hz));
+        return TriggerPulse{true, f, a};
+    }
+    if (rest.starts_with("actuator/")) return parse_actuator(m, rest.substr(9), actuators);
+    return parse_parameter(m, rest);
+}
+
+std::vector<std::string> osc_address_lines() {
+    std::vector<std::string> lines;
+    for (const ParamSpec& s : param_table()) {
+        const std::string argument =
+            s.choices.empty() ? range_text(s) : fmt::format("{}", fmt::join(s.choices, "|"));
+        lines.push_back(fmt::format("{}{} <{}>", kOscRoot, s.key, argument));
+    }
+    lines.push_back(fmt::format("{}preset <name>", kOscRoot));
+    lines.push_back(fmt::format("{}trigger [frequency_hz amplitude]", kOscRoot));
+    lines.push_back(
+        fmt::format("{}actuator/<n>/gain <{} to 0 dB>", kOscRoot, ActuatorOutput::kMinGainDb));
+    return lines;
+}
+
+}  // namespace tactus::live

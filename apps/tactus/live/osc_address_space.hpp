@@ -1,0 +1,59 @@
+// The OSC address space of `tactus live`, generated from the parameter table (design.md: "OSC
+// addresses ... generated from it, never written again"):
+//   /tactus/<key> <value>                 every parameter (a number, or a choice's name)
+//   /tactus/preset <name>                 a preset by name (no file path: untrusted input)
+//   /tactus/trigger [frequency_hz amplitude]   a pulse (without arguments: the mapping's
+//                                         highest frequency and amplitude)
+//   /tactus/actuator/<n>/gain <dB>        actuator n's trim (n from 1)
+// OSC input is untrusted network input: parse_osc() validates everything against the table
+// and throws std::invalid_argument with one line for anything else; nothing is applied here.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "tactus/params/params.hpp"
+
+namespace tactus::live {
+
+inline constexpr std::string_view kOscRoot = "/tactus/";
+
+// One decoded argument: numbers ('i', 'h', 'f', 'd', and 'T'/'F' as 1/0) or text ('s', 'S').
+struct OscArg {
+    char type = 'f';
+    double number = 0;
+    std::string text;
+};
+
+struct OscMessage {
+    std::string address;
+    std::vector<OscArg> args;
+};
+
+struct SetParameter {
+    P id;
+    double value;  // checked against the table
+};
+struct LoadPreset {
+    std::string name;
+};
+struct TriggerPulse {
+    bool with_values = false;  // false: the current mapping's highest frequency and amplitude
+    double frequency_hz = 0, amplitude = 0;
+};
+struct ActuatorGain {
+    int actuator;  // from 0
+    double gain_db;
+};
+using OscCommand = std::variant<SetParameter, LoadPreset, TriggerPulse, ActuatorGain>;
+
+// `actuators`: the engine's actuator outputs. Throws std::invalid_argument, one line naming the
+// address.
+OscCommand parse_osc(const OscMessage& message, int actuators);
+
+// Every address, for help texts: one line each with the argument and its range.
+std::vector<std::string> osc_address_lines();
+
+}  // namespace tactus::live

@@ -1,0 +1,52 @@
+"""tactus live with an instrument's input on a real JACK server (dummy driver): the test's JACK
+client plays the Amen break into `tactus live --input src` (both channels, downmixed by the
+engine); tactus hears every onset `tactus render` finds in the file, and the vibration it plays
+has the render's level and shape (the stream starts at an arbitrary point of the analysis hop
+grid, so the two agree closely, not sample for sample).
+
+usage: input_live_test.py TACTUS LIVE_TEST_CLIENT"""
+
+import os
+import re
+import subprocess
+import sys
+
+import numpy as np
+import soundfile
+
+from jack_server import JackServer, check
+
+tactus, client = sys.argv[1:3]
+AMEN = "/usr/share/sonic-pi/samples/loop_amen.flac"
+jack = JackServer(44100)
+d = jack.dir
+
+rendered_path = os.path.join(d, "render.wav")
+r = jack.run([tactus, "render", AMEN, "-o", rendered_path])
+check(r.returncode == 0, "tactus render exits 0")
+pulses = int(re.search(r"(\d+) pulses", r.stderr).group(1))
+rendered = soundfile.read(rendered_path, dtype="float32")[0]
+
+recording_path = os.path.join(d, "rec.wav")
+recorder = jack.client(client, "record", "rec", "1", "12", recording_path)
+jack.client(client, "play", "src", AMEN)
+live = jack.run([tactus, "live", "--backend", "jack", "--input", "src", "--output", "rec",
+                 "--duration", "6"])
+print(live.stderr, end="")
+check(live.returncode == 0, "tactus live --input exits 0")
+heard = int(re.search(r"(\d+) onsets", live.stderr).group(1))
+check(heard == pulses, f"every onset of the file heard ({heard} of {pulses})")
+recorder.terminate()
+recorder.wait(timeout=30)
+recording = soundfile.read(recording_path, dtype="float32")[0]
+
+# Align by cross-correlation, then compare.
+size = 1 << int(np.ceil(np.log2(len(recording) + len(rendered))))
+corr = np.fft.irfft(np.fft.rfft(recording, size) * np.conj(np.fft.rfft(rendered, size)), size)
+lag = int(np.argmax(corr[:len(recording) - len(rendered) + 1]))
+live_out = recording[lag:lag + len(rendered)]
+similarity = np.dot(live_out, rendered) / np.sqrt(np.sum(live_out ** 2) * np.sum(rendered ** 2))
+level_db = 20 * np.log10(np.sqrt(np.mean(live_out ** 2)) / np.sqrt(np.mean(rendered ** 2)))
+print(f"correlation with the render {similarity:.3f}, level {level_db:+.2f} dB")
+check(similarity > 0.9, "the vibration has the render's shape")
+check(abs(level_db) < 1.0, "and its level within 1 dB")

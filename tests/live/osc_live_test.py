@@ -1,0 +1,118 @@
+"""OSC control and monitoring of `tactus live` on a real JACK server (dummy driver): a parameter
+sent with liblo while the file plays changes the actuator output exactly as the same --set does
+offline (`tactus render --set`) from that point on, after its glide and the limiter's release; the
+output up to that point is the render without it. A listener receives the features, the
+vibration program and the onsets at --osc-rate. Bad messages get one line on stderr each and
+change nothing.
+
+usage: osc_live_test.py TACTUS LIVE_TEST_CLIENT SOURCE_DIR"""
+
+import os
+import socket
+import subprocess
+import sys
+import time
+
+import numpy as np
+import soundfile
+
+from jack_server import JackServer, check, fail
+
+tactus, client, source_dir = sys.argv[1:4]
+AMEN = "/usr/share/sonic-pi/samples/loop_amen_full.flac"  # 6.9 s
+RATE_HZ = 44100
+KEY, VALUE = "post.drive_db", "0"  # from the preset's 12 dB
+OSC_RATE_HZ = 50
+jack = JackServer(RATE_HZ)
+d = jack.dir
+
+
+def free_udp_port():
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def render(name, *extra):
+    path = os.path.join(d, name + ".wav")
+    r = jack.run([tactus, "render", AMEN, "-o", path, *extra])
+    check(r.returncode == 0, f"tactus render {' '.join(extra)} exits 0")
+    return soundfile.read(path, dtype="float32")[0]
+
+
+before = render("before")
+after = render("after", "--set", f"{KEY}={VALUE}")
+check(np.max(np.abs(before - after)) > 0.01, f"--set {KEY}={VALUE} changes the render")
+n = len(before)
+
+seconds = soundfile.info(AMEN).duration + 4
+recording_path = os.path.join(d, "rec.wav")
+recorder = jack.client(client, "record", "rec", "1", str(seconds), recording_path)
+control_port, listen_port = free_udp_port(), free_udp_port()
+listener = jack.client(client, "osc-listen", str(listen_port), str(seconds))
+live = jack.start([tactus, "live", "--backend", "jack", "--play", AMEN, "--output", "rec",
+                   "--osc-port", str(control_port), "--osc-send", f"127.0.0.1:{listen_port}",
+                   "--osc-rate", str(OSC_RATE_HZ), "--duration", "30"],
+                  stderr=subprocess.PIPE, text=True)
+started = live.stderr.readline()
+print(started, end="")
+check("live on rec" in started, "tactus live started")
+time.sleep(2.5)
+
+
+def send(*args):
+    r = jack.run([client, "osc-send", str(control_port), *args])
+    check(r.returncode == 0, f"sent {' '.join(args)}")
+
+
+# Refused, each with one line: nothing they carry may reach the output.
+send("/tactus/post.drive_db", "f", "99")          # out of range
+send("/tactus/post.drive", "f", "0")              # unknown
+send("/tactus/post.drive_db", "s", "loud")        # wrong type
+send("/tactus/actuator/3/gain", "f", "-6")        # no such actuator
+send(f"/tactus/{KEY}", "f", VALUE)
+live.wait(timeout=60)
+messages = live.stderr.read()
+print(messages, end="")
+check(live.returncode == 0, "tactus live exits 0")
+refusals = [line for line in messages.splitlines() if line.startswith("tactus: osc ")]
+check(len(refusals) == 4, f"four refused messages, one line each ({len(refusals)})")
+recorder.terminate()
+recorder.wait(timeout=30)
+listener.terminate()
+heard = listener.communicate(timeout=30)[0].splitlines()
+
+recording = soundfile.read(recording_path, dtype="float32")[0]
+nz = np.flatnonzero(recording)
+check(len(nz) > 0, "the actuator output was recorded")
+# The stream's start: the render's first non-zero sample.
+start = int(nz[0]) - int(np.flatnonzero(before)[0])
+live_out = recording[start:start + n]
+check(len(live_out) == n, "the recording holds the whole file")
+tolerance = 1e-5
+differs_before = np.flatnonzero(np.abs(live_out - before) > tolerance)
+differs_after = np.flatnonzero(np.abs(live_out - after) > tolerance)
+change_at = int(differs_before[0]) if len(differs_before) else n
+settled_at = int(differs_after[-1]) + 1 if len(differs_after) else 0
+print(f"the output leaves the plain render at {change_at / RATE_HZ:.3f} s and equals the "
+      f"--set render from {settled_at / RATE_HZ:.3f} s on (the file: {n / RATE_HZ:.2f} s)")
+check(change_at > 0.25 * RATE_HZ, "up to the message, the output is the render without --set")
+check(settled_at - change_at < 1.0 * RATE_HZ,
+      "within 1 s (the glide and the limiter's release) it equals the render with --set")
+check(n - settled_at > 1.0 * RATE_HZ, "and stays equal to the end of the file")
+
+# ---- what the listener heard ----
+features = [line.split() for line in heard if line.startswith("/tactus/features ")]
+vibration = [line.split() for line in heard if line.startswith("/tactus/vibration ")]
+onsets = [line.split() for line in heard if line.startswith("/tactus/onset ")]
+played_s = n / RATE_HZ
+print(f"listener: {len(features)} features, {len(vibration)} vibration, {len(onsets)} onsets")
+check(len(features) >= 0.8 * OSC_RATE_HZ * played_s, "features arrive at --osc-rate")
+check(len(features) <= 1.2 * OSC_RATE_HZ * (played_s + 1), "and no faster")
+check(all(len(f) == 5 for f in features), "loudness_db brightness_hz noisiness pitch_hz")
+loudness = np.array([float(f[1]) for f in features])
+check(np.max(loudness) > -30 and np.min(loudness) < np.max(loudness) - 3,
+      "the loudness follows the drums")
+check(len(vibration) == len(features) and all(len(v) == 3 for v in vibration),
+      "vibration frequency_hz amplitude with each")
+check(len(onsets) >= 10 and all(len(o) == 2 for o in onsets), "onsets with their strength")
