@@ -37,7 +37,8 @@ def render(name, *extra):
     path = os.path.join(d, name + ".wav")
     r = jack.run([tactus, "render", AMEN, "-o", path, *extra])
     check(r.returncode == 0, f"tactus render {' '.join(extra)} exits 0")
-    return soundfile.read(path, dtype="float32")[0]
+    # The file's length: the player stops with it (the render rings the tail out after it).
+    return soundfile.read(path, dtype="float32")[0][:soundfile.info(AMEN).frames]
 
 
 before = render("before")
