@@ -1,44 +1,30 @@
-// Real-time safety of tactus~ inside a real Pd. Loaded twice into pd: preloaded (LD_PRELOAD), it
-// replaces the allocator and pthread_mutex_lock and counts their calls made while the guard is
-// on; as the external [perform_guard~ on|off] (the same file, found on Pd's path), it passes its
-// signal through and turns the guard on or off in the DSP chain. The test patch wraps tactus~
-// between the two (render_through.pd), so the counts are what tactus~'s perform routine did. At
-// exit it prints "perform-guard: performs=N allocations=A locks=L" on stderr.
-#include <dlfcn.h>
+// Real-time safety of tactus~ inside a real Pd. Loaded twice into pd: preloaded (LD_PRELOAD), its
+// support/allocation_counter.cpp replaces the allocator and pthread_mutex_lock and counts their
+// calls made while the guard is on; as the external [perform_guard~ on|off] (the same file, found
+// on Pd's path), it passes its signal through and turns the guard on or off in the DSP chain.
+// The test patch wraps tactus~ between the two (render_through.pd), so the counts are what
+// tactus~'s perform routine did. At exit it prints "perform-guard: performs=N allocations=A
+// locks=L" on stderr.
 #include <m_pd.h>
-#include <pthread.h>
 
 #include <algorithm>
 #include <atomic>
-#include <cerrno>
 #include <cstdio>
 #include <cstring>
 
-extern "C" {
-void* __libc_malloc(size_t size);
-void* __libc_calloc(size_t count, size_t size);
-void* __libc_realloc(void* pointer, size_t size);
-void __libc_free(void* pointer);
-void* __libc_memalign(size_t alignment, size_t size);
-}
+#include "support/allocation_counter.hpp"
 
 namespace {
 
-constinit thread_local bool t_guarded = false;
-std::atomic<long> g_performs{0}, g_allocations{0}, g_locks{0};
-int (*g_real_lock)(pthread_mutex_t*) = nullptr;
+using tactus::test::g_allocator_calls;
+using tactus::test::g_mutex_locks;
+using tactus::test::t_guarded;
 
-void note(std::atomic<long>& counter) {
-    if (t_guarded) counter.fetch_add(1, std::memory_order_relaxed);
-}
-
-__attribute__((constructor)) void find_real_lock() {
-    g_real_lock = reinterpret_cast<int (*)(pthread_mutex_t*)>(dlsym(RTLD_NEXT, "pthread_mutex_lock"));
-}
+std::atomic<long> g_performs{0};
 
 __attribute__((destructor)) void report() {
     std::fprintf(stderr, "perform-guard: performs=%ld allocations=%ld locks=%ld\n",
-                 g_performs.load(), g_allocations.load(), g_locks.load());
+                 g_performs.load(), g_allocator_calls.load(), g_mutex_locks.load());
 }
 
 // [perform_guard~ on|off]
@@ -63,36 +49,6 @@ t_int* perform(t_int* w) {
 }  // namespace
 
 extern "C" {
-
-void* malloc(size_t size) {
-    note(g_allocations);
-    return __libc_malloc(size);
-}
-void* calloc(size_t count, size_t size) {
-    note(g_allocations);
-    return __libc_calloc(count, size);
-}
-void* realloc(void* pointer, size_t size) {
-    note(g_allocations);
-    return __libc_realloc(pointer, size);
-}
-void free(void* pointer) {
-    note(g_allocations);
-    __libc_free(pointer);
-}
-void* memalign(size_t alignment, size_t size) {
-    note(g_allocations);
-    return __libc_memalign(alignment, size);
-}
-void* aligned_alloc(size_t alignment, size_t size) { return memalign(alignment, size); }
-int posix_memalign(void** out, size_t alignment, size_t size) {
-    *out = memalign(alignment, size);
-    return *out ? 0 : ENOMEM;
-}
-int pthread_mutex_lock(pthread_mutex_t* mutex) {
-    note(g_locks);
-    return g_real_lock(mutex);
-}
 
 void perform_guard_tilde_setup() {
     guard_class = class_new(
