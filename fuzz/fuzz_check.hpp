@@ -26,4 +26,13 @@ inline void check_in_range(const Settings& settings) {
     }
 }
 
+// The same bits in every parameter (-0.0 is not 0.0): a round trip loses nothing.
+inline bool same_bits(const Settings& a, const Settings& b) {
+    for (int i = 0; i < static_cast<int>(P::count); ++i) {
+        const double x = a[static_cast<P>(i)], y = b[static_cast<P>(i)];
+        if (std::memcmp(&x, &y, sizeof x) != 0) return false;
+    }
+    return true;
+}
+
 }  // namespace tactus::fuzz

@@ -11,29 +11,18 @@
 #include "fuzz_check.hpp"
 #include "plugin_state.hpp"
 
-namespace {
-
-bool same(const tactus::Settings& a, const tactus::Settings& b) {
-    for (const tactus::ParamSpec& s : tactus::param_table()) {
-        const double x = a[s.param], y = b[s.param];
-        if (std::memcmp(&x, &y, sizeof x) != 0) return false;
-    }
-    return true;
-}
-
-}  // namespace
-
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::string_view text(reinterpret_cast<const char*>(data), size);
     const tactus::plugin::RestoredState restored = tactus::plugin::restore_state(text);
     if (!restored.error.empty()) {
         tactus::fuzz::check_message(restored.error.c_str());
-        if (!same(restored.settings, tactus::Settings{})) std::abort();
+        if (!tactus::fuzz::same_bits(restored.settings, tactus::Settings{})) std::abort();
         return 0;
     }
     tactus::fuzz::check_in_range(restored.settings);
     const tactus::plugin::RestoredState again =
         tactus::plugin::restore_state(tactus::plugin::state_text(restored.settings));
-    if (!again.error.empty() || !same(again.settings, restored.settings)) std::abort();
+    if (!again.error.empty() || !tactus::fuzz::same_bits(again.settings, restored.settings))
+        std::abort();
     return 0;
 }

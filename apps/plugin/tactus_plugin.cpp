@@ -56,9 +56,8 @@ class TactusPlugin : public Plugin {
                 program.settings = tactus::Settings{};
             }
         }
-        std::stable_partition(programs_.begin(), programs_.end(), [](const Program& p) {
-            return tp::state_text(p.settings) == tp::state_text(tactus::Settings{});
-        });
+        std::stable_partition(programs_.begin(), programs_.end(),
+                              [](const Program& p) { return p.settings == tactus::Settings{}; });
         engine_.set_actuators(std::vector<tactus::ActuatorOutput>(kActuators));
         if (!isDummyInstance())
             control_ = std::make_unique<tp::ControlThread>([this] { take_changes(); });
@@ -245,9 +244,6 @@ class TactusPlugin : public Plugin {
     }
     void apply_changes() {  // engine_mutex_ held
         host_.take_changes([this](tactus::P id, double value) {
-            // A restored state or a program sets every parameter: only the ones that differ
-            // reach the engine (a structural one builds a pipeline even for the same value).
-            if (engine_.settings()[id] == value) return;
             try {
                 engine_.set(id, value);
             } catch (const std::exception& e) {

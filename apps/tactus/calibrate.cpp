@@ -18,12 +18,12 @@
 #include "tactus/actuator/calibration.hpp"
 #include "tactus/core/units.hpp"
 #include "tactus/io/actuator_file.hpp"
-#include "tactus/io/temporary_path.hpp"
+#include "tactus/io/text_output.hpp"
 
 namespace tactus::cli {
 namespace {
 
-constexpr double kTailS = 1.0;  // recorded after the sweep: the device delay and the decay
+constexpr double kTailS = 1.0;          // recorded after the sweep: the device delay and the decay
 constexpr double kTimeoutMarginS = 30;  // a busy machine, a slow server
 
 struct CalibrateOptions {
@@ -102,17 +102,9 @@ void calibrate(const CalibrateOptions& o) {
                              "the points are\nthe response relative to reference_hz{}.",
                              base ? fmt::format("; other values from {}", o.base) : ""));
     parse_actuator(text, o.profile_out);  // what --actuator will read
-    const std::filesystem::path temporary = temporary_path_for(o.profile_out);
-    track_temporary(temporary);
-    {
-        std::ofstream file(temporary);
-        file << text;
-        if (!file.flush()) {
-            discard_temporary(temporary);
-            throw std::runtime_error(fmt::format("{}: cannot write", o.profile_out));
-        }
-    }
-    commit_temporary(temporary, o.profile_out);
+    TextOutput output(o.profile_out);
+    output.stream() << text;
+    output.commit();
     std::cerr << fmt::format("tactus: {}: peak at {:g} Hz, band {:g}-{:g} Hz, {} points\n",
                              o.profile_out, profile.reference_hz, profile.band_low_hz,
                              profile.band_high_hz, profile.points.size());

@@ -180,9 +180,7 @@ void live_run(const LiveOptions& o) {
     std::optional<live::OscSender> sender;
     if (osc_out) sender.emplace(*osc_out);
     live::FrameMonitor monitor(engine, sender ? &*sender : nullptr, o.osc_rate_hz);
-    std::optional<live::PresetWatcher> watcher;
-    const std::filesystem::path preset_path = resolve_preset(o.pipeline.preset);
-    watcher.emplace(preset_path, control, report);
+    live::PresetWatcher watcher(resolve_preset(o.pipeline.preset), control, report);
 
     std::signal(SIGINT, request_stop);
     std::signal(SIGTERM, request_stop);
@@ -228,9 +226,10 @@ void live_run(const LiveOptions& o) {
         if (!lost && stream->lost()) {
             lost = true;
             std::cerr << (terminal ? "\n" : "")
-                      << fmt::format("tactus: the audio device stopped after {:.2f} s of audio; "
-                                     "retrying every second until it returns (Ctrl-C stops)\n",
-                                     callback.frames() / rate_hz);
+                      << fmt::format(
+                             "tactus: the audio device stopped after {:.2f} s of audio; "
+                             "retrying every second until it returns (Ctrl-C stops)\n",
+                             callback.frames() / rate_hz);
         }
         if (lost && now >= next_retry) {
             next_retry = now + kRetryPeriod;
@@ -244,7 +243,6 @@ void live_run(const LiveOptions& o) {
                 std::cerr << "tactus: the audio device is back\n";
             } catch (const std::exception&) {
                 stream.reset();
-                stream = nullptr;
             }
         }
         if (lost && !stream) continue;

@@ -76,7 +76,7 @@ void LiveControl::run(const OscCommand& command) {
         frequency_hz = now[P::frequency_out_max];
         amplitude = now[P::amplitude_out_max];
     }
-    engine_.trigger(frequency_hz, amplitude);
+    retry_while_full([&] { engine_.trigger(frequency_hz, amplitude); });
 }
 
 Settings LiveControl::settings() const {

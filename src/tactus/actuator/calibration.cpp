@@ -7,6 +7,7 @@
 #include <complex>
 #include <stdexcept>
 
+#include "tactus/core/units.hpp"
 #include "tactus/dsp/real_fft.hpp"
 
 namespace tactus {
@@ -17,22 +18,6 @@ constexpr double kPostWindowS = 0.5;  // and after it: a Q 20 resonance at 20 Hz
 constexpr double kSmoothingOctaves = 1.0 / 48;
 constexpr double kEdgeOctaves = 1.0 / 3;  // left out at each end of the sweep
 constexpr double kRegularisation = 1e-6;  // of the sweep's largest power, outside its band
-
-int power_of_two_at_least(size_t n) {
-    int size = 1;
-    while (static_cast<size_t>(size) < n) size *= 2;
-    return size;
-}
-
-double interpolate_db(const std::vector<std::pair<double, double>>& points, double f) {
-    const auto above = std::lower_bound(points.begin(), points.end(), f,
-                                        [](const auto& p, double x) { return p.first < x; });
-    if (above == points.begin()) return points.front().second;
-    if (above == points.end()) return points.back().second;
-    const auto below = above - 1;
-    const double t = std::log(f / below->first) / std::log(above->first / below->first);
-    return below->second + t * (above->second - below->second);
-}
 
 }  // namespace
 
@@ -66,7 +51,7 @@ std::vector<std::pair<double, double>> measure_response(std::span<const float> s
                                                         const SweepSpec& s, int points_per_octave) {
     // Deconvolution: H = Y X* / (|X|^2 + e); the linear impulse response at the delay, the
     // distortion products before it (wrapped to the end of the circular result).
-    const int size = power_of_two_at_least(sweep.size() + recorded.size());
+    const int size = next_power_of_two(static_cast<int64_t>(sweep.size() + recorded.size()));
     RealFft fft;
     fft.prepare(size);
     std::fill(fft.time(), fft.time() + size, 0.0f);
@@ -95,7 +80,7 @@ std::vector<std::pair<double, double>> measure_response(std::span<const float> s
     // The linear response: from kPreWindowS before the peak, kPostWindowS after, the end faded.
     const auto pre = static_cast<size_t>(kPreWindowS * s.sample_rate_hz);
     const auto post = static_cast<size_t>(kPostWindowS * s.sample_rate_hz);
-    const int window_size = power_of_two_at_least(4 * (pre + post));
+    const int window_size = next_power_of_two(static_cast<int64_t>(4 * (pre + post)));
     RealFft response;
     response.prepare(window_size);
     std::fill(response.time(), response.time() + window_size, 0.0f);

@@ -6,7 +6,6 @@
 #include "tactus/core/units.hpp"
 
 namespace tactus {
-namespace {
 
 double interpolate_db(const std::vector<std::pair<double, double>>& points, double f) {
     if (points.empty()) return 0.0;
@@ -18,8 +17,6 @@ double interpolate_db(const std::vector<std::pair<double, double>>& points, doub
     const double t = std::log(f / below->first) / std::log(above->first / below->first);
     return below->second + t * (above->second - below->second);
 }
-
-}  // namespace
 
 std::string_view type_name(ActuatorType type) {
     return kActuatorTypeNames[static_cast<int>(type)];

@@ -57,4 +57,8 @@ std::string_view type_name(ActuatorType type);
 
 constexpr std::string_view kDefaultActuator = "voice-coil";
 
+// A table of (frequency Hz, dB) points, ascending, read at `f_hz`: linear in dB on a log-frequency
+// axis between points, the end values beyond them, 0 dB for no points.
+double interpolate_db(const std::vector<std::pair<double, double>>& points, double f_hz);
+
 }  // namespace tactus

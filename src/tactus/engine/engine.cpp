@@ -147,6 +147,9 @@ void Engine::set(P id, double value) {
     const std::lock_guard lock(control_);
     Settings next = settings_;
     next.set(id, value);  // throws std::invalid_argument naming the key
+    // A value it already has changes nothing (a restored state or a program sets every
+    // parameter: a structural one would otherwise build a pipeline for nothing).
+    if (next[id] == settings_[id]) return;
     if (prepared_) {
         free_retired();
         if (tactus::spec(id).change == ParamChange::structural ||

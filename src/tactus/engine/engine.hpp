@@ -108,7 +108,8 @@ class Engine {
 
     // ---- control threads ----
     // Validates (std::invalid_argument naming the key) and applies: before prepare to the
-    // settings; after, through the audio thread (live: gliding; structural: swapped in).
+    // settings; after, through the audio thread (live: gliding; structural: swapped in). A value
+    // it already has changes nothing.
     void set(P id, double value);
     void set_actuator_gain_db(int actuator, double gain_db);
     // The vibration program from outside: applied at the audio thread's next block.

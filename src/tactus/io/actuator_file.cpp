@@ -7,12 +7,16 @@
 #include <fstream>
 #include <iterator>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 
 #include "tactus/core/printable.hpp"
 #include "tactus/io/search_path.hpp"
 
 namespace tactus {
+
+// [response] kind, in the order of ResonanceKind.
+constexpr std::string_view kResonanceKinds[] = {"none", "low-pass", "band-pass"};
 namespace fs = std::filesystem;
 namespace {
 
@@ -119,8 +123,7 @@ ActuatorProfile parse_actuator(std::string_view toml_text, std::string_view orig
     if (const toml::node* node = top.get("response")) {
         if (!node->is_table()) top.fail(node, "response", "must be a table [response]");
         Reader response(*node->as_table(), origin, "response.");
-        constexpr std::string_view kKinds[] = {"none", "low-pass", "band-pass"};
-        a.resonance = static_cast<ResonanceKind>(response.choice("kind", kKinds, 0));
+        a.resonance = static_cast<ResonanceKind>(response.choice("kind", kResonanceKinds, 0));
         if (a.resonance != ResonanceKind::none) {
             a.resonance_hz = response.number("resonance_hz", 0.1, 20000, 0, true);
             a.q = response.number("q", 0.1, 100, 1);
@@ -166,17 +169,10 @@ ActuatorProfile load_actuator(const fs::path& path) {
 }
 
 std::string actuator_text(const ActuatorProfile& a, std::string_view comment) {
-    const auto quoted = [](std::string_view text) {
-        std::string out = "\"";
-        for (const char c : text) {
-            if (c == '"' || c == '\\') out += '\\';
-            if (static_cast<unsigned char>(c) < 0x20) {
-                out += fmt::format("\\u{:04x}", static_cast<unsigned char>(c));
-                continue;
-            }
-            out += c;
-        }
-        return out + '"';
+    const auto quoted = [](std::string_view text) {  // as toml++ writes a string
+        std::ostringstream out;
+        out << toml::value<std::string>(std::string(text));
+        return out.str();
     };
     std::string t;
     std::string_view rest = comment;
@@ -193,8 +189,8 @@ std::string actuator_text(const ActuatorProfile& a, std::string_view comment) {
         "band_low_hz = {}\nband_high_hz = {}\nrolloff_db_per_octave = {}\n"
         "rise_ms = {}\n",
         a.band_low_hz, a.band_high_hz, a.rolloff_db_per_octave, a.rise_ms);
-    constexpr std::string_view kKinds[] = {"none", "low-pass", "band-pass"};
-    t += fmt::format("\n[response]\nkind = \"{}\"\n", kKinds[static_cast<int>(a.resonance)]);
+    t += fmt::format("\n[response]\nkind = \"{}\"\n",
+                     kResonanceKinds[static_cast<int>(a.resonance)]);
     if (a.resonance != ResonanceKind::none)
         t += fmt::format("resonance_hz = {}\nq = {}\n", a.resonance_hz, a.q);
     if (!a.points.empty()) {

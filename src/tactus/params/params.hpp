@@ -131,6 +131,7 @@ class Settings {
     // Parses "value" for a key: a number for numeric parameters, a name for choices.
     void set_from_text(P id, std::string_view text);
     std::string text_of(P id) const;
+    bool operator==(const Settings&) const = default;
 
   private:
     std::array<double, static_cast<int>(P::count)> values_{};
