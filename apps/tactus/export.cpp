@@ -5,6 +5,8 @@
 // every output (src/tactus/export).
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <deque>
 #include <iostream>
 #include <map>
 #include <optional>
@@ -51,6 +53,12 @@ void export_files(const ExportOptions& o) {
                 "{}: unknown export format (name it .ahap, .haptic, .android.json or .ogg)",
                 output));
         check_output(o.input, output, o.force);
+        if (std::find(o.outputs.begin(), o.outputs.end(), output) !=
+            o.outputs.begin() + static_cast<std::ptrdiff_t>(formats.size()))
+            throw std::runtime_error(fmt::format("{}: named twice", output));
+        if (format == ".ogg" && ogg_path)
+            throw std::runtime_error(fmt::format(
+                "{}: an export writes one .ogg ({} is one already)", output, *ogg_path));
         if (format == ".ogg") ogg_path = output;
         formats.push_back(format);
     }
@@ -63,8 +71,12 @@ void export_files(const ExportOptions& o) {
     Engine engine(settings);
     engine.set_actuators(std::vector<ActuatorOutput>(static_cast<size_t>(o.channels),
                                                      ActuatorOutput{.profile = actuator}));
+    const RenderInfo info{.source = std::filesystem::path(o.input).filename().string(),
+                          .preset = o.pipeline.preset,
+                          .changes = o.pipeline.assignments,
+                          .actuator = actuator ? actuator->name : std::string(),
+                          .version = TACTUS_VERSION};
     std::optional<VorbisWriter> ogg;
-    double sample_rate_hz = 0;
     std::vector<const float*> channels;
     AlignedSink sink;
     if (ogg_path)
@@ -74,35 +86,34 @@ void export_files(const ExportOptions& o) {
                 ogg.emplace(*ogg_path, engine.sample_rate_hz(), audio_channels + actuators,
                             std::vector<std::pair<std::string, std::string>>{
                                 {"ANDROID_HAPTIC", std::to_string(actuators)},
-                                {"ENCODER", "tactus " TACTUS_VERSION}});
+                                {"ENCODER", "tactus " TACTUS_VERSION},
+                                {"COMMENT", info.comment()}});
             channels.assign(audio, audio + audio_channels);
             channels.insert(channels.end(), vibration, vibration + actuators);
             ogg->write(channels.data(), frames);
         };
     Progress progress("export");
     HapticTrack track = render_haptic_track(o.input, engine, sink, with_progress(progress));
-    sample_rate_hz = engine.sample_rate_hz();
-    track.info = {.source = std::filesystem::path(o.input).filename().string(),
-                  .preset = o.pipeline.preset,
-                  .changes = o.pipeline.assignments,
-                  .actuator = actuator ? actuator->name : std::string(),
-                  .version = TACTUS_VERSION};
+    track.info = info;
+    if (ogg_path && !ogg)
+        throw std::runtime_error(fmt::format("{}: the input gave no audio to write", *ogg_path));
+    // Every output is written before any is committed: a failure leaves none of them.
+    std::deque<TextOutput> texts;
     for (size_t i = 0; i < o.outputs.size(); ++i) {
-        if (formats[i] == ".ogg") {
-            ogg->commit();
-        } else {
-            TextOutput out(o.outputs[i]);
-            out.stream() << (formats[i] == ".ahap"     ? ahap_text(track)
-                             : formats[i] == ".haptic" ? meta_haptic_text(track)
-                                                       : android_waveform_text(track));
-            out.commit();
-        }
-        note(fmt::format(
-            "{}: {:.3f} s, {} onsets{}", o.outputs[i], track.duration_s(), track.onsets.size(),
-            formats[i] == ".ogg"
-                ? fmt::format(", {:g} Hz, {} haptic channel(s)", sample_rate_hz, o.channels)
-                : std::string()));
+        if (formats[i] == ".ogg") continue;
+        texts.emplace_back(o.outputs[i]).stream()
+            << (formats[i] == ".ahap"     ? ahap_text(track)
+                : formats[i] == ".haptic" ? meta_haptic_text(track)
+                                          : android_waveform_text(track));
     }
+    if (ogg) ogg->commit();
+    for (TextOutput& text : texts) text.commit();
+    for (size_t i = 0; i < o.outputs.size(); ++i)
+        note(fmt::format("{}: {:.3f} s, {} onsets{}", o.outputs[i], track.duration_s(),
+                         track.onsets.size(),
+                         formats[i] == ".ogg" ? fmt::format(", {:g} Hz, {} haptic channel(s)",
+                                                            engine.sample_rate_hz(), o.channels)
+                                              : std::string()));
 }
 
 }  // namespace

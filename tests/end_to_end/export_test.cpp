@@ -348,4 +348,19 @@ TEST_F(Cli, ExportRefusesAnUnknownFormatBeforeReadingAudio) {
     EXPECT_TRUE(fs::is_empty(dir_ / "") || !fs::exists(dir_ / "x.wav"));
 }
 
+// One render feeds one .ogg and each output once: a second .ogg or a repeated name is refused
+// before any audio is read, and nothing is written.
+TEST_F(Cli, ExportRefusesASecondOggAndARepeatedOutput) {
+    const std::string input = kSounds[0].path;
+    const fs::path a = dir_ / "a.ogg", b = dir_ / "b.ogg", c = dir_ / "c.ahap";
+    auto r = run("export " + input + " -o " + a.string() + " -o " + b.string());
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.err.find("b.ogg: an export writes one .ogg"), std::string::npos) << r.err;
+    r = run("export " + input + " -o " + c.string() + " -o " + c.string());
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.err.find("c.ahap: named twice"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(a) || fs::exists(b) || fs::exists(c));
+    expect_no_temporaries();
+}
+
 }  // namespace
