@@ -87,11 +87,7 @@ void analyze(const AnalyzeOptions& o) {
     engine.set_actuator(actuator);
     const ActuatorProfile metered =
         actuator ? *actuator : load_actuator(resolve_actuator(kDefaultActuator));
-    const RenderInfo how{.source = std::filesystem::path(o.input).filename().string(),
-                         .preset = o.pipeline.preset,
-                         .changes = o.pipeline.assignments,
-                         .actuator = metered.name,
-                         .version = TACTUS_VERSION};
+    const RenderInfo how = o.pipeline.render_info(o.input, metered.name);
     TextOutput output(out_path);
     RowWriter writer(output.stream(), format == "json", how);
     AnalysisRows rows(engine, metered, [&](const AnalysisRows::Row& row) { writer.write(row); });

@@ -71,11 +71,8 @@ void export_files(const ExportOptions& o) {
     Engine engine(settings);
     engine.set_actuators(std::vector<ActuatorOutput>(static_cast<size_t>(o.channels),
                                                      ActuatorOutput{.profile = actuator}));
-    const RenderInfo info{.source = std::filesystem::path(o.input).filename().string(),
-                          .preset = o.pipeline.preset,
-                          .changes = o.pipeline.assignments,
-                          .actuator = actuator ? actuator->name : std::string(),
-                          .version = TACTUS_VERSION};
+    const RenderInfo info =
+        o.pipeline.render_info(o.input, actuator ? actuator->name : std::string());
     std::optional<VorbisWriter> ogg;
     std::vector<const float*> channels;
     AlignedSink sink;

@@ -1,5 +1,7 @@
 #include "pipeline_options.hpp"
 
+#include <filesystem>
+
 #include "tactus/io/preset.hpp"
 
 namespace tactus::cli {
@@ -16,6 +18,15 @@ Settings PipelineOptions::resolve() const {
     apply_preset_file(settings, resolve_preset(preset));
     for (const auto& a : assignments) apply_assignment(settings, a);
     return settings;
+}
+
+RenderInfo PipelineOptions::render_info(const std::string& input,
+                                        const std::string& actuator) const {
+    return {.source = std::filesystem::path(input).filename().string(),
+            .preset = preset,
+            .changes = assignments,
+            .actuator = actuator,
+            .version = TACTUS_VERSION};
 }
 
 }  // namespace tactus::cli

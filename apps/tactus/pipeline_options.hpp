@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "tactus/io/render_info.hpp"
 #include "tactus/params/params.hpp"
 
 namespace tactus::cli {
@@ -16,6 +17,8 @@ struct PipelineOptions {
 
     void add_to(CLI::App& command);
     Settings resolve() const;  // throws with a one-line message
+    // How an output of `input` was made with these options, for its metadata.
+    RenderInfo render_info(const std::string& input, const std::string& actuator) const;
 };
 
 }  // namespace tactus::cli

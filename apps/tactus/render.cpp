@@ -124,11 +124,7 @@ void render(const RenderOptions& o) {
     const std::vector<Job> jobs = plan(o);
     std::optional<ActuatorProfile> actuator;
     if (!o.actuator.empty()) actuator = load_actuator_for(o.actuator, settings);
-    const RenderInfo how{.source = {},
-                         .preset = o.pipeline.preset,
-                         .changes = o.pipeline.assignments,
-                         .actuator = actuator ? actuator->name : std::string(),
-                         .version = TACTUS_VERSION};
+    const RenderInfo how = o.pipeline.render_info({}, actuator ? actuator->name : std::string());
     for (const Job& job : jobs)
         if (std::error_code error; job.output.has_parent_path() &&
                                    !fs::is_directory(job.output.parent_path()) &&
