@@ -16,12 +16,6 @@ std::optional<P> param_at(uint32_t index) {
     return find_param(index);
 }
 
-std::string symbol_of(const ParamSpec& spec) {
-    std::string symbol(spec.key);
-    std::replace(symbol.begin(), symbol.end(), '.', '_');
-    return symbol;
-}
-
 double from_host(const ParamSpec& spec, float value) noexcept {
     double v = std::isfinite(value) ? static_cast<double>(value) : spec.default_value;
     if (spec.type != ParamType::real) v = std::round(v);

@@ -20,8 +20,6 @@ inline constexpr uint32_t kBypassIndex = 0;
 uint32_t parameter_count();
 // The table row behind a host parameter; none for the bypass or a retired id.
 std::optional<P> param_at(uint32_t index);
-// "mapping.frequency.out_max" -> "mapping_frequency_out_max" (an LV2 symbol).
-std::string symbol_of(const ParamSpec& spec);
 // A host's value as the table takes it: clamped to the range, whole numbers for integer,
 // toggle and choice rows. Any thread, never allocates.
 double from_host(const ParamSpec& spec, float value) noexcept;

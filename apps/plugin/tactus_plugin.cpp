@@ -115,7 +115,7 @@ class TactusPlugin : public Plugin {
         if (s.curve == tactus::ParamCurve::log && s.min > 0)
             parameter.hints |= kParameterIsLogarithmic;
         parameter.name = String(std::string(s.key).c_str());
-        parameter.symbol = String(tp::symbol_of(s).c_str());
+        parameter.symbol = String(tactus::identifier_of(s).c_str());
         parameter.unit = String(std::string(s.unit).c_str());
         parameter.description = String(std::string(s.help).c_str());
         parameter.ranges = ParameterRanges(static_cast<float>(s.default_value),

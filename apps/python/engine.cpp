@@ -201,7 +201,7 @@ attribute named by its key with dots as underscores (engine.envelope_decay_ms).)
     for (const ParamSpec& s : param_table()) {
         const P id = s.param;
         engine.def_property(
-            python_name(s).c_str(), [id](const PyEngine& e) { return e.get(id); },
+            identifier_of(s).c_str(), [id](const PyEngine& e) { return e.get(id); },
             [id](PyEngine& e, const py::handle& value) { e.set_param(id, value); },
             param_doc(s).c_str());
     }

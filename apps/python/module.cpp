@@ -26,7 +26,7 @@ py::list params() {
     for (const ParamSpec& s : param_table()) {
         py::dict d;
         d["key"] = std::string(s.key);
-        d["name"] = python_name(s);
+        d["name"] = identifier_of(s);
         d["id"] = s.id;
         d["type"] = std::string(kParamTypeNames[static_cast<int>(s.type)]);
         d["unit"] = std::string(s.unit);

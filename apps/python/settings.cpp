@@ -12,19 +12,12 @@ namespace py = pybind11;
 
 namespace tactus::python {
 
-std::string python_name(const ParamSpec& spec) {
-    std::string name(spec.key);
-    for (char& c : name)
-        if (c == '.') c = '_';
-    return name;
-}
-
 P param_named(const std::string& name) {
     if (const auto id = find_param(name)) return *id;
     for (const ParamSpec& s : param_table())
-        if (python_name(s) == name) return s.param;
+        if (identifier_of(s) == name) return s.param;
     std::string nearest = nearest_param(name);
-    if (name.find('.') == std::string::npos) nearest = python_name(spec(*find_param(nearest)));
+    if (name.find('.') == std::string::npos) nearest = identifier_of(spec(*find_param(nearest)));
     throw py::value_error(fmt::format("unknown key '{}' (did you mean '{}'?)", name, nearest));
 }
 

@@ -14,8 +14,6 @@
 
 namespace tactus::python {
 
-// "envelope.decay_ms" -> "envelope_decay_ms".
-std::string python_name(const ParamSpec& spec);
 // A key or Python name; ValueError "unknown key 'x' (did you mean 'y'?)".
 P param_named(const std::string& name);
 // The value a Python object stands for: a number, or a choice's name ("log", "on").

@@ -44,13 +44,6 @@ Column column(std::string_view name) {
     return static_cast<Column>(std::find(columns.begin(), columns.end(), name) - columns.begin());
 }
 
-// The Vamp identifier of a parameter: its key with dots as underscores.
-std::string identifier_of(const ParamSpec& s) {
-    std::string id(s.key);
-    std::replace(id.begin(), id.end(), '.', '_');
-    return id;
-}
-
 const ParamSpec* spec_named(const std::string& identifier) {
     for (const ParamSpec& s : param_table())
         if (identifier_of(s) == identifier) return &s;

@@ -31,7 +31,7 @@ TEST(PluginParams, HostIndexIsTheStableId) {
     for (const ParamSpec& s : param_table()) {
         largest = std::max(largest, s.id);
         ASSERT_EQ(param_at(s.id), s.param) << s.key;
-        const std::string symbol = symbol_of(s);
+        const std::string symbol = identifier_of(s);
         EXPECT_TRUE(symbols.insert(symbol).second) << symbol << " twice";
         EXPECT_TRUE(std::isalpha(static_cast<unsigned char>(symbol[0]))) << symbol;
         for (char c : symbol)

@@ -248,6 +248,12 @@ std::string nearest_param(std::string_view key) {
     return std::string(best);
 }
 
+std::string identifier_of(const ParamSpec& spec) {
+    std::string identifier(spec.key);
+    std::replace(identifier.begin(), identifier.end(), '.', '_');
+    return identifier;
+}
+
 std::string range_text(const ParamSpec& s) {
     return fmt::format("{} to {}{}{}", s.min, s.max, s.unit.empty() ? "" : " ", s.unit);
 }

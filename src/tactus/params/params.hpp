@@ -33,7 +33,7 @@ struct ParamSpec {
     double default_value;
     ParamCurve curve;
     ParamChange change;
-    double smoothing_ms;    // live: the time a change glides over (0: at once)
+    double smoothing_ms;  // live: the time a change glides over (0: at once)
     std::string_view help;
     std::span<const std::string_view> choices = {};  // toggle, choice: the value is the index
 };
@@ -115,6 +115,10 @@ std::optional<P> find_param(std::string_view key);
 std::optional<P> find_param(uint32_t stable_id);
 // The known key closest to `key` (edit distance), for "did you mean" messages.
 std::string nearest_param(std::string_view key);
+
+// The key with '_' for '.' ("envelope_decay_ms"): the name where dots are not allowed (LV2
+// symbols, Vamp identifiers, Python attributes).
+std::string identifier_of(const ParamSpec& spec);
 
 // "5 to 5000 ms": a parameter's allowed range and unit, for messages.
 std::string range_text(const ParamSpec& spec);
