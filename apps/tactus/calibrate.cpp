@@ -131,7 +131,7 @@ void add_calibrate(CLI::App& app) {
         ->check(CLI::Range(-60.0, 0.0))
         ->capture_default_str();
     command->add_option("--block", o->block, "frames per device block")
-        ->check(CLI::Range(16, 4096))
+        ->check(CLI::Range(16, Engine::kMaxBlock))
         ->capture_default_str();
     add_force_option(*command, o->force);
     command->callback([o] { calibrate(*o); });

@@ -70,6 +70,10 @@ class LiveCallback final : public AudioCallback {
     std::vector<float*> out_pointers_;
     std::vector<std::vector<float>> delay_;  // --sync: per player channel, a ring
     int delay_at_ = 0;
+    // Written by the audio thread: lock-free, or the callback would take a lock.
+    static_assert(std::atomic<float>::is_always_lock_free &&
+                  std::atomic<double>::is_always_lock_free &&
+                  std::atomic<int64_t>::is_always_lock_free);
     std::atomic<float> input_peak_{0}, output_peak_{0};
     std::atomic<double> load_{0};
     std::atomic<int64_t> xruns_{0}, frames_{0};
