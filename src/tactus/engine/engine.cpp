@@ -228,12 +228,16 @@ void Engine::inject(const ControlFrame& frame) {
         throw std::runtime_error("engine: too many control frames waiting for the audio thread");
 }
 
-void Engine::trigger(double frequency_hz, double amplitude) {
+void Engine::check_trigger(double frequency_hz, double amplitude) {
     const double highest_hz = tactus::spec(P::frequency_out_max).max;
     if (!(frequency_hz > 0 && frequency_hz <= highest_hz) || !(amplitude >= 0 && amplitude <= 1))
         throw std::invalid_argument(
             fmt::format("trigger {} Hz, amplitude {}: allowed 0-{} Hz and amplitude 0-1",
                         frequency_hz, amplitude, highest_hz));
+}
+
+void Engine::trigger(double frequency_hz, double amplitude) {
+    check_trigger(frequency_hz, amplitude);
     ControlFrame frame;
     {
         const std::lock_guard lock(control_);

@@ -116,6 +116,8 @@ class Engine {
     void inject(const ControlFrame& frame);
     // A pulse at `frequency_hz` and `amplitude` with the envelope of the current settings.
     void trigger(double frequency_hz, double amplitude);
+    // What trigger() accepts: throws std::invalid_argument naming the values (any thread).
+    static void check_trigger(double frequency_hz, double amplitude);
     void set_program_source(ProgramSource source);
     // One reader thread: the oldest frame not yet read, if any.
     bool pop_frame(AnalysisFrame& frame);
