@@ -358,6 +358,51 @@ TEST(EngineFrontEnd, StructuralChangesLoseNoOnsetAndLeaveNoGap) {
     }
 }
 
+// A preset or a restored state arrives as a whole (Engine::set(const Settings&)): its live
+// values act at the same block as one set() each, bit for bit, and its structural ones end in
+// the same vibration as one set() each once the new pipeline has taken over.
+TEST(EngineFrontEnd, SettingsAtOnceActAsEachValueInTurn) {
+    const double fs = 44100;
+    constexpr int kBlock = 128;
+    const auto drums = test::drum_pattern(fs, 5.0, 3);
+    const std::vector<float>& x = drums.audio;
+    const size_t change_at = static_cast<size_t>(2.0 * fs) / kBlock * kBlock;
+    const auto render = [&](const Settings& target, bool at_once) {
+        Engine engine;
+        engine.prepare(fs, kBlock);
+        std::vector<float> y(x.size());
+        for (size_t done = 0; done < x.size(); done += kBlock) {
+            if (done == change_at) {
+                if (at_once) {
+                    engine.set(target);
+                } else {
+                    for (const ParamSpec& s : param_table())
+                        if (target[s.param] != engine.settings()[s.param])
+                            engine.set(s.param, target[s.param]);
+                }
+                EXPECT_TRUE(engine.settings() == target);
+            }
+            const size_t n = std::min<size_t>(kBlock, x.size() - done);
+            engine.process(x.data() + done, y.data() + done, static_cast<int>(n));
+        }
+        return y;
+    };
+    Settings live;
+    live.set(P::envelope_decay_ms, 60);
+    live.set(P::frequency_out_max, 300);
+    live.set(P::post_flatten_strength, 0.5);
+    EXPECT_EQ(render(live, true), render(live, false));
+
+    Settings structural = live;
+    structural.set(P::onset_window_ms, 8);
+    structural.set(P::post_lookahead_ms, 3);
+    const std::vector<float> at_once = render(structural, true),
+                             in_turn = render(structural, false);
+    const auto settled = static_cast<std::ptrdiff_t>(change_at + 0.1 * fs);
+    ASSERT_GT(test::peak(std::span(in_turn).subspan(static_cast<size_t>(settled))), 0.05);
+    EXPECT_TRUE(std::equal(at_once.begin() + settled, at_once.end(), in_turn.begin() + settled));
+}
+
 // A structural change long after the start (more than the priming input) that keeps the hop:
 // the new pipeline's frames end where the running one's would, so the analysis goes on as if
 // nothing had changed (frames off that grid find other onsets on real drums).

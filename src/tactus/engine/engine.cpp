@@ -147,27 +147,49 @@ void Engine::set(P id, double value) {
     const std::lock_guard lock(control_);
     Settings next = settings_;
     next.set(id, value);  // throws std::invalid_argument naming the key
-    // A value it already has changes nothing (a restored state or a program sets every
-    // parameter: a structural one would otherwise build a pipeline for nothing).
-    if (next[id] == settings_[id]) return;
-    if (prepared_) {
-        free_retired();
-        if (tactus::spec(id).change == ParamChange::structural ||
-            flutter_enabled(next) != flutter_enabled(settings_) ||
-            pressure_enabled(next) != pressure_enabled(settings_)) {
-            swap_in(next);
-        } else if (shapes_flattening(id)) {
-            Change change{
-                .kind = Change::Kind::flattening, .index = static_cast<int>(id), .value = next[id]};
-            change.design = flattening_design(spec_.sample_rate_hz / rate_divisor_, next);
-            send(change);
-        } else {
-            send({.kind = Change::Kind::parameter,
-                  .index = static_cast<int>(id),
-                  .value = next[id]});
-        }
+    apply(next);
+}
+
+void Engine::set(const Settings& next) {
+    const std::lock_guard lock(control_);
+    apply(next);
+}
+
+// control_ held. A value the engine already has changes nothing (a restored state or a program
+// sets every parameter: a structural one would otherwise build a pipeline for nothing); any
+// structural difference builds one pipeline with all of them; live ones go one by one, each
+// recorded as it is sent, so a full queue leaves settings_ saying what the audio thread got.
+void Engine::apply(const Settings& next) {
+    if (next == settings_) return;
+    if (!prepared_) {
+        settings_ = next;
+        return;
     }
-    settings_ = next;
+    free_retired();
+    bool rebuild = flutter_enabled(next) != flutter_enabled(settings_) ||
+                   pressure_enabled(next) != pressure_enabled(settings_);
+    for (const ParamSpec& s : param_table())
+        rebuild =
+            rebuild || (s.change == ParamChange::structural && next[s.param] != settings_[s.param]);
+    if (rebuild) {
+        swap_in(next);
+        settings_ = next;
+        return;
+    }
+    for (const ParamSpec& s : param_table()) {
+        const P id = s.param;
+        if (next[id] == settings_[id]) continue;
+        Change change{
+            .kind = Change::Kind::parameter, .index = static_cast<int>(id), .value = next[id]};
+        if (shapes_flattening(id)) {
+            Settings designed = settings_;
+            designed.assign(id, next[id]);
+            change.kind = Change::Kind::flattening;
+            change.design = flattening_design(spec_.sample_rate_hz / rate_divisor_, designed);
+        }
+        send(change);
+        settings_.assign(id, next[id]);
+    }
 }
 
 // A pipeline for `settings`, primed with the input the running one has heard, handed to the

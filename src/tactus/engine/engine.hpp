@@ -111,6 +111,9 @@ class Engine {
     // settings; after, through the audio thread (live: gliding; structural: swapped in). A value
     // it already has changes nothing.
     void set(P id, double value);
+    // Every parameter at once (a preset, a restored state): the structural ones that differ
+    // build one new pipeline between them, not one each.
+    void set(const Settings& settings);
     void set_actuator_gain_db(int actuator, double gain_db);
     // The vibration program from outside: applied at the audio thread's next block.
     void inject(const ControlFrame& frame);
@@ -160,6 +163,7 @@ class Engine {
     };
 
     std::unique_ptr<Pipeline> make_pipeline(const Settings& settings, int64_t origin) const;
+    void apply(const Settings& next);        // control thread, control_ held
     void swap_in(const Settings& settings);  // control thread
     void send(const Change& change);
     void free_retired();  // control thread
