@@ -10,7 +10,8 @@ Builds the corpus with BUILD_DIR/eval/make_drum_corpus (fixed seed), runs `tactu
 at +-25 and +-50 ms and the median signed timing offset (mir_eval), snare/kick vibration
 frequency ratio, hit gain -> output peak Spearman rho, share of output energy in 20-1000 Hz,
 output peak, silence in -> silence out, and the time from each hit's true onset to the output
-reaching half its pulse peak. The same measures follow on a held-out corpus: General MIDI drum
+reaching half its pulse peak; then the same through each shipped actuator profile
+(eval/actuators.py). The same measures follow on a held-out corpus: General MIDI drum
 kits from three Debian soundfonts (eval/gm_kits.py), which no parameter was tuned on.
 """
 import argparse
@@ -27,6 +28,7 @@ import numpy as np
 import scipy.stats
 import soundfile
 
+import actuators
 import felt
 import gm_kits
 
@@ -229,6 +231,8 @@ def main():
              f"{len(tuned['per_kit'])} kits of Sonic Pi drum hits, seed {args.seed}.", ""]
     lines += tables
     lines += [f"- digital silence in -> exact silence out: {'yes' if silence_exact else 'NO'}", ""]
+    lines += actuators.evaluate(args.build_dir, work / "sonic-pi" / "corpus", work / "actuators",
+                                args.preset) + [""]
     if args.held_out == "gm":
         samples = work / "gm-samples"
         kits = gm_kits.render(samples)

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "tactus/actuator/fit.hpp"
 #include "tactus/core/units.hpp"
 #include "tactus/dsp/denormals.hpp"
 #include "tactus/dsp/downmix.hpp"
@@ -56,10 +57,17 @@ void Engine::check_sample_rate(double sample_rate_hz) {
                         kMinSampleRateHz, kMaxSampleRateHz));
 }
 
+// What the pipeline runs: the settings fitted to the first actuator's profile (actuator/fit.hpp),
+// as its dc decides the pressure.
+Settings Engine::fitted(const Settings& settings) const {
+    const auto& profile = outputs_.front().profile;
+    return profile ? fit_to_actuator(*profile, settings).settings : settings;
+}
+
 std::unique_ptr<Pipeline> Engine::make_pipeline(const Settings& settings, int64_t origin) const {
     auto pipeline = std::make_unique<Pipeline>();
     pipeline->prepare({.sample_rate_hz = spec_.sample_rate_hz, .max_block = spec_.max_block},
-                      settings, outputs_, origin);
+                      fitted(settings), outputs_, origin);
     pipeline->set_extra_features(extra_features());
     pipeline->set_source(source_);
     return pipeline;
@@ -159,6 +167,8 @@ void Engine::set(const Settings& next) {
 // sets every parameter: a structural one would otherwise build a pipeline for nothing); any
 // structural difference builds one pipeline with all of them; live ones go one by one, each
 // recorded as it is sent, so a full queue leaves settings_ saying what the audio thread got.
+// The running pipeline has the settings fitted to the actuator (actuator/fit.hpp): what is
+// compared and sent is what the fit makes of them (a parameter and those derived from it).
 void Engine::apply(const Settings& next) {
     if (next == settings_) return;
     if (!prepared_) {
@@ -166,28 +176,31 @@ void Engine::apply(const Settings& next) {
         return;
     }
     free_retired();
-    bool rebuild = flutter_enabled(next) != flutter_enabled(settings_) ||
-                   pressure_enabled(next) != pressure_enabled(settings_);
+    const Settings was = fitted(settings_), now = fitted(next);
+    bool rebuild = flutter_enabled(now) != flutter_enabled(was) ||
+                   pressure_enabled(now) != pressure_enabled(was);
     for (const ParamSpec& s : param_table())
-        rebuild =
-            rebuild || (s.change == ParamChange::structural && next[s.param] != settings_[s.param]);
+        rebuild = rebuild || (s.change == ParamChange::structural && now[s.param] != was[s.param]);
     if (rebuild) {
         swap_in(next);
         settings_ = next;
         return;
     }
+    Settings sent = was;  // what the audio thread has
     for (const ParamSpec& s : param_table()) {
         const P id = s.param;
-        if (next[id] == settings_[id]) continue;
-        Change change{
-            .kind = Change::Kind::parameter, .index = static_cast<int>(id), .value = next[id]};
-        if (shapes_flattening(id)) {
-            Settings designed = settings_;
-            designed.assign(id, next[id]);
-            change.kind = Change::Kind::flattening;
-            change.design = flattening_design(spec_.sample_rate_hz / rate_divisor_, designed);
+        if (now[id] != sent[id]) {
+            Change change{
+                .kind = Change::Kind::parameter, .index = static_cast<int>(id), .value = now[id]};
+            if (shapes_flattening(id)) {
+                Settings designed = sent;
+                designed.assign(id, now[id]);
+                change.kind = Change::Kind::flattening;
+                change.design = flattening_design(spec_.sample_rate_hz / rate_divisor_, designed);
+            }
+            send(change);
+            sent.assign(id, now[id]);
         }
-        send(change);
         settings_.assign(id, next[id]);
     }
 }

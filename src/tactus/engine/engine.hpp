@@ -78,7 +78,9 @@ class Engine {
 
     // ---- setup ----
     // One actuator output (the CLI's default): none means no compensation. Its `dc` replaces
-    // the actuator.dc setting, which gates the NPIII pressure.
+    // the actuator.dc setting, which gates the NPIII pressure, and the pipeline runs the
+    // settings fitted to its profile (actuator/fit.hpp: band, flutter, pressure; settings()
+    // stays as set). With several outputs the first one's profile decides both.
     void set_actuator(std::optional<ActuatorProfile> actuator);
     // N actuator outputs; throws std::invalid_argument for a bad trim or delay, or none.
     void set_actuators(std::vector<ActuatorOutput> outputs);
@@ -162,6 +164,7 @@ class Engine {
         Engine& engine_;
     };
 
+    Settings fitted(const Settings& settings) const;
     std::unique_ptr<Pipeline> make_pipeline(const Settings& settings, int64_t origin) const;
     void apply(const Settings& next);        // control thread, control_ held
     void swap_in(const Settings& settings);  // control thread
