@@ -497,7 +497,7 @@ TEST_F(Cli, AnalyzeSensationColumnsAgreeWithTheMeter) {
         const double w = (t - b[0]) / (a[0] - b[0]);
         for (size_t c = 0; c < 5; ++c)
             ASSERT_NEAR(analyzed[analyzed.size() - 5 + c], b[1 + c] + w * (a[1 + c] - b[1 + c]),
-                        0.01)
+                        0.015)  // the meter's readings are printed to 0.01 dB
                 << "column " << c << " at " << t << " s";
         engaged = std::max(engaged, analyzed[analyzed.size() - 5]);
         ++compared;

@@ -23,6 +23,7 @@
 #include "support/signals.hpp"
 #include "tactus/core/units.hpp"
 #include "tactus/engine/engine.hpp"
+#include "tactus/actuator/fit.hpp"
 #include "tactus/io/actuator_file.hpp"
 #include "tactus/io/preset.hpp"
 
@@ -145,20 +146,24 @@ TEST(EngineFrontEnd, ChannelsAreDownmixedInTheEngineAndTheirLoudnessSummed) {
     EXPECT_THROW(bad.prepare({.sample_rate_hz = fs, .channels = 2}), std::invalid_argument);
 }
 
+// The synthesis is shared, so it follows the first actuator's profile (actuator/fit.hpp); each
+// output has its own compensation, trim and delay.
 TEST(EngineFrontEnd, ActuatorsShareOneAnalysisWithTheirOwnProfileTrimAndDelay) {
     const double fs = 48000;
     const auto x = test::drum_pattern(fs, 2.0, 7).audio;
     const ActuatorProfile lra = load_actuator(resolve_actuator("lra-175"));
     Engine engine;
-    engine.set_actuators({ActuatorOutput{},
-                          ActuatorOutput{.profile = lra, .gain_db = 0, .delay_ms = 0},
+    engine.set_actuators({ActuatorOutput{.profile = lra, .gain_db = 0, .delay_ms = 0},
+                          ActuatorOutput{},
                           ActuatorOutput{.profile = {}, .gain_db = -6, .delay_ms = 10}});
     engine.prepare(fs, 64);
     const auto y = run(engine, {x}, {64});
-    const auto plain = mono_render(x, fs), compensated = mono_render(x, fs, {}, lra);
-    EXPECT_TRUE(bit_identical(y[0], plain));
-    EXPECT_TRUE(bit_identical(y[1], compensated));
+    const auto compensated = mono_render(x, fs, {}, lra);
+    const auto plain = mono_render(x, fs, fit_to_actuator(lra, Settings{}).settings);
+    EXPECT_TRUE(bit_identical(y[0], compensated));
+    EXPECT_TRUE(bit_identical(y[1], plain));
     EXPECT_FALSE(bit_identical(y[0], y[1]));
+    EXPECT_FALSE(bit_identical(y[1], mono_render(x, fs)));  // fitted: not the default mapping
     const size_t delay = 480;  // 10 ms
     for (size_t i = 0; i < delay; ++i) ASSERT_EQ(y[2][i], 0.0f);
     for (size_t i = delay; i < x.size(); ++i)

@@ -99,11 +99,13 @@ ActuatorFit fit_to_actuator(const ActuatorProfile& a, const Settings& settings) 
                                    kSquareHarmonic, lowest_hz));
     }
 
+    // An ERM's carrier only carries its intensity (post/erm_drive.hpp): its band stays.
     const double band_low = s[P::post_band_low_hz], band_high = s[P::post_band_high_hz];
-    const double fitted_low = clamp_to_spec(
-        P::post_band_low_hz, std::max(band_low, a.dc ? 0.0 : low_hz));
+    const double fitted_low =
+        erm ? band_low
+            : clamp_to_spec(P::post_band_low_hz, std::max(band_low, a.dc ? 0.0 : low_hz));
     const double fitted_high =
-        clamp_to_spec(P::post_band_high_hz, std::min(band_high, high_hz));
+        erm ? band_high : clamp_to_spec(P::post_band_high_hz, std::min(band_high, high_hz));
     if (fitted_low != band_low || fitted_high != band_high) {
         s.set(P::post_band_low_hz, fitted_low);
         s.set(P::post_band_high_hz, fitted_high);

@@ -9,7 +9,8 @@
 //               keeps the carrier whose envelope drives it above the envelope's smoothing.
 //   square      a square's harmonics (3f and up) above the band are dropped: sine only.
 //   band        post.band_low_hz / band_high_hz within the usable band: the band-limit cuts what
-//               the actuator cannot play (the compensation no longer lifts it there either).
+//               the actuator cannot play (the compensation no longer lifts it there either);
+//               not on an ERM, whose carrier only carries the intensity.
 //   flutter     NPI flutter (2-40 Hz) is dropped when the actuator's response at its fastest
 //               rate is below the compensation's reach (-ActuatorCompensation::kBoundDb), and
 //               always on an ERM (its spin-up is slower than a flutter period).

@@ -37,9 +37,11 @@ AnalysisRows::AnalysisRows(const Engine& engine, ActuatorProfile actuator,
     : engine_(engine), actuator_(std::move(actuator)), on_row_(std::move(on_row)) {}
 
 void AnalysisRows::start(double sample_rate_hz) {
+    // The model's output is in units of displacement_um at every frequency.
     meter_.prepare(
-        sample_rate_hz, [this](double f) { return actuator_.displacement_um_at(f); },
+        sample_rate_hz, [this](double) { return actuator_.displacement_um; },
         engine_.settings()[P::perception_contact_area_cm2]);
+    model_.prepare({.sample_rate_hz = sample_rate_hz}, actuator_);
 }
 
 void AnalysisRows::take_frames(Engine& engine) {
@@ -50,7 +52,9 @@ void AnalysisRows::take_frames(Engine& engine) {
 }
 
 void AnalysisRows::vibration(const float* samples, int count) {
-    meter_.write(samples, count,
+    displacement_.resize(static_cast<size_t>(count));
+    model_.process(samples, displacement_.data(), count);
+    meter_.write(displacement_.data(), count,
                  [this](const perception::MeterReading& r) { readings_.push_back(r); });
     write_rows(false);
 }
