@@ -1,8 +1,6 @@
 // tactus meter FILE [--actuator NAME] [--contact-area CM2] [-o FILE.csv]: which channels of
 // touch a vibration file engages through an actuator, and how strongly (dB SL over time). The
-// file is the actuator's drive: it goes through the profile's time-domain model
-// (actuator/actuator_model.hpp: an LRA's resonance, an ERM's spin-up and speed-tied frequency),
-// whose displacement is metered.
+// file is the actuator's drive, metered through its model (actuator/drive_meter.hpp).
 #include "tactus/perception/meter.hpp"
 
 #include <fmt/format.h>
@@ -15,7 +13,7 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "global_options.hpp"
-#include "tactus/actuator/actuator_model.hpp"
+#include "tactus/actuator/drive_meter.hpp"
 #include "tactus/dsp/downmix.hpp"
 #include "tactus/io/actuator_file.hpp"
 #include "tactus/io/audio_reader.hpp"
@@ -87,25 +85,19 @@ void meter(const MeterOptions& o) {
         for (double v : r.level_db) out << fmt::format(",{:.2f}", v);
         out << fmt::format(",{:.2f}\n", r.combined_db);
     };
-    perception::SensationMeter meter;
-    ActuatorModel model;
+    DriveMeter meter;
     Progress progress("meter");
     std::vector<float> mono;
     int input_channels = 1;
     const RunSummary run = stream_file(
         o.input,
         [&](const ProcessSpec& spec) {
-            // The model's output is in units of displacement_um at every frequency.
-            meter.prepare(
-                spec.sample_rate_hz, [&](double) { return actuator.displacement_um; },
-                o.contact_area_cm2);
-            model.prepare(spec, actuator);
+            meter.prepare(spec.sample_rate_hz, actuator, o.contact_area_cm2);
             input_channels = spec.channels;
             mono.resize(kStreamBlockFrames);
         },
         [&](const float* const* in, int frames) {  // the actuators' mean
             downmix_mean(in, input_channels, 0, mono.data(), frames);
-            model.process(mono.data(), mono.data(), frames);
             meter.write(mono.data(), frames, on_reading);
         },
         with_progress(progress));

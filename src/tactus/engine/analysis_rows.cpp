@@ -37,11 +37,7 @@ AnalysisRows::AnalysisRows(const Engine& engine, ActuatorProfile actuator,
     : engine_(engine), actuator_(std::move(actuator)), on_row_(std::move(on_row)) {}
 
 void AnalysisRows::start(double sample_rate_hz) {
-    // The model's output is in units of displacement_um at every frequency.
-    meter_.prepare(
-        sample_rate_hz, [this](double) { return actuator_.displacement_um; },
-        engine_.settings()[P::perception_contact_area_cm2]);
-    model_.prepare({.sample_rate_hz = sample_rate_hz}, actuator_);
+    meter_.prepare(sample_rate_hz, actuator_, engine_.settings()[P::perception_contact_area_cm2]);
 }
 
 void AnalysisRows::take_frames(Engine& engine) {
@@ -52,9 +48,7 @@ void AnalysisRows::take_frames(Engine& engine) {
 }
 
 void AnalysisRows::vibration(const float* samples, int count) {
-    displacement_.resize(static_cast<size_t>(count));
-    model_.process(samples, displacement_.data(), count);
-    meter_.write(displacement_.data(), count,
+    meter_.write(samples, count,
                  [this](const perception::MeterReading& r) { readings_.push_back(r); });
     write_rows(false);
 }
