@@ -12,13 +12,13 @@
 
 #include "audio_view.hpp"
 #include "settings.hpp"
+#include "tactus/actuator/drive_meter.hpp"
 #include "tactus/dsp/downmix.hpp"
 #include "tactus/engine/analysis_rows.hpp"
 #include "tactus/io/actuator_file.hpp"
 #include "tactus/io/audio_reader.hpp"
 #include "tactus/io/audio_writer.hpp"
 #include "tactus/io/run_file.hpp"
-#include "tactus/actuator/drive_meter.hpp"
 #include "tactus/perception/meter.hpp"
 
 namespace py = pybind11;

@@ -15,10 +15,10 @@
 #include "common.hpp"
 #include "global_options.hpp"
 #include "pipeline_options.hpp"
+#include "tactus/actuator/drive_meter.hpp"
 #include "tactus/export/haptic_track.hpp"
 #include "tactus/export/html_report.hpp"
 #include "tactus/io/text_output.hpp"
-#include "tactus/actuator/drive_meter.hpp"
 #include "tactus/perception/meter.hpp"
 
 namespace tactus::cli {

@@ -1,8 +1,6 @@
 // tactus simulate FILE -o OUT [--actuator NAME]: what an actuator does with a vibration file: its
 // drive through the profile's time-domain model (actuator/actuator_model.hpp), written as the
 // displacement, full scale = the profile's displacement_um (peak), each channel its own motor.
-#include "tactus/actuator/actuator_model.hpp"
-
 #include <fmt/format.h>
 
 #include "actuator_option.hpp"
@@ -10,6 +8,7 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "global_options.hpp"
+#include "tactus/actuator/actuator_model.hpp"
 #include "tactus/io/actuator_file.hpp"
 #include "tactus/io/audio_reader.hpp"
 #include "tactus/io/audio_writer.hpp"
@@ -27,14 +26,16 @@ struct SimulateOptions {
 // The actuator named, else the one the file says it was rendered for, else the default.
 std::string actuator_of(const SimulateOptions& o) {
     if (!o.actuator.empty()) return o.actuator;
-    const std::string rendered_for = RenderInfo::from_comment(AudioReader(o.input).comment()).actuator;
+    const std::string rendered_for =
+        RenderInfo::from_comment(AudioReader(o.input).comment()).actuator;
     if (rendered_for.empty()) return std::string(kDefaultActuator);
     note(fmt::format("{}: rendered for {}: simulated through it", o.input, rendered_for));
     return rendered_for;
 }
 
 void simulate(const SimulateOptions& o) {
-    if (o.output.empty()) throw std::runtime_error("simulate: give either -o FILE (one input) or -O DIR");
+    if (o.output.empty())
+        throw std::runtime_error("simulate: give either -o FILE (one input) or -O DIR");
     check_output(o.input, o.output, o.force);
     writable_sound_format(o.output, SampleFormat::float32);
     const ActuatorProfile actuator = load_actuator(resolve_actuator(actuator_of(o)));
@@ -61,8 +62,7 @@ void simulate(const SimulateOptions& o) {
                            SoundTags{.software = "tactus " + how.version,
                                      .comment = fmt::format("displacement through {}, full scale "
                                                             "{:g} um; {}",
-                                                            actuator.name,
-                                                            actuator.displacement_um,
+                                                            actuator.name, actuator.displacement_um,
                                                             how.comment())});
         },
         [&](const float* const* in, int frames) {

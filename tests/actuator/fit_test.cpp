@@ -57,7 +57,8 @@ TEST(ActuatorFit, WhatTheActuatorCannotPlayIsDropped) {
     apply_preset_file(four, resolve_preset("four-channel"));
     four.set(P::pressure_weight, 0.3);
     for (const char* name : {"lra-175", "erm"}) {
-        const Settings fitted = fit_to_actuator(load_actuator(resolve_actuator(name)), four).settings;
+        const Settings fitted =
+            fit_to_actuator(load_actuator(resolve_actuator(name)), four).settings;
         EXPECT_EQ(fitted[P::flutter_weight], 0.0) << name;
         EXPECT_EQ(fitted[P::pressure_weight], 0.0) << name;
     }

@@ -43,8 +43,7 @@ TEST(ActuatorWarnings, FlutterTheLraCannotPlayIsDroppedInTheSameLine) {
     ASSERT_EQ(w.size(), 1u);
     EXPECT_TRUE(contains(w[0], "NPI flutter dropped")) << w[0];
     EXPECT_TRUE(actuator_warnings(load_actuator(resolve_actuator("voice-coil")), four).empty() ||
-                !contains(actuator_warnings(load_actuator(resolve_actuator("voice-coil")),
-                                            four)[0],
+                !contains(actuator_warnings(load_actuator(resolve_actuator("voice-coil")), four)[0],
                           "flutter"));
 }
 

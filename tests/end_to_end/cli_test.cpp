@@ -6,10 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <iostream>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <sstream>
 #include <string>

@@ -21,9 +21,9 @@
 #include "support/engine_blocks.hpp"
 #include "support/live_values.hpp"
 #include "support/signals.hpp"
+#include "tactus/actuator/fit.hpp"
 #include "tactus/core/units.hpp"
 #include "tactus/engine/engine.hpp"
-#include "tactus/actuator/fit.hpp"
 #include "tactus/io/actuator_file.hpp"
 #include "tactus/io/preset.hpp"
 
@@ -164,7 +164,7 @@ TEST(EngineFrontEnd, ActuatorsShareOneAnalysisWithTheirOwnProfileTrimAndDelay) {
     EXPECT_TRUE(bit_identical(y[1], plain));
     EXPECT_FALSE(bit_identical(y[0], y[1]));
     EXPECT_FALSE(bit_identical(y[1], mono_render(x, fs)));  // fitted: not the default mapping
-    const size_t delay = 480;  // 10 ms
+    const size_t delay = 480;                               // 10 ms
     for (size_t i = 0; i < delay; ++i) ASSERT_EQ(y[2][i], 0.0f);
     for (size_t i = delay; i < x.size(); ++i)
         ASSERT_EQ(y[2][i], static_cast<float>(plain[i - delay] * db_to_gain(-6))) << i;

@@ -58,12 +58,11 @@ void ActuatorModel::prepare(const ProcessSpec& spec, const ActuatorProfile& a) {
     }
     const double fit_low_hz = std::max(a.band_low_hz / 2, kLowestFitHz);
     const double fit_high_hz = std::min(a.band_high_hz * 2, fit_low_hz * kWidestFitRatio);
-    rest_.prepare(spec, erm_ ? FittedEq::Design{}
-                             : FittedEq::fit(sample_rate_hz_,
-                                             {.low_hz = fit_low_hz, .high_hz = fit_high_hz},
-                                             [this](double f) {
-                                                 return actuator_.response_db(f) - fixed_db(f);
-                                             }));
+    rest_.prepare(
+        spec,
+        erm_ ? FittedEq::Design{}
+             : FittedEq::fit(sample_rate_hz_, {.low_hz = fit_low_hz, .high_hz = fit_high_hz},
+                             [this](double f) { return actuator_.response_db(f) - fixed_db(f); }));
     reset();
 }
 

@@ -9,7 +9,8 @@ void DriveMeter::prepare(double sample_rate_hz, const ActuatorProfile& actuator,
     model_.prepare({.sample_rate_hz = sample_rate_hz, .max_block = kChunk}, actuator);
     // The model's output is in units of displacement_um at every frequency.
     const double um = actuator.displacement_um;
-    meter_.prepare(sample_rate_hz, [um](double) { return um; }, contact_area_cm2);
+    meter_.prepare(
+        sample_rate_hz, [um](double) { return um; }, contact_area_cm2);
     displacement_.assign(kChunk, 0.0f);
 }
 

@@ -33,7 +33,8 @@ struct MappingRange {
 
 MappingRange frequency_range(const Settings& s) {
     return {s[P::frequency_in_min], s[P::frequency_in_max], s[P::frequency_out_min],
-            s[P::frequency_out_max], static_cast<MappingCurve>(static_cast<int>(s[P::frequency_curve]))};
+            s[P::frequency_out_max],
+            static_cast<MappingCurve>(static_cast<int>(s[P::frequency_curve]))};
 }
 
 // Fits the frequency mapping into [band_low_hz, band_high_hz] (kEdgeMargin inside it) when it
@@ -64,8 +65,8 @@ std::string fit_frequency(Settings& s, double band_low_hz, double band_high_hz) 
     s.set(P::frequency_in_max, in_max);
     s.set(P::frequency_out_min, rising ? low_hz : high_hz);
     s.set(P::frequency_out_max, rising ? high_hz : low_hz);
-    return fmt::format("{} -> {:.4g}-{:.4g} Hz (in {:.4g}-{:.4g} -> {:.4g}-{:.4g}, log-scaled)", was,
-                       s[P::frequency_out_min], s[P::frequency_out_max], m.in_min, m.in_max,
+    return fmt::format("{} -> {:.4g}-{:.4g} Hz (in {:.4g}-{:.4g} -> {:.4g}-{:.4g}, log-scaled)",
+                       was, s[P::frequency_out_min], s[P::frequency_out_max], m.in_min, m.in_max,
                        in_min, in_max);
 }
 
@@ -126,9 +127,10 @@ ActuatorFit fit_to_actuator(const ActuatorProfile& a, const Settings& settings) 
         s.set(P::pressure_weight, 0);
         done.push_back("NPIII pressure dropped (dc = false: no sustained offset)");
     } else if (!a.dc && fitted_low < perception::info(perception::Channel::NPIII).range_high_hz) {
-        done.push_back(fmt::format("post.band_low_hz {:g} Hz passes NPIII pressure the actuator "
-                                   "cannot hold (dc = false)",
-                                   fitted_low));
+        done.push_back(
+            fmt::format("post.band_low_hz {:g} Hz passes NPIII pressure the actuator "
+                        "cannot hold (dc = false)",
+                        fitted_low));
     }
 
     if (s[P::post_ceiling_db] > gain_to_db(a.max_drive))

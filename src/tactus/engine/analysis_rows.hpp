@@ -1,9 +1,10 @@
 // The rows `tactus analyze` writes and tactus.analyze() returns: every analysis frame's features
 // and vibration program (paper Figure 4), with the sensation level each channel of touch receives
-// from the vibration through an actuator (actuator/drive_meter.hpp, readings every 10 ms: a row takes
-// the levels at its own time, interpolated between the readings around it). Frames come off the engine's frame queue between
-// process() calls, as a live front end takes them; a row is handed on once the meter has heard
-// the vibration up to its time. Setup/offline thread only (not real-time: it allocates).
+// from the vibration through an actuator (actuator/drive_meter.hpp, readings every 10 ms: a row
+// takes the levels at its own time, interpolated between the readings around it). Frames come off
+// the engine's frame queue between process() calls, as a live front end takes them; a row is handed
+// on once the meter has heard the vibration up to its time. Setup/offline thread only (not
+// real-time: it allocates).
 #pragma once
 
 #include <array>
