@@ -145,6 +145,10 @@ def section(results):
             f"{r['weak']} of {r['hits']} | {kept} of {sum(reference.values())} | "
             f"{r['p_max']:.1f} | {100 * np.mean(r['p_engaged']):.1f} | "
             f"{100 * r['drive_share']:.1f} % | {100 * r['displacement_share']:.1f} % |")
+    lines += ["", "Felt snare/kick per kit:", ""]
+    for r in results:
+        lines.append(f"- {r['name']}: " + ", ".join(f"{kit} {ratio:.2f}"
+                                                    for kit, ratio in r["ratios"].items()))
     lines += ["", "Warnings the renders printed (one line per profile):", ""]
     for r in results:
         for w in sorted(r["warnings"]) or ["(none)"]:

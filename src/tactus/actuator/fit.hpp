@@ -35,8 +35,8 @@ struct ActuatorFit {
 // The band's log span is widened by this factor before the mapping's part landing on it is
 // stretched onto the band: 1 keeps the in-band part of the mapping as it was (a clamp), larger
 // keeps more of the range apart at the cost of a flatter slope. Tuned on the Sonic Pi kits
-// through lra-175 (eval/actuators.py): 0.5 felt the same snare/kick ratios, with a worse
-// gain -> felt peak rho (0.68 against 0.75).
+// through lra-175 (eval/actuators.py): 0.5 gave the same felt snare/kick ratios and a worse
+// gain -> felt peak rho.
 inline constexpr double kFrequencySpread = 1.0;
 // The frequencies are placed this factor inside the band's edges: a pulse's spectrum has width
 // (its envelope's), so a pulse right at an edge puts half its energy outside. A trade: 1.02
