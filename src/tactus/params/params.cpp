@@ -186,8 +186,8 @@ constexpr ParamSpec kTable[] = {
      "level, relative to the ceiling, where the limiter's soft knee starts"},
     {P::post_ceiling_db, 72, "post.ceiling_db", "dB", real, -40, 0, 0, lin, live, 20,
      "hard ceiling of the output peak, dB full scale"},
-    {P::post_lookahead_ms, 73, "post.lookahead_ms", "ms", real, 0.1, 20, 1.5, log, structural, 0,
-     "limiter look-ahead (adds latency)"},
+    {P::post_lookahead_ms, 73, "post.lookahead_ms", "ms", real, 0.1, 20, 1, log, structural, 0,
+     "limiter look-ahead (adds its length to the latency)"},
     {P::post_release_ms, 74, "post.release_ms", "ms", real, 1, 2000, 80, log, live, 0,
      "limiter gain recovery time constant"},
     // Perception model (docs/perception.md): conditions the thresholds depend on.
