@@ -244,8 +244,8 @@ TEST(DrumCorpus, HeldPulseVibratesAtItsOwnFrequencyFromItsStart) {
     const int64_t start_samples = engine.latency() + static_cast<int64_t>(0.5e-3 * rate);
     const auto segment = [&](int64_t start, double from_ms, double to_ms) {
         const auto a = static_cast<size_t>(start + static_cast<int64_t>(from_ms * 1e-3 * rate));
-        const auto b = std::min(out.size(),
-                                static_cast<size_t>(start + static_cast<int64_t>(to_ms * 1e-3 * rate)));
+        const auto b = std::min(
+            out.size(), static_cast<size_t>(start + static_cast<int64_t>(to_ms * 1e-3 * rate)));
         return std::vector<float>(out.begin() + static_cast<std::ptrdiff_t>(a),
                                   out.begin() + static_cast<std::ptrdiff_t>(b));
     };

@@ -228,8 +228,7 @@ TEST(Mapper, HeldPulseStartsAtItsOwnFrequencyAndKeepsIt) {
     EXPECT_NEAR(mapper.map(frame(20, -20, 4000, 0.5, true)).frequency_hz, mapped_hz(4000), 1e-9);
     // Its body darkens; the pulse keeps the onset's frequency.
     for (int i = 21; i < 60; ++i)
-        EXPECT_NEAR(mapper.map(frame(i, -25, 300, 0.5, false)).frequency_hz, mapped_hz(4000),
-                    1e-9);
+        EXPECT_NEAR(mapper.map(frame(i, -25, 300, 0.5, false)).frequency_hz, mapped_hz(4000), 1e-9);
     // Below the gate it holds too, and the next onset takes its own.
     EXPECT_NEAR(mapper.map(frame(60, -100, 6000, 0.5, false)).frequency_hz, mapped_hz(4000), 1e-9);
     EXPECT_NEAR(mapper.map(frame(61, -20, 200, 0.5, true)).frequency_hz, mapped_hz(200), 1e-9);

@@ -13,7 +13,7 @@ using perception::Channel;
 // Innervation density P / NPI, human fingerpad (paper Table 1).
 constexpr double kFlutterEqualizeGain = perception::info(Channel::P).innervation_per_cm2 /
                                         perception::info(Channel::NPI).innervation_per_cm2;
-constexpr double kStepHysteresis = 0.1;  // of one step
+constexpr double kStepHysteresis = 0.1;   // of one step
 constexpr int kMaxPulseFrames = 1 << 30;  // a pulse's frame count stops here (no overflow)
 }  // namespace
 
