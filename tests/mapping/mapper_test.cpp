@@ -1,3 +1,7 @@
+// Pulse frequency: with mapping.frequency.hold on, an onset's frame maps the frequency without
+// smoothing (a pulse after silence starts at its own pitch, not at the floor), the pulse follows
+// the mapping for settle_ms and then keeps its frequency until the next onset; with hold off the
+// frequency is smoothed throughout, onsets or not.
 // Mapper: above the loudness gate the three mappings and the onset trigger pass; below it the
 // amplitude is 0, triggers are dropped, and frequency and square mix hold their last values;
 // envelope settings and the frame's sample are carried into every ControlFrame.
@@ -200,6 +204,60 @@ TEST(Mapper, PressureStepsWithHysteresis) {
     EXPECT_NEAR(pressure_at(0.36), 0.5 * 0.5, 1e-12);   // 1.44: held at 2
     EXPECT_NEAR(pressure_at(0.32), 0.5 * 0.25, 1e-12);  // 1.28: back to 1
     EXPECT_NEAR(pressure_at(1.0), 0.5, 1e-12);
+}
+
+// Brightness -> frequency as in immediate_settings (log, 150 ... 6000 Hz -> 50 ... 320 Hz),
+// smoothed over 5 ms, 345 frames per second (2.9 ms apart).
+Settings pulse_settings(bool hold, double settle_ms) {
+    Settings s = immediate_settings();
+    s.set(P::frequency_smoothing_ms, 5);
+    s.set(P::frequency_hold, hold ? 1 : 0);
+    s.set(P::frequency_settle_ms, settle_ms);
+    return s;
+}
+
+double mapped_hz(double brightness_hz) {
+    return 50.0 * std::pow(320.0 / 50.0, std::log(brightness_hz / 150.0) / std::log(40.0));
+}
+
+TEST(Mapper, HeldPulseStartsAtItsOwnFrequencyAndKeepsIt) {
+    Mapper mapper;
+    mapper.prepare(pulse_settings(true, 0), 345.0);
+    for (int i = 0; i < 20; ++i) mapper.map(frame(i, -30, 150, 0.5, false));  // at the floor
+    // A bright hit: its onset frame is at its own frequency, not smoothed up from 50 Hz.
+    EXPECT_NEAR(mapper.map(frame(20, -20, 4000, 0.5, true)).frequency_hz, mapped_hz(4000), 1e-9);
+    // Its body darkens; the pulse keeps the onset's frequency.
+    for (int i = 21; i < 60; ++i)
+        EXPECT_NEAR(mapper.map(frame(i, -25, 300, 0.5, false)).frequency_hz, mapped_hz(4000), 1e-9);
+    // Below the gate it holds too, and the next onset takes its own.
+    EXPECT_NEAR(mapper.map(frame(60, -100, 6000, 0.5, false)).frequency_hz, mapped_hz(4000), 1e-9);
+    EXPECT_NEAR(mapper.map(frame(61, -20, 200, 0.5, true)).frequency_hz, mapped_hz(200), 1e-9);
+    EXPECT_NEAR(mapper.map(frame(62, -20, 5000, 0.5, false)).frequency_hz, mapped_hz(200), 1e-9);
+}
+
+TEST(Mapper, HeldPulseFollowsForTheSettleTimeThenHolds) {
+    Mapper mapper;
+    mapper.prepare(pulse_settings(true, 10), 345.0);  // frames 0 ... 3 after the onset follow
+    EXPECT_NEAR(mapper.map(frame(0, -20, 4000, 0.5, true)).frequency_hz, mapped_hz(4000), 1e-9);
+    const double body_hz[] = {2000, 1000, 600, 300, 200};
+    for (int k = 1; k <= 3; ++k)  // 2.9, 5.8, 8.7 ms: unsmoothed
+        EXPECT_NEAR(mapper.map(frame(k, -20, body_hz[k - 1], 0.5, false)).frequency_hz,
+                    mapped_hz(body_hz[k - 1]), 1e-9)
+            << k;
+    for (int k = 4; k <= 5; ++k)  // 11.6 ms on: held at the last followed frame's
+        EXPECT_NEAR(mapper.map(frame(k, -20, body_hz[k - 1], 0.5, false)).frequency_hz,
+                    mapped_hz(600), 1e-9)
+            << k;
+}
+
+TEST(Mapper, WithoutHoldTheFrequencyIsSmoothedThroughOnsets) {
+    Mapper mapper;
+    mapper.prepare(pulse_settings(false, 0), 345.0);
+    for (int i = 0; i < 20; ++i) mapper.map(frame(i, -30, 150, 0.5, false));
+    const double onset_hz = mapper.map(frame(20, -20, 4000, 0.5, true)).frequency_hz;
+    const double a = std::exp(-1000.0 / 345.0 / 5.0);  // one-pole over one frame
+    EXPECT_NEAR(onset_hz, mapped_hz(4000) + a * (50.0 - mapped_hz(4000)), 1e-9);
+    EXPECT_GT(mapper.map(frame(21, -20, 4000, 0.5, false)).frequency_hz, onset_hz);
 }
 
 }  // namespace

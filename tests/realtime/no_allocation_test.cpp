@@ -159,6 +159,7 @@ TEST(RealTime, AtOtherRatesAndSettings) {
     s.set(P::envelope_sustain, 0.3);
     s.set(P::frequency_source, static_cast<double>(FeatureSource::pitch_hz));
     s.set(P::amplitude_smoothing_ms, 20);
+    s.set(P::frequency_hold, 1);  // one frequency per pulse
     s.set(P::post_drive_db, 20);
     expect_process_is_real_time_safe(44100, s);
 }

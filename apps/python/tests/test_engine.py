@@ -135,9 +135,11 @@ def test_frames_are_analyzes_columns(amen_audio):
 
 def test_latency_is_the_look_ahead(amen_audio):
     _, rate = amen_audio
+    look_ahead_ms = next(p["default"] for p in tactus.params()
+                         if p["key"] == "post.lookahead_ms")
     engine = tactus.Engine(48000)
-    assert engine.latency == pytest.approx(1.5e-3 * 48000, abs=2)
-    longer = tactus.Engine(48000, post_lookahead_ms=3)
+    assert engine.latency == pytest.approx(look_ahead_ms * 1e-3 * 48000, abs=2)
+    longer = tactus.Engine(48000, post_lookahead_ms=2 * look_ahead_ms)
     assert longer.latency == pytest.approx(2 * engine.latency, abs=2)
     assert (engine.sample_rate, engine.channels, engine.actuators) == (48000, 1, 1)
 

@@ -45,4 +45,10 @@ double FeatureMapping::map(const Features& features) noexcept {
     return smoothed_;
 }
 
+double FeatureMapping::jump(const Features& features) noexcept {
+    const double target = shape(feature_value(features, source_));
+    if (std::isfinite(target)) smoothed_ = target;
+    return smoothed_;
+}
+
 }  // namespace tactus

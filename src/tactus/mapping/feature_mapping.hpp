@@ -24,6 +24,8 @@ class FeatureMapping {
     void reset(double value) noexcept { smoothed_ = value; }
     // Maps and smooths one frame's feature value.
     double map(const Features& features) noexcept;
+    // Maps one frame's feature value without smoothing: the smoothed value jumps to it.
+    double jump(const Features& features) noexcept;
     double current() const { return smoothed_; }
     // The curve alone, without smoothing.
     double shape(double input) const noexcept;

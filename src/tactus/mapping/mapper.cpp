@@ -13,7 +13,8 @@ using perception::Channel;
 // Innervation density P / NPI, human fingerpad (paper Table 1).
 constexpr double kFlutterEqualizeGain = perception::info(Channel::P).innervation_per_cm2 /
                                         perception::info(Channel::NPI).innervation_per_cm2;
-constexpr double kStepHysteresis = 0.1;  // of one step
+constexpr double kStepHysteresis = 0.1;   // of one step
+constexpr int kMaxPulseFrames = 1 << 30;  // a pulse's frame count stops here (no overflow)
 }  // namespace
 
 void Mapper::prepare(const Settings& s, const MappingSpec& spec) {
@@ -42,6 +43,8 @@ void Mapper::set_live(const Settings& s, double output_ceiling) noexcept {
     pressure_weight_ = pressure_enabled(s) ? s[P::pressure_weight] * output_ceiling : 0.0;
     pressure_steps_ = static_cast<int>(std::lround(s[P::pressure_steps]));
     pressure_step_ = std::min(pressure_step_, pressure_steps_);
+    hold_frequency_ = s[P::frequency_hold] != 0.0;
+    settle_frames_ = s[P::frequency_settle_ms] * 1e-3 * fps;
 }
 
 void Mapper::reset() noexcept {
@@ -52,6 +55,7 @@ void Mapper::reset() noexcept {
     flutter_rate_.reset(flutter_rate_.shape(0.0));
     pressure_level_.reset(0.0);
     pressure_step_ = 0;
+    pulse_frames_ = -1;
 }
 
 double Mapper::pressure_of(const Features& f) noexcept {
@@ -63,12 +67,27 @@ double Mapper::pressure_of(const Features& f) noexcept {
     return pressure_weight_ * pressure_step_ / pressure_steps_;
 }
 
+// With hold on: the onset's frame and the settle time after it map the frequency unsmoothed,
+// then the pulse keeps it (mapper.hpp). Frames are counted from the onset's, so the settle time
+// is the same at any hop.
+double Mapper::frequency_of(const Features& f) noexcept {
+    if (!hold_frequency_) return frequency_.map(f);
+    if (f.onset) {
+        pulse_frames_ = 0;
+        return frequency_.jump(f);
+    }
+    if (pulse_frames_ < 0) return frequency_.map(f);
+    if (pulse_frames_ < kMaxPulseFrames) ++pulse_frames_;
+    if (pulse_frames_ > settle_frames_) return frequency_.current();
+    return frequency_.jump(f);
+}
+
 ControlFrame Mapper::map(const Features& f) noexcept {
     ControlFrame frame = envelope_;
     frame.sample = f.frame_end_sample;
     if (f.loudness_db >= gate_db_) {
         frame.amplitude = amplitude_.map(f);
-        frame.frequency_hz = frequency_.map(f);
+        frame.frequency_hz = frequency_of(f);
         frame.square_mix = square_mix_.map(f);
         frame.trigger = f.onset;
         frame.flutter_amplitude = flutter_gain_ * flutter_level_.map(f);

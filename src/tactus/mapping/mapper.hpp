@@ -11,6 +11,12 @@
 // 1). Pressure steps (§5.4: "multiple levels of sustained pressure") quantise the level to
 // `pressure.steps` levels above 0 with a hysteresis of 0.1 step, so a level near a boundary
 // does not chatter. Without actuator.dc the pressure is exactly 0.
+// One frequency per pulse (mapping.frequency.hold; §6: onsets make "discrete vibrotactile
+// pulses" at the brightness's pitch): an onset's frame maps the frequency without smoothing, so
+// a pulse after silence starts at its own pitch rather than gliding up from the floor; the pulse
+// follows the mapping, unsmoothed, for mapping.frequency.settle_ms (a hit's first frames mix it
+// with what came before and its click), then keeps that frequency until the next onset, however
+// the brightness of its decay wanders. Off, the frequency is smoothed throughout.
 #pragma once
 
 #include "tactus/analysis/features.hpp"
@@ -43,11 +49,15 @@ class Mapper {
 
   private:
     double pressure_of(const Features& features) noexcept;
+    double frequency_of(const Features& features) noexcept;
 
     FeatureMapping amplitude_, frequency_, square_mix_;
     FeatureMapping flutter_level_, flutter_rate_, pressure_level_;
     double flutter_gain_ = 0, pressure_weight_ = 0;
     int pressure_steps_ = 0, pressure_step_ = 0;
+    bool hold_frequency_ = false;
+    double settle_frames_ = 0;  // frames after an onset's frame the frequency still follows
+    int pulse_frames_ = -1;     // frames since the last onset's frame; -1: no pulse yet
     double gate_db_ = -70, frames_per_second_ = 1;
     ControlFrame envelope_;  // attack, decay, sustain from settings
 };

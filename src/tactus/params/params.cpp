@@ -186,13 +186,21 @@ constexpr ParamSpec kTable[] = {
      "level, relative to the ceiling, where the limiter's soft knee starts"},
     {P::post_ceiling_db, 72, "post.ceiling_db", "dB", real, -40, 0, 0, lin, live, 20,
      "hard ceiling of the output peak, dB full scale"},
-    {P::post_lookahead_ms, 73, "post.lookahead_ms", "ms", real, 0.1, 20, 1.5, log, structural, 0,
-     "limiter look-ahead (adds latency)"},
+    {P::post_lookahead_ms, 73, "post.lookahead_ms", "ms", real, 0.1, 20, 1, log, structural, 0,
+     "limiter look-ahead (adds its length to the latency)"},
     {P::post_release_ms, 74, "post.release_ms", "ms", real, 1, 2000, 80, log, live, 0,
      "limiter gain recovery time constant"},
     // Perception model (docs/perception.md): conditions the thresholds depend on.
     {P::perception_contact_area_cm2, 75, "perception.contact_area_cm2", "cm2", real, 0.005, 20, 2.9, log, live, 50,
      "skin contact area of the actuator (P channel spatial summation; 2.9 = reference curves)"},
+    // Mapping, continued: one frequency per pulse (paper §6: bonk~ drives "discrete vibrotactile
+    // pulses" whose pitch is the hit's brightness, so kick and snare are told apart).
+    {P::frequency_hold, 76, "mapping.frequency.hold", "", toggle, 0, 1, 0, lin, live, 0,
+     "one frequency per pulse: from each onset the frequency follows the mapping unsmoothed "
+     "for settle_ms, then holds until the next onset (off: smoothed throughout)", kSwitch},
+    {P::frequency_settle_ms, 77, "mapping.frequency.settle_ms", "ms", real, 0, 100, 30, lin, live, 0,
+     "with hold on: how long after an onset the pulse's frequency follows the mapping before "
+     "it holds (0: the onset frame's)"},
 };
 // clang-format on
 

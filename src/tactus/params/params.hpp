@@ -106,6 +106,8 @@ enum class P : int {
     post_lookahead_ms,
     post_release_ms,
     perception_contact_area_cm2,
+    frequency_hold,
+    frequency_settle_ms,
     count
 };
 

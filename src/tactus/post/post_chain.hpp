@@ -14,7 +14,7 @@
 // compensation shapes and the limiter guards the sum; the last band-limit's high-pass then sits
 // at post.flutter_low_hz. The NPIII pressure (a slow offset) joins after the last band-limit; the
 // limiter's ceiling is lowered by the pressure's largest value (its weight times the ceiling),
-// so the sum stays under the ceiling. It is not delayed by the limiter's look-ahead (1.5 ms
+// so the sum stays under the ceiling. It is not delayed by the limiter's look-ahead (1 ms
 // against NPIII's >= 330 ms periods). With both off and no actuator the chain is exactly the
 // paper's.
 // An ERM (its vibration frequency follows its speed: only the carrier's intensity can reach the
