@@ -34,7 +34,7 @@ constexpr double kNpiLowHz = perception::info(perception::Channel::NPI).range_lo
 constexpr ParamSpec kTable[] = {
     // Analysis (paper §6, Figure 4: feature extraction).
     {P::analysis_window_ms, 1, "analysis.window_ms", "ms", real, 5, 100, 23.2, log, structural, 0,
-     "STFT window for brightness, noisiness (nearest power of two in samples)"},
+     "STFT window for brightness, noisiness (nearest fast FFT size at the 16 kHz analysis rate)"},
     {P::analysis_hop_ms, 2, "analysis.hop_ms", "ms", real, 0.5, 20, 2.9, log, structural, 0,
      "time between analysis frames; control rate of the vibration program"},
     {P::loudness_window_ms, 3, "loudness.window_ms", "ms", real, 2, 400, 10, log, structural, 0,
@@ -46,7 +46,7 @@ constexpr ParamSpec kTable[] = {
     {P::pitch_threshold, 6, "pitch.threshold", "", real, 0.01, 0.5, 0.15, lin, live, 0,
      "YIN absolute threshold on the cumulative-mean-normalised difference"},
     {P::onset_window_ms, 7, "onset.window_ms", "ms", real, 2, 50, 5.8, log, structural, 0,
-     "STFT window of the onset detection function (short, for low latency; nearest power of two)"},
+     "STFT window of the onset detection function (short, for low latency; nearest fast FFT size)"},
     {P::onset_threshold, 8, "onset.threshold", "", real, 0, 100, 10, lin, live, 0,
      "fixed part of the adaptive threshold on the log spectral flux"},
     {P::onset_ratio, 9, "onset.ratio", "", real, 0, 10, 1.25, lin, live, 0,
