@@ -45,7 +45,7 @@ constexpr ParamSpec kTable[] = {
      "highest f0 the pitch tracker reports"},
     {P::pitch_threshold, 6, "pitch.threshold", "", real, 0.01, 0.5, 0.15, lin, live, 0,
      "YIN absolute threshold on the cumulative-mean-normalised difference"},
-    {P::onset_window_ms, 7, "onset.window_ms", "ms", real, 2, 50, 5.8, log, structural, 0,
+    {P::onset_window_ms, 7, "onset.window_ms", "ms", real, 2, 50, 10, log, structural, 0,
      "STFT window of the onset detection function (short, for low latency; nearest fast FFT size)"},
     {P::onset_threshold, 8, "onset.threshold", "", real, 0, 100, 10, lin, live, 0,
      "fixed part of the adaptive threshold on the log spectral flux"},
