@@ -28,12 +28,15 @@ void fft(std::vector<Complex>& x, bool inverse) {
         j ^= bit;
         if (i < j) std::swap(x[i], x[j]);
     }
+    std::vector<Complex> twiddle(n / 2);
+    for (size_t k = 0; k < n / 2; ++k)
+        twiddle[k] = std::polar(1.0, (inverse ? 2 : -2) * kPi * static_cast<double>(k) /
+                                         static_cast<double>(n));
     for (size_t length = 2; length <= n; length <<= 1) {
-        const double angle = (inverse ? 2 : -2) * kPi / static_cast<double>(length);
+        const size_t step = n / length;
         for (size_t start = 0; start < n; start += length)
             for (size_t k = 0; k < length / 2; ++k) {
-                const Complex w = std::polar(1.0, angle * static_cast<double>(k));
-                const Complex a = x[start + k], b = x[start + k + length / 2] * w;
+                const Complex a = x[start + k], b = x[start + k + length / 2] * twiddle[k * step];
                 x[start + k] = a + b;
                 x[start + k + length / 2] = a - b;
             }
