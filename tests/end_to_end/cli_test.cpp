@@ -417,7 +417,8 @@ TEST_F(Cli, AnalyzeSensationColumnsAgreeWithTheMeter) {
         if (line[0] != 't' && line[0] != '#') metered.push_back(csv_numbers(line));
     ASSERT_GT(metered.size(), 500u);
     // Every row from 1 to 5 s carries the meter's levels at the row's own time (between its
-    // 10 ms readings, interpolated): the two time courses line up.
+    // 10 ms readings, interpolated): the two time courses line up. The meter prints 0.01 dB
+    // steps (each reading within 0.005 dB), and a hit's onset rises some 15 dB in one step.
     int compared = 0;
     double engaged = 0;
     while (std::getline(rows, line)) {
@@ -432,7 +433,7 @@ TEST_F(Cli, AnalyzeSensationColumnsAgreeWithTheMeter) {
         const double w = (t - b[0]) / (a[0] - b[0]);
         for (size_t c = 0; c < 5; ++c)
             ASSERT_NEAR(analyzed[analyzed.size() - 5 + c], b[1 + c] + w * (a[1 + c] - b[1 + c]),
-                        0.01)
+                        0.015)
                 << "column " << c << " at " << t << " s";
         engaged = std::max(engaged, analyzed[analyzed.size() - 5]);
         ++compared;

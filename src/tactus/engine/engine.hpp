@@ -6,7 +6,7 @@
 // analysis samples and the spectrum ends at the same frequency at every input rate; loudness
 // is K-weighted at the input rate, as BS.1770 specifies it for any rate). Frames end at whole
 // input samples (hop_samples() is their mean spacing); onset times map back to input samples
-// exactly, less the resampler's constant delay (about 0.4 ms). Between 16 and 192 kHz the same
+// exactly, less the resampler's constant delay (about 0.2 ms). Between 16 and 192 kHz the same
 // music gives the same onsets within 1 ms and the same pulses (eval/sample_rates.py). Synthesis
 // and post-processing run at an internal rate, the input rate divided by an integer, and each
 // actuator chain's Upsampler brings its output back to the input rate. The vibration has
