@@ -77,7 +77,8 @@ const std::vector<float>& amen_analysis() {
 }
 
 int analysis_hop_samples() {
-    return static_cast<int>(ms_to_samples(Settings{}[P::analysis_hop_ms], Analyzer::kAnalysisRateHz));
+    return static_cast<int>(
+        ms_to_samples(Settings{}[P::analysis_hop_ms], Analyzer::kAnalysisRateHz));
 }
 
 const std::vector<Features>& amen_features() {

@@ -40,8 +40,8 @@ double rms(const std::vector<float>& y, size_t from) {
 }
 
 TEST(Resampler, ExactRatiosForTheUsualRatesAndABoundedOneOtherwise) {
-    for (const double fs : {16000.0, 22050.0, 32000.0, 44100.0, 48000.0, 88200.0, 96000.0,
-                            176400.0, 192000.0}) {
+    for (const double fs :
+         {16000.0, 22050.0, 32000.0, 44100.0, 48000.0, 88200.0, 96000.0, 176400.0, 192000.0}) {
         Resampler r;
         r.prepare(fs, 16000, 512);
         EXPECT_EQ(r.output_rate_hz(), 16000.0) << fs;
@@ -78,7 +78,8 @@ TEST(Resampler, UnitGainAtDcAndInThePassBand) {
         for (const double hz : {100.0, 1000.0, 4000.0, 0.98 * Resampler::kPassEdge * 16000}) {
             r.reset();
             const auto y = resample(r, sine(hz, fs, static_cast<size_t>(0.2 * fs)), 256);
-            EXPECT_NEAR(rms(y, 320), std::sqrt(0.5), 0.01 * std::sqrt(0.5)) << fs << " Hz in, " << hz;
+            EXPECT_NEAR(rms(y, 320), std::sqrt(0.5), 0.01 * std::sqrt(0.5))
+                << fs << " Hz in, " << hz;
         }
     }
 }

@@ -236,8 +236,7 @@ TEST(Engine, EverySupportedRateRuns) {
         expect_finite_and_bounded(y, 1.0, std::to_string(fs) + " Hz");
         EXPECT_GT(test::peak(y), 0.05) << fs;
         EXPECT_TRUE(observer.ok) << fs;
-        EXPECT_NEAR(observer.frames, static_cast<double>(y.size()) / engine.hop_samples(), 1)
-            << fs;
+        EXPECT_NEAR(observer.frames, static_cast<double>(y.size()) / engine.hop_samples(), 1) << fs;
         EXPECT_GT(observer.triggers, 5) << fs;
         EXPECT_EQ(engine.clipped_samples(), 0) << fs;
     }

@@ -11,10 +11,16 @@
 namespace tactus {
 namespace {
 constexpr double kPitchIntervalMs = 10.0;  // f0 changes slowly: update it every ~10 ms
+
+// The resampler's ratio for an input rate: to kAnalysisRateHz, or 1:1 below it.
+Resampler::Ratio analysis_ratio(double sample_rate_hz) {
+    return Resampler::ratio_for(sample_rate_hz,
+                                std::min(Analyzer::kAnalysisRateHz, sample_rate_hz));
 }
+}  // namespace
 
 double Analyzer::analysis_rate_for(double sample_rate_hz) {
-    const auto ratio = Resampler::ratio_for(sample_rate_hz, std::min(kAnalysisRateHz, sample_rate_hz));
+    const auto ratio = analysis_ratio(sample_rate_hz);
     return sample_rate_hz * static_cast<double>(ratio.up) / static_cast<double>(ratio.down);
 }
 
@@ -31,7 +37,7 @@ double Analyzer::hop_samples_for(const Settings& settings, double sample_rate_hz
 // Frame k ends after input floor((k H - 1) M / L) + 1: the same ends, shifted, from any start
 // that is a multiple of M H / gcd(H, L) input samples.
 int64_t Analyzer::frame_grid_samples(const Settings& settings, double sample_rate_hz) {
-    const auto ratio = Resampler::ratio_for(sample_rate_hz, std::min(kAnalysisRateHz, sample_rate_hz));
+    const auto ratio = analysis_ratio(sample_rate_hz);
     const int64_t hop = hop_for(settings, analysis_rate_for(sample_rate_hz));
     return ratio.down * (hop / std::gcd(hop, ratio.up));
 }
@@ -40,7 +46,7 @@ void Analyzer::prepare(const ProcessSpec& spec, const Settings& s) {
     sample_rate_hz_ = spec.sample_rate_hz;
     const double analysis_rate = analysis_rate_for(sample_rate_hz_);
     hop_ = hop_for(s, analysis_rate);
-    const auto ratio = Resampler::ratio_for(sample_rate_hz_, std::min(kAnalysisRateHz, sample_rate_hz_));
+    const auto ratio = analysis_ratio(sample_rate_hz_);
     const auto max_inputs = static_cast<int>(hop_ * ratio.down / ratio.up + 2);
     resampler_.prepare(sample_rate_hz_, std::min(kAnalysisRateHz, sample_rate_hz_), max_inputs);
     const ProcessSpec analysis{.sample_rate_hz = analysis_rate, .max_block = max_inputs};
@@ -60,8 +66,8 @@ void Analyzer::prepare(const ProcessSpec& spec, const Settings& s) {
     clean_.assign(static_cast<size_t>(max_inputs), 0.0f);
     analysed_.assign(static_cast<size_t>(max_inputs), 0.0f);
     dc_blocker_.prepare(analysis);
-    pitch_every_frames_ = std::max(
-        1, static_cast<int>(std::lround(kPitchIntervalMs * 1e-3 * analysis_rate / hop_)));
+    pitch_every_frames_ =
+        std::max(1, static_cast<int>(std::lround(kPitchIntervalMs * 1e-3 * analysis_rate / hop_)));
     reset();
 }
 
@@ -116,9 +122,11 @@ const Features& Analyzer::analyse() noexcept {
     f.onset_odf = onset.odf;
     f.onset = onset.onset;
     if (onset.onset) {  // analysis sample -> input sample, less the resampler's delay
-        const double at = (static_cast<double>(onset.onset_sample) -
-                           resampler_.delay_output_samples()) *
-                          static_cast<double>(resampler_.down()) / static_cast<double>(resampler_.up());
+        const double inputs_per_analysed =
+            static_cast<double>(resampler_.down()) / static_cast<double>(resampler_.up());
+        const double at =
+            (static_cast<double>(onset.onset_sample) - resampler_.delay_output_samples()) *
+            inputs_per_analysed;
         f.onset_sample = std::max<int64_t>(0, std::llround(at));
     }
     return f;

@@ -6,10 +6,11 @@
 // kAnalysisRateHz, whatever the input rate (16-192 kHz; an input below it is analysed at its
 // own rate): a Resampler brings the input there, so every window and hop is the same number of
 // analysis samples, the spectrum ends at the same frequency and the same music gives the same
-// frames at any input rate. Content above the resampler's band (6.4-8 kHz) is ignored, which
-// also keeps broadband noise out of the onset detection. Loudness (BS.1770 K-weighting, defined
-// at any rate) is computed on the input itself. Frame ends and onset times are input samples:
-// analysis sample n stands at input position n * M / L (dsp/resampler.hpp), exactly.
+// frames at any input rate. Content above the resampler's pass band (5.6 kHz; 60 dB down from
+// 7.2 kHz) is ignored, which also keeps broadband noise out of the onset detection. Loudness
+// (BS.1770 K-weighting, defined at any rate) is computed on the input itself. Frame ends and onset
+// times are input samples: analysis sample n stands at input position n * M / L
+// (dsp/resampler.hpp), exactly.
 #pragma once
 
 #include <cmath>

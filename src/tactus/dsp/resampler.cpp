@@ -30,8 +30,8 @@ void fft(std::vector<Complex>& x, bool inverse) {
     }
     std::vector<Complex> twiddle(n / 2);
     for (size_t k = 0; k < n / 2; ++k)
-        twiddle[k] = std::polar(1.0, (inverse ? 2 : -2) * kPi * static_cast<double>(k) /
-                                         static_cast<double>(n));
+        twiddle[k] = std::polar(
+            1.0, (inverse ? 2 : -2) * kPi * static_cast<double>(k) / static_cast<double>(n));
     for (size_t length = 2; length <= n; length <<= 1) {
         const size_t step = n / length;
         for (size_t start = 0; start < n; start += length)
@@ -72,7 +72,8 @@ Kernel design_kernel() {
         const double arg = 2 * cutoff * t;
         const double sinc = k == 0 ? 1.0 : std::sin(kPi * arg) / (kPi * arg);
         const double r = static_cast<double>(k) / half;
-        const double window = bessel_i0(beta * std::sqrt(std::max(0.0, 1 - r * r))) / bessel_i0(beta);
+        const double window =
+            bessel_i0(beta * std::sqrt(std::max(0.0, 1 - r * r))) / bessel_i0(beta);
         x[static_cast<size_t>(k + half)] = 2 * cutoff * sinc * window;
     }
     // Folded real cepstrum: log |H| -> its causal part doubled -> exp -> the minimum phase.
@@ -167,8 +168,8 @@ void Resampler::prepare(double input_rate_hz, double output_rate_hz, int max_blo
         float* phase = kernel_.data() + p * taps_;
         double sum = 0;
         for (int i = 0; i < taps_; ++i) {
-            const double t = (static_cast<double>(p) / static_cast<double>(up_) + i) *
-                             outputs_per_input;
+            const double t =
+                (static_cast<double>(p) / static_cast<double>(up_) + i) * outputs_per_input;
             sum += phase[taps_ - 1 - i] = static_cast<float>(kernel_at(k, t) * outputs_per_input);
         }
         for (int i = 0; i < taps_; ++i) phase[i] = static_cast<float>(phase[i] / sum);  // DC: 1

@@ -19,10 +19,10 @@ namespace tactus {
 
 class Resampler {
   public:
-    static constexpr double kPassEdge = 0.35;   // of the output rate: 5.6 kHz at 16 kHz
-    static constexpr double kStopEdge = 0.45;   // 7.2 kHz: above it, less than the input rates share
-    static constexpr double kStopBandDb = 60;   // Kaiser design attenuation
-    static constexpr int kMaxPhases = 1024;     // L at most; other ratios are approximated
+    static constexpr double kPassEdge = 0.35;  // of the output rate: 5.6 kHz at 16 kHz
+    static constexpr double kStopEdge = 0.45;  // 7.2 kHz: above it, less than the input rates share
+    static constexpr double kStopBandDb = 60;  // Kaiser design attenuation
+    static constexpr int kMaxPhases = 1024;    // L at most; other ratios are approximated
 
     struct Ratio {
         int64_t up = 1, down = 1;  // L, M

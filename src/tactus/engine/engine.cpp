@@ -178,8 +178,8 @@ void Engine::swap_in(const Settings& settings) {
     // The new pipeline starts on the grids one with these settings from the first sample has
     // (analysis frames: Analyzer::frame_grid_samples; an internal sample every rate_divisor_
     // input samples), so a change that keeps the hop keeps every frame and onset time.
-    const int64_t grid =
-        std::lcm(Analyzer::frame_grid_samples(settings, spec_.sample_rate_hz), int64_t{rate_divisor_});
+    const int64_t grid = std::lcm(Analyzer::frame_grid_samples(settings, spec_.sample_rate_hz),
+                                  int64_t{rate_divisor_});
     std::vector<float> past, past_power;
     int64_t to = 0, from = 0;
     std::unique_ptr<Pipeline> pipeline;
