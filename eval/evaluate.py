@@ -11,7 +11,8 @@ at +-25 and +-50 ms and the median signed timing offset (mir_eval), snare/kick v
 frequency ratio, hit gain -> output peak Spearman rho, share of output energy in 20-1000 Hz,
 output peak, silence in -> silence out, and the time from each hit's true onset to the output
 reaching half its pulse peak; then Sonic Pi's Amen break at every sample rate from 16 to 192 kHz
-(eval/sample_rates.py). The same measures follow on a held-out corpus: General MIDI drum
+(eval/sample_rates.py), and the corpus through each shipped actuator profile
+(eval/actuators.py). The same measures follow on a held-out corpus: General MIDI drum
 kits from three Debian soundfonts (eval/gm_kits.py), which no parameter was tuned on.
 """
 import argparse
@@ -28,6 +29,7 @@ import numpy as np
 import scipy.stats
 import soundfile
 
+import actuators
 import felt
 import gm_kits
 import sample_rates
@@ -233,6 +235,8 @@ def main():
     lines += [f"- digital silence in -> exact silence out: {'yes' if silence_exact else 'NO'}", ""]
     lines += sample_rates.section(sample_rates.measure(args.build_dir, work / "sample-rates",
                                                        args.preset)) + [""]
+    lines += actuators.evaluate(args.build_dir, work / "sonic-pi" / "corpus", work / "actuators",
+                                args.preset) + [""]
     if args.held_out == "gm":
         samples = work / "gm-samples"
         kits = gm_kits.render(samples)

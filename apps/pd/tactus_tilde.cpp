@@ -15,9 +15,8 @@
 // Threads: Pd calls the methods and the perform routine from its one scheduler thread, never at
 // once; perform() only runs the engine and copies (no allocation, lock or I/O), and the feature
 // outlets are fed from a clock set in perform() (outlets must not be called from DSP).
-#include <m_pd.h>
-
 #include <fmt/format.h>
+#include <m_pd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -64,6 +63,7 @@ class Object {
 
   private:
     void set(P id, double value);
+    void send_settings();
     void set_from_atom(P id, const t_atom& atom);
     void load_preset(const std::string& name);
     void load_actuator(int outlet, const std::string& name);
@@ -110,9 +110,8 @@ std::string atom_text(const t_atom& atom) {
 Object::Object(t_object* owner, const Options& options)
     : owner_(owner),
       canvas_(canvas_getcurrent()),
-      clock_(clock_new(owner, reinterpret_cast<t_method>(+[](PdObject* x) {
-                           x->object->flush_frames();
-                       }))),
+      clock_(clock_new(
+          owner, reinterpret_cast<t_method>(+[](PdObject* x) { x->object->flush_frames(); }))),
       options_(options),
       outputs_(static_cast<size_t>(options.actuators)) {
     for (int i = 0; i < options.actuators + options.thru; ++i) outlet_new(owner, &s_signal);
@@ -123,7 +122,9 @@ Object::Object(t_object* owner, const Options& options)
     if (!options.preset.empty()) load_preset(options.preset);
 }
 
-Object::~Object() { clock_free(clock_); }
+Object::~Object() {
+    clock_free(clock_);
+}
 
 // Settings, actuators and the block's rate and size as they are now; the engine starts silent.
 void Object::prepare(double sample_rate_hz, int block) {
@@ -198,12 +199,17 @@ void Object::flush_frames() {
 
 void Object::set(P id, double value) {
     settings_.set(id, value);  // throws std::invalid_argument naming the key
+    send_settings();
+}
+
+// The engine takes what differs from settings_ (kept for the next prepare while DSP is off).
+void Object::send_settings() {
     if (!running()) {
         stale_ = true;
         return;
     }
     try {
-        engine_->set(id, value);
+        engine_->set(settings_);
     } catch (const std::exception&) {
         stale_ = true;  // the engine's queue is full (its DSP is not running): prepare again
     }
@@ -225,20 +231,21 @@ std::filesystem::path Object::beside_patch(const std::string& name) const {
 // A preset replaces every setting, as --preset does: the table's defaults, then the file.
 void Object::load_preset(const std::string& name) {
     Settings next;
-    const std::filesystem::path file = name.ends_with(".toml") || name.find('/') != std::string::npos
-                                           ? resolve_preset(beside_patch(name).string())
-                                           : resolve_preset(name);
+    const std::filesystem::path file =
+        name.ends_with(".toml") || name.find('/') != std::string::npos
+            ? resolve_preset(beside_patch(name).string())
+            : resolve_preset(name);
     apply_preset_file(next, file);
-    for (const ParamSpec& s : param_table())
-        if (next[s.param] != settings_[s.param]) set(s.param, next[s.param]);
+    settings_ = next;
+    send_settings();
 }
 
 // Actuators are the engine's setup: a change prepares it again (its analysis starts afresh).
 void Object::load_actuator(int outlet, const std::string& name) {
     std::optional<ActuatorProfile> profile;
     if (name != "none") {
-        profile = tactus::load_actuator(resolve_actuator(
-            name.ends_with(".toml") ? beside_patch(name).string() : name));
+        profile = tactus::load_actuator(
+            resolve_actuator(name.ends_with(".toml") ? beside_patch(name).string() : name));
         for (const auto& warning : actuator_warnings(*profile, settings_))
             post("tactus~: warning: %s", warning.c_str());
     }
@@ -264,8 +271,7 @@ void Object::set_gain(int outlet, double gain_db) {
 
 void Object::print() const {
     post("tactus~: %d actuator outlet(s), %s", static_cast<int>(outputs_.size()),
-         engine_ ? fmt::format("{:g} Hz, latency {} samples", sample_rate_hz_,
-                               engine_->latency())
+         engine_ ? fmt::format("{:g} Hz, latency {} samples", sample_rate_hz_, engine_->latency())
                        .c_str()
                  : "not prepared (DSP off)");
     for (const ParamSpec& s : param_table())
@@ -285,14 +291,15 @@ void Object::message(t_symbol* selector, int argc, t_atom* argv) {
     const auto symbol = [&](int i) { return i < argc ? atom_text(argv[i]) : std::string(); };
     const auto number = [&](int i) {
         if (i >= argc || argv[i].a_type != A_FLOAT)
-            throw std::invalid_argument(fmt::format("{}: argument {} must be a number", name, i + 1));
+            throw std::invalid_argument(
+                fmt::format("{}: argument {} must be a number", name, i + 1));
         return static_cast<double>(atom_getfloat(&argv[i]));
     };
     try {
         if (const auto id = find_param(name)) {
             if (argc != 1)
-                throw std::invalid_argument(fmt::format("{}: needs one value ({})", name,
-                                                        range_text(spec(*id))));
+                throw std::invalid_argument(
+                    fmt::format("{}: needs one value ({})", name, range_text(spec(*id))));
             set_from_atom(*id, argv[0]);
         } else if (name == "preset" && argc == 1) {
             load_preset(symbol(0));
@@ -300,8 +307,9 @@ void Object::message(t_symbol* selector, int argc, t_atom* argv) {
             if (argc == 2) {
                 const double outlet = number(0);
                 if (outlet < 0 || outlet >= static_cast<double>(outputs_.size()))
-                    throw std::invalid_argument(fmt::format(
-                        "actuator: outlet {:g} out of range (0 to {})", outlet, outputs_.size() - 1));
+                    throw std::invalid_argument(
+                        fmt::format("actuator: outlet {:g} out of range (0 to {})", outlet,
+                                    outputs_.size() - 1));
                 load_actuator(static_cast<int>(outlet), symbol(1));
             } else {
                 load_actuator(-1, symbol(0));
@@ -369,7 +377,9 @@ void* make(t_symbol*, int argc, t_atom* argv) {
     return x;
 }
 
-void destroy(PdObject* x) { delete x->object; }
+void destroy(PdObject* x) {
+    delete x->object;
+}
 
 }  // namespace
 }  // namespace tactus::pd
@@ -377,17 +387,17 @@ void destroy(PdObject* x) { delete x->object; }
 extern "C" __attribute__((visibility("default"))) void tactus_tilde_setup() {
     using namespace tactus::pd;
     tactus_class = class_new(gensym("tactus~"), reinterpret_cast<t_newmethod>(make),
-                             reinterpret_cast<t_method>(destroy), sizeof(PdObject),
-                             CLASS_DEFAULT, A_GIMME, A_NULL);
+                             reinterpret_cast<t_method>(destroy), sizeof(PdObject), CLASS_DEFAULT,
+                             A_GIMME, A_NULL);
     CLASS_MAINSIGNALIN(tactus_class, PdObject, scalar_input);
-    class_addmethod(tactus_class,
-                    reinterpret_cast<t_method>(+[](PdObject* x, t_signal** sp) {
+    class_addmethod(tactus_class, reinterpret_cast<t_method>(+[](PdObject* x, t_signal** sp) {
                         if (x->object) x->object->dsp(sp);
                     }),
                     gensym("dsp"), A_CANT, A_NULL);
-    class_addanything(tactus_class, +[](PdObject* x, t_symbol* s, int argc, t_atom* argv) {
-        if (x->object) x->object->message(s, argc, argv);
-    });
+    class_addanything(
+        tactus_class, +[](PdObject* x, t_symbol* s, int argc, t_atom* argv) {
+            if (x->object) x->object->message(s, argc, argv);
+        });
     class_sethelpsymbol(tactus_class, gensym("tactus~"));
     post("tactus~ %s: music to vibration (Birnbaum & Wanderley)", TACTUS_VERSION);
 }

@@ -242,14 +242,20 @@ class TactusPlugin : public Plugin {
         const std::lock_guard lock(engine_mutex_);
         apply_changes();
     }
-    void apply_changes() {  // engine_mutex_ held
-        host_.take_changes([this](tactus::P id, double value) {
+    void apply_changes() {  // engine_mutex_ held; a program's changes build one pipeline
+        tactus::Settings next = engine_.settings();
+        host_.take_changes([&next](tactus::P id, double value) {
             try {
-                engine_.set(id, value);
+                next.set(id, value);
             } catch (const std::exception& e) {
                 d_stderr2("tactus: %s", e.what());
             }
         });
+        try {
+            engine_.set(next);
+        } catch (const std::exception& e) {
+            d_stderr2("tactus: %s", e.what());
+        }
     }
 
     std::vector<std::optional<tactus::P>> rows_;  // host parameter index -> table row

@@ -12,6 +12,7 @@
 
 #include "audio_view.hpp"
 #include "settings.hpp"
+#include "tactus/actuator/drive_meter.hpp"
 #include "tactus/dsp/downmix.hpp"
 #include "tactus/engine/analysis_rows.hpp"
 #include "tactus/io/actuator_file.hpp"
@@ -172,10 +173,8 @@ py::dict meter(const py::handle& vibration, double sample_rate_hz, const std::st
     std::vector<std::array<double, 6>> rows;
     {
         const py::gil_scoped_release unlocked;
-        perception::SensationMeter meter;
-        meter.prepare(
-            spec.sample_rate_hz, [&](double f) { return actuator.displacement_um_at(f); },
-            contact_area_cm2);
+        DriveMeter meter;
+        meter.prepare(spec.sample_rate_hz, actuator, contact_area_cm2);
         const auto on_reading = [&](const perception::MeterReading& r) {
             rows.push_back({r.time_s, r.level_db[0], r.level_db[1], r.level_db[2], r.level_db[3],
                             r.combined_db});

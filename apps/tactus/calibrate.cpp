@@ -34,21 +34,13 @@ struct CalibrateOptions {
     bool force = false;
 };
 
-// "DEV:CH" with CH from 1: the device and the channel from 0.
-std::pair<std::string, int> device_channel(const std::string& text, const std::string& option) {
-    const size_t colon = text.rfind(':');
-    if (colon == std::string::npos || colon == 0)
-        throw std::runtime_error(fmt::format("{} {}: give DEV:CH (CH from 1)", option, text));
-    return {text.substr(0, colon), live::parse_channel_list(text.substr(colon + 1), option)[0]};
-}
-
 void calibrate(const CalibrateOptions& o) {
     if (o.profile_out.empty()) throw std::runtime_error("calibrate: give -o PROFILE.toml");
     check_output({}, o.profile_out, o.force);  // no input file to protect
     std::optional<ActuatorProfile> base;
     if (!o.base.empty()) base = load_actuator(resolve_actuator(o.base));
-    const auto [out_device, out_channel] = device_channel(o.output, "--output");
-    const auto [in_device, in_channel] = device_channel(o.input, "--input");
+    const auto [out_device, out_channel] = live::parse_device_channel(o.output, "--output", false);
+    const auto [in_device, in_channel] = live::parse_device_channel(o.input, "--input", false);
 
     live::StreamRequest request;
     request.backend = o.backend.empty() ? RtAudio::UNSPECIFIED : live::backend_named(o.backend);

@@ -11,6 +11,7 @@ void add_onsets(CLI::App& app);
 void add_presets(CLI::App& app);
 void add_placement(CLI::App& app);
 void add_meter(CLI::App& app);
+void add_simulate(CLI::App& app);
 void add_export(CLI::App& app);
 void add_actuators(CLI::App& app);
 void add_report(CLI::App& app);

@@ -59,16 +59,6 @@ struct LiveOptions {
     PipelineOptions pipeline;
 };
 
-// "DEV[:CH]": the device and one channel counted from 0 (-1: all).
-std::pair<std::string, int> device_and_channel(const std::string& text) {
-    const size_t colon = text.rfind(':');
-    if (colon == std::string::npos || colon + 1 == text.size()) return {text, -1};
-    const std::string tail = text.substr(colon + 1);
-    if (tail.find_first_not_of("0123456789") != std::string::npos) return {text, -1};
-    const std::vector<int> channel = live::parse_channel_list(tail, "--input");
-    return {text.substr(0, colon), channel[0]};
-}
-
 // One value for every actuator, or one each; `what` names the option.
 template <typename T>
 T for_actuator(const std::vector<T>& values, size_t actuator, size_t actuators, const char* what,
@@ -107,7 +97,7 @@ live::StreamRequest stream_request(const LiveOptions& o, const live::Routing& ro
     r.output_device = o.output;
     r.output_channels = routing.device_outputs;
     if (!o.input.empty()) {
-        const auto [device, channel] = device_and_channel(o.input);
+        const auto [device, channel] = live::parse_device_channel(o.input, "--input", true);
         r.input_device = device;
         r.input_channels = channel < 0 ? -1 : 1;
         r.input_first_channel = std::max(channel, 0);

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
     tactus::cli::add_presets(app);
     tactus::cli::add_placement(app);
     tactus::cli::add_meter(app);
+    tactus::cli::add_simulate(app);
     tactus::cli::add_export(app);
     tactus::cli::add_actuators(app);
     tactus::cli::add_report(app);

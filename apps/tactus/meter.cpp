@@ -1,5 +1,6 @@
 // tactus meter FILE [--actuator NAME] [--contact-area CM2] [-o FILE.csv]: which channels of
-// touch a vibration file engages through an actuator, and how strongly (dB SL over time).
+// touch a vibration file engages through an actuator, and how strongly (dB SL over time). The
+// file is the actuator's drive, metered through its model (actuator/drive_meter.hpp).
 #include "tactus/perception/meter.hpp"
 
 #include <fmt/format.h>
@@ -12,6 +13,7 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "global_options.hpp"
+#include "tactus/actuator/drive_meter.hpp"
 #include "tactus/dsp/downmix.hpp"
 #include "tactus/io/actuator_file.hpp"
 #include "tactus/io/audio_reader.hpp"
@@ -83,16 +85,14 @@ void meter(const MeterOptions& o) {
         for (double v : r.level_db) out << fmt::format(",{:.2f}", v);
         out << fmt::format(",{:.2f}\n", r.combined_db);
     };
-    perception::SensationMeter meter;
+    DriveMeter meter;
     Progress progress("meter");
     std::vector<float> mono;
     int input_channels = 1;
     const RunSummary run = stream_file(
         o.input,
         [&](const ProcessSpec& spec) {
-            meter.prepare(
-                spec.sample_rate_hz, [&](double f) { return actuator.displacement_um_at(f); },
-                o.contact_area_cm2);
+            meter.prepare(spec.sample_rate_hz, actuator, o.contact_area_cm2);
             input_channels = spec.channels;
             mono.resize(kStreamBlockFrames);
         },

@@ -15,6 +15,7 @@
 #include "common.hpp"
 #include "global_options.hpp"
 #include "pipeline_options.hpp"
+#include "tactus/actuator/drive_meter.hpp"
 #include "tactus/export/haptic_track.hpp"
 #include "tactus/export/html_report.hpp"
 #include "tactus/io/text_output.hpp"
@@ -89,7 +90,7 @@ void report(const ReportOptions& o) {
     Engine engine(settings);
     engine.set_actuator(actuator);
     std::optional<Waveform> sound, vibration;
-    perception::SensationMeter meter;
+    DriveMeter meter;
     perception::MeterSummariser summariser;
     std::vector<std::vector<double>> features, program, levels;
     const auto on_reading = [&](const perception::MeterReading& r) {
@@ -103,9 +104,8 @@ void report(const ReportOptions& o) {
         if (!sound) {
             sound.emplace(engine.sample_rate_hz());
             vibration.emplace(engine.sample_rate_hz());
-            meter.prepare(
-                engine.sample_rate_hz(), [&](double f) { return metered.displacement_um_at(f); },
-                settings[P::perception_contact_area_cm2]);
+            meter.prepare(engine.sample_rate_hz(), metered,
+                          settings[P::perception_contact_area_cm2]);
         }
         for (int i = 0; i < frames; ++i) {
             float sum = 0;

@@ -21,6 +21,7 @@
 #include "support/engine_blocks.hpp"
 #include "support/live_values.hpp"
 #include "support/signals.hpp"
+#include "tactus/actuator/fit.hpp"
 #include "tactus/core/units.hpp"
 #include "tactus/engine/engine.hpp"
 #include "tactus/io/actuator_file.hpp"
@@ -145,21 +146,25 @@ TEST(EngineFrontEnd, ChannelsAreDownmixedInTheEngineAndTheirLoudnessSummed) {
     EXPECT_THROW(bad.prepare({.sample_rate_hz = fs, .channels = 2}), std::invalid_argument);
 }
 
+// The synthesis is shared, so it follows the first actuator's profile (actuator/fit.hpp); each
+// output has its own compensation, trim and delay.
 TEST(EngineFrontEnd, ActuatorsShareOneAnalysisWithTheirOwnProfileTrimAndDelay) {
     const double fs = 48000;
     const auto x = test::drum_pattern(fs, 2.0, 7).audio;
     const ActuatorProfile lra = load_actuator(resolve_actuator("lra-175"));
     Engine engine;
-    engine.set_actuators({ActuatorOutput{},
-                          ActuatorOutput{.profile = lra, .gain_db = 0, .delay_ms = 0},
+    engine.set_actuators({ActuatorOutput{.profile = lra, .gain_db = 0, .delay_ms = 0},
+                          ActuatorOutput{},
                           ActuatorOutput{.profile = {}, .gain_db = -6, .delay_ms = 10}});
     engine.prepare(fs, 64);
     const auto y = run(engine, {x}, {64});
-    const auto plain = mono_render(x, fs), compensated = mono_render(x, fs, {}, lra);
-    EXPECT_TRUE(bit_identical(y[0], plain));
-    EXPECT_TRUE(bit_identical(y[1], compensated));
+    const auto compensated = mono_render(x, fs, {}, lra);
+    const auto plain = mono_render(x, fs, fit_to_actuator(lra, Settings{}).settings);
+    EXPECT_TRUE(bit_identical(y[0], compensated));
+    EXPECT_TRUE(bit_identical(y[1], plain));
     EXPECT_FALSE(bit_identical(y[0], y[1]));
-    const size_t delay = 480;  // 10 ms
+    EXPECT_FALSE(bit_identical(y[1], mono_render(x, fs)));  // fitted: not the default mapping
+    const size_t delay = 480;                               // 10 ms
     for (size_t i = 0; i < delay; ++i) ASSERT_EQ(y[2][i], 0.0f);
     for (size_t i = delay; i < x.size(); ++i)
         ASSERT_EQ(y[2][i], static_cast<float>(plain[i - delay] * db_to_gain(-6))) << i;
@@ -356,6 +361,51 @@ TEST(EngineFrontEnd, StructuralChangesLoseNoOnsetAndLeaveNoGap) {
                       1e-3)
             << "a step at " << t / fs << " s";
     }
+}
+
+// A preset or a restored state arrives as a whole (Engine::set(const Settings&)): its live
+// values act at the same block as one set() each, bit for bit, and its structural ones end in
+// the same vibration as one set() each once the new pipeline has taken over.
+TEST(EngineFrontEnd, SettingsAtOnceActAsEachValueInTurn) {
+    const double fs = 44100;
+    constexpr int kBlock = 128;
+    const auto drums = test::drum_pattern(fs, 5.0, 3);
+    const std::vector<float>& x = drums.audio;
+    const size_t change_at = static_cast<size_t>(2.0 * fs) / kBlock * kBlock;
+    const auto render = [&](const Settings& target, bool at_once) {
+        Engine engine;
+        engine.prepare(fs, kBlock);
+        std::vector<float> y(x.size());
+        for (size_t done = 0; done < x.size(); done += kBlock) {
+            if (done == change_at) {
+                if (at_once) {
+                    engine.set(target);
+                } else {
+                    for (const ParamSpec& s : param_table())
+                        if (target[s.param] != engine.settings()[s.param])
+                            engine.set(s.param, target[s.param]);
+                }
+                EXPECT_TRUE(engine.settings() == target);
+            }
+            const size_t n = std::min<size_t>(kBlock, x.size() - done);
+            engine.process(x.data() + done, y.data() + done, static_cast<int>(n));
+        }
+        return y;
+    };
+    Settings live;
+    live.set(P::envelope_decay_ms, 60);
+    live.set(P::frequency_out_max, 300);
+    live.set(P::post_flatten_strength, 0.5);
+    EXPECT_EQ(render(live, true), render(live, false));
+
+    Settings structural = live;
+    structural.set(P::onset_window_ms, 8);
+    structural.set(P::post_lookahead_ms, 3);
+    const std::vector<float> at_once = render(structural, true),
+                             in_turn = render(structural, false);
+    const auto settled = static_cast<std::ptrdiff_t>(change_at + 0.1 * fs);
+    ASSERT_GT(test::peak(std::span(in_turn).subspan(static_cast<size_t>(settled))), 0.05);
+    EXPECT_TRUE(std::equal(at_once.begin() + settled, at_once.end(), in_turn.begin() + settled));
 }
 
 // A structural change long after the start (more than the priming input) that keeps the hop:

@@ -228,6 +228,17 @@ TEST(ChannelList, FromOne) {
         EXPECT_THROW(parse_channel_list(bad, "--x"), std::invalid_argument) << bad;
 }
 
+TEST(ChannelList, DeviceAndChannel) {
+    using Pair = std::pair<std::string, int>;
+    EXPECT_EQ(parse_device_channel("system:2", "--x", false), (Pair{"system", 1}));
+    EXPECT_EQ(parse_device_channel("hw:0:3", "--x", true), (Pair{"hw:0", 2}));
+    EXPECT_EQ(parse_device_channel("Built-in Audio", "--x", true), (Pair{"Built-in Audio", -1}));
+    EXPECT_EQ(parse_device_channel("dev:front", "--x", true), (Pair{"dev:front", -1}));
+    for (const char* bad : {"system", "system:", ":2", "dev:front", "dev:1,2"})
+        EXPECT_THROW(parse_device_channel(bad, "--x", false), std::invalid_argument) << bad;
+    EXPECT_THROW(parse_device_channel("system:0", "--x", true), std::invalid_argument);
+}
+
 TEST(StatusLine, SaysEveryMeter) {
     const std::string s = status_text(
         {.input_peak = 0.5f, .output_peak = 0, .load = 0.25, .xruns = 3, .frames = 0}, 2.0, 9, 4.4);

@@ -187,12 +187,15 @@ TEST(RealTime, WithActuatorCompensation) {
 // allocate there: a flattening design, a new pipeline), and process() picks each up (catching a
 // new pipeline up and crossfading to it) without an allocation, a free or a lock. Turning a
 // component's weight from or to 0 is structural (routing): weights are turned only between values
-// above 0. With several input channels their summed loudness is primed too.
-void expect_live_changes_are_real_time_safe(const Settings& start, double fs, int channels) {
+// above 0. With several input channels their summed loudness is primed too. With an actuator
+// profile each change goes through its fit (actuator/fit.hpp) on the control thread.
+void expect_live_changes_are_real_time_safe(const Settings& start, double fs, int channels,
+                                            std::optional<ActuatorProfile> actuator = {}) {
     const std::vector<float> x = varied_input(fs);
     std::vector<float> y(x.size());
     Engine engine(start);
-    engine.set_actuators({ActuatorOutput{}, ActuatorOutput{.profile = {}, .gain_db = -3}});
+    engine.set_actuators(
+        {ActuatorOutput{.profile = actuator}, ActuatorOutput{.profile = actuator, .gain_db = -3}});
     engine.enable_frame_queue();
     engine.prepare({.sample_rate_hz = fs, .max_block = 256, .channels = channels});
     std::vector<float> second(x.size());
@@ -237,6 +240,12 @@ TEST(RealTime, LiveParameterChanges) {
                       std::filesystem::path(TACTUS_SOURCE_DIR) / "presets" / "four-channel.toml");
     four.set(P::actuator_dc, 1);
     expect_live_changes_are_real_time_safe(four, 44100, 2);
+}
+
+TEST(RealTime, LiveParameterChangesFittedToAnActuator) {
+    for (const char* name : {"lra-175", "erm"})
+        expect_live_changes_are_real_time_safe(Settings{}, 48000, 1,
+                                               load_actuator(resolve_actuator(name)));
 }
 
 // The sensation meter is an offline tool, but after prepare() it does not allocate either.

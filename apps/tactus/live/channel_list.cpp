@@ -50,4 +50,16 @@ std::vector<int> parse_channel_list(const std::string& text, const std::string& 
     return channels;
 }
 
+std::pair<std::string, int> parse_device_channel(const std::string& text, const std::string& option,
+                                                 bool channel_optional) {
+    const size_t colon = text.rfind(':');
+    const bool numbered = colon != std::string::npos && colon > 0 && colon + 1 < text.size() &&
+                          text.find_first_not_of("0123456789", colon + 1) == std::string::npos;
+    if (numbered)
+        return {text.substr(0, colon), parse_channel_list(text.substr(colon + 1), option)[0]};
+    if (channel_optional) return {text, -1};
+    throw std::invalid_argument(
+        fmt::format("{} {}: give DEV:CH (CH from 1)", option, printable(text)));
+}
+
 }  // namespace tactus::live

@@ -44,12 +44,8 @@ void LiveControl::set(P id, double value) {
 }
 
 void LiveControl::apply(const Settings& next) {
-    for (int i = 0; i < static_cast<int>(P::count); ++i) {
-        const auto id = static_cast<P>(i);
-        if (next[id] == running_[id]) continue;
-        retry_while_full([&] { engine_.set(id, next[id]); });
-        running_.assign(id, next[id]);
-    }
+    retry_while_full([&] { engine_.set(next); });
+    running_ = next;
 }
 
 void LiveControl::load_preset_file(const std::filesystem::path& path) {

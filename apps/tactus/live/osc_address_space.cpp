@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "tactus/core/printable.hpp"
-#include "tactus/engine/output_trim.hpp"
+#include "tactus/engine/engine.hpp"
 
 namespace tactus::live {
 namespace {
@@ -79,9 +79,11 @@ OscCommand parse_actuator(const OscMessage& m, std::string_view rest, int actuat
                fmt::format("actuator '{}' does not exist: 1 to {}", printable(digits), actuators));
     expect_args(m, 1, 1, "one gain in dB");
     const double gain_db = number_arg(m, 0, "gain_db");
-    if (gain_db < ActuatorOutput::kMinGainDb || gain_db > 0)
-        refuse(m, fmt::format("gain {} dB is out of range: allowed {} to 0 dB", gain_db,
-                              ActuatorOutput::kMinGainDb));
+    try {
+        ActuatorOutput::check_gain_db(gain_db);
+    } catch (const std::invalid_argument& e) {
+        refuse(m, e.what());
+    }
     return ActuatorGain{n - 1, gain_db};
 }
 
@@ -112,10 +114,11 @@ OscCommand parse_osc(const OscMessage& m, int actuators) {
         if (m.args.size() == 1) refuse(m, "takes no arguments, or frequency_hz and amplitude");
         if (m.args.empty()) return TriggerPulse{};
         const double f = number_arg(m, 0, "frequency_hz"), a = number_arg(m, 1, "amplitude");
-        const double highest_hz = spec(P::frequency_out_max).max;
-        if (!(f > 0 && f <= highest_hz) || !(a >= 0 && a <= 1))
-            refuse(m, fmt::format("{} Hz, amplitude {}: allowed 0-{} Hz and amplitude 0-1", f, a,
-                                  highest_hz));
+        try {
+            Engine::check_trigger(f, a);
+        } catch (const std::invalid_argument& e) {
+            refuse(m, e.what());
+        }
         return TriggerPulse{true, f, a};
     }
     if (rest.starts_with("actuator/")) return parse_actuator(m, rest.substr(9), actuators);

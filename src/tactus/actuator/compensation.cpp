@@ -13,7 +13,11 @@ constexpr double kWidestFitRatio = 181.0;  // 7.5 octaves: FittedEq's 16 half-oc
 
 double ActuatorCompensation::target_db(double frequency_hz) const {
     const double f = std::clamp(frequency_hz, actuator_.band_low_hz, actuator_.band_high_hz);
-    return std::clamp(-actuator_.response_db(f), -kBoundDb, kBoundDb);
+    // Outside the band nothing is lifted towards what the actuator cannot play: the edge's
+    // value falls away at the profile's roll-off.
+    const double outside_octaves = std::abs(std::log2(std::max(frequency_hz, kLowestFitHz) / f));
+    return std::clamp(-actuator_.response_db(f), -kBoundDb, kBoundDb) -
+           actuator_.rolloff_db_per_octave * outside_octaves;
 }
 
 double ActuatorCompensation::notch_db(double frequency_hz) const {

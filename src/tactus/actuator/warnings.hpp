@@ -1,7 +1,6 @@
-// What a preset asks of an actuator that it cannot do: one line each, for stderr. The preset's
-// vibration frequencies outside the usable band (e.g. 40 Hz on a 175 Hz LRA), pressure-range
-// content (NPIII, 0.4-3 Hz, paper §5.4) without DC capability, an ERM's frequency tied to its
-// drive, attacks faster than the actuator rises, a drive above its maximum.
+// What a preset asks of an actuator that it cannot do, and what the engine does instead: at most
+// one line (actuator/fit.hpp's note), for stderr or a host's log. Every front end prints it; the
+// engine applies the fit itself.
 #pragma once
 
 #include <string>

@@ -19,6 +19,11 @@ BiquadCoefficients BiquadCoefficients::highpass(double cutoff_hz, double q, doub
     return normalised((1 + cw) / 2, -(1 + cw), (1 + cw) / 2, 1 + alpha, -2 * cw, 1 - alpha);
 }
 
+BiquadCoefficients BiquadCoefficients::bandpass(double centre_hz, double q, double fs) {
+    const double w = 2.0 * kPi * centre_hz / fs, cw = std::cos(w), alpha = std::sin(w) / (2 * q);
+    return normalised(alpha, 0, -alpha, 1 + alpha, -2 * cw, 1 - alpha);
+}
+
 BiquadCoefficients BiquadCoefficients::peaking(double centre_hz, double q, double gain_db,
                                                double fs) {
     const double a = std::pow(10.0, gain_db / 40.0);

@@ -16,6 +16,8 @@ struct BiquadCoefficients {
 
     static BiquadCoefficients lowpass(double cutoff_hz, double q, double sample_rate_hz);
     static BiquadCoefficients highpass(double cutoff_hz, double q, double sample_rate_hz);
+    // Band-pass with 0 dB at the centre: a driven resonance's velocity, 1 / |1 + jQ(x - 1/x)|.
+    static BiquadCoefficients bandpass(double centre_hz, double q, double sample_rate_hz);
     static BiquadCoefficients peaking(double centre_hz, double q, double gain_db,
                                       double sample_rate_hz);
     static BiquadCoefficients low_shelf(double corner_hz, double gain_db, double sample_rate_hz);

@@ -37,9 +37,7 @@ AnalysisRows::AnalysisRows(const Engine& engine, ActuatorProfile actuator,
     : engine_(engine), actuator_(std::move(actuator)), on_row_(std::move(on_row)) {}
 
 void AnalysisRows::start(double sample_rate_hz) {
-    meter_.prepare(
-        sample_rate_hz, [this](double f) { return actuator_.displacement_um_at(f); },
-        engine_.settings()[P::perception_contact_area_cm2]);
+    meter_.prepare(sample_rate_hz, actuator_, engine_.settings()[P::perception_contact_area_cm2]);
 }
 
 void AnalysisRows::take_frames(Engine& engine) {

@@ -1,16 +1,19 @@
 // The rows `tactus analyze` writes and tactus.analyze() returns: every analysis frame's features
 // and vibration program (paper Figure 4), with the sensation level each channel of touch receives
-// from the vibration through an actuator (perception/meter.hpp, readings every 10 ms: a row takes
-// the levels at its own time, interpolated between the readings around it). Frames come off the engine's frame queue between
-// process() calls, as a live front end takes them; a row is handed on once the meter has heard
-// the vibration up to its time. Setup/offline thread only (not real-time: it allocates).
+// from the vibration through an actuator (actuator/drive_meter.hpp, readings every 10 ms: a row
+// takes the levels at its own time, interpolated between the readings around it). Frames come off
+// the engine's frame queue between process() calls, as a live front end takes them; a row is handed
+// on once the meter has heard the vibration up to its time. Setup/offline thread only (not
+// real-time: it allocates).
 #pragma once
 
 #include <array>
 #include <deque>
 #include <functional>
 #include <string_view>
+#include <vector>
 
+#include "tactus/actuator/drive_meter.hpp"
 #include "tactus/actuator/profile.hpp"
 #include "tactus/engine/engine.hpp"
 #include "tactus/perception/meter.hpp"
@@ -55,7 +58,7 @@ class AnalysisRows {
     const Engine& engine_;
     ActuatorProfile actuator_;
     std::function<void(const Row&)> on_row_;
-    perception::SensationMeter meter_;
+    DriveMeter meter_;
     std::deque<Row> pending_;
     std::deque<perception::MeterReading> readings_;
     perception::MeterReading before_;  // the latest reading at or before the next row

@@ -7,6 +7,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "tactus/actuator/fit.hpp"
 #include "tactus/core/units.hpp"
 #include "tactus/dsp/denormals.hpp"
 #include "tactus/dsp/downmix.hpp"
@@ -57,10 +58,17 @@ void Engine::check_sample_rate(double sample_rate_hz) {
                         kMinSampleRateHz, kMaxSampleRateHz));
 }
 
+// What the pipeline runs: the settings fitted to the first actuator's profile (actuator/fit.hpp),
+// as its dc decides the pressure.
+Settings Engine::fitted(const Settings& settings) const {
+    const auto& profile = outputs_.front().profile;
+    return profile ? fit_to_actuator(*profile, settings).settings : settings;
+}
+
 std::unique_ptr<Pipeline> Engine::make_pipeline(const Settings& settings, int64_t origin) const {
     auto pipeline = std::make_unique<Pipeline>();
     pipeline->prepare({.sample_rate_hz = spec_.sample_rate_hz, .max_block = spec_.max_block},
-                      settings, outputs_, origin);
+                      fitted(settings), outputs_, origin);
     pipeline->set_extra_features(extra_features());
     pipeline->set_source(source_);
     return pipeline;
@@ -148,27 +156,54 @@ void Engine::set(P id, double value) {
     const std::lock_guard lock(control_);
     Settings next = settings_;
     next.set(id, value);  // throws std::invalid_argument naming the key
-    // A value it already has changes nothing (a restored state or a program sets every
-    // parameter: a structural one would otherwise build a pipeline for nothing).
-    if (next[id] == settings_[id]) return;
-    if (prepared_) {
-        free_retired();
-        if (tactus::spec(id).change == ParamChange::structural ||
-            flutter_enabled(next) != flutter_enabled(settings_) ||
-            pressure_enabled(next) != pressure_enabled(settings_)) {
-            swap_in(next);
-        } else if (shapes_flattening(id)) {
-            Change change{
-                .kind = Change::Kind::flattening, .index = static_cast<int>(id), .value = next[id]};
-            change.design = flattening_design(spec_.sample_rate_hz / rate_divisor_, next);
-            send(change);
-        } else {
-            send({.kind = Change::Kind::parameter,
-                  .index = static_cast<int>(id),
-                  .value = next[id]});
-        }
+    apply(next);
+}
+
+void Engine::set(const Settings& next) {
+    const std::lock_guard lock(control_);
+    apply(next);
+}
+
+// control_ held. A value the engine already has changes nothing (a restored state or a program
+// sets every parameter: a structural one would otherwise build a pipeline for nothing); any
+// structural difference builds one pipeline with all of them; live ones go one by one, each
+// recorded as it is sent, so a full queue leaves settings_ saying what the audio thread got.
+// The running pipeline has the settings fitted to the actuator (actuator/fit.hpp): what is
+// compared and sent is what the fit makes of them (a parameter and those derived from it).
+void Engine::apply(const Settings& next) {
+    if (next == settings_) return;
+    if (!prepared_) {
+        settings_ = next;
+        return;
     }
-    settings_ = next;
+    free_retired();
+    const Settings was = fitted(settings_), now = fitted(next);
+    bool rebuild = flutter_enabled(now) != flutter_enabled(was) ||
+                   pressure_enabled(now) != pressure_enabled(was);
+    for (const ParamSpec& s : param_table())
+        rebuild = rebuild || (s.change == ParamChange::structural && now[s.param] != was[s.param]);
+    if (rebuild) {
+        swap_in(next);
+        settings_ = next;
+        return;
+    }
+    Settings sent = was;  // what the audio thread has
+    for (const ParamSpec& s : param_table()) {
+        const P id = s.param;
+        if (now[id] != sent[id]) {
+            Change change{
+                .kind = Change::Kind::parameter, .index = static_cast<int>(id), .value = now[id]};
+            if (shapes_flattening(id)) {
+                Settings designed = sent;
+                designed.assign(id, now[id]);
+                change.kind = Change::Kind::flattening;
+                change.design = flattening_design(spec_.sample_rate_hz / rate_divisor_, designed);
+            }
+            send(change);
+            sent.assign(id, now[id]);
+        }
+        settings_.assign(id, next[id]);
+    }
 }
 
 // A pipeline for `settings`, primed with the input the running one has heard, handed to the
@@ -229,12 +264,16 @@ void Engine::inject(const ControlFrame& frame) {
         throw std::runtime_error("engine: too many control frames waiting for the audio thread");
 }
 
-void Engine::trigger(double frequency_hz, double amplitude) {
+void Engine::check_trigger(double frequency_hz, double amplitude) {
     const double highest_hz = tactus::spec(P::frequency_out_max).max;
     if (!(frequency_hz > 0 && frequency_hz <= highest_hz) || !(amplitude >= 0 && amplitude <= 1))
         throw std::invalid_argument(
             fmt::format("trigger {} Hz, amplitude {}: allowed 0-{} Hz and amplitude 0-1",
                         frequency_hz, amplitude, highest_hz));
+}
+
+void Engine::trigger(double frequency_hz, double amplitude) {
+    check_trigger(frequency_hz, amplitude);
     ControlFrame frame;
     {
         const std::lock_guard lock(control_);

@@ -84,7 +84,9 @@ class Engine {
 
     // ---- setup ----
     // One actuator output (the CLI's default): none means no compensation. Its `dc` replaces
-    // the actuator.dc setting, which gates the NPIII pressure.
+    // the actuator.dc setting, which gates the NPIII pressure, and the pipeline runs the
+    // settings fitted to its profile (actuator/fit.hpp: band, flutter, pressure; settings()
+    // stays as set). With several outputs the first one's profile decides both.
     void set_actuator(std::optional<ActuatorProfile> actuator);
     // N actuator outputs; throws std::invalid_argument for a bad trim or delay, or none.
     void set_actuators(std::vector<ActuatorOutput> outputs);
@@ -117,11 +119,16 @@ class Engine {
     // settings; after, through the audio thread (live: gliding; structural: swapped in). A value
     // it already has changes nothing.
     void set(P id, double value);
+    // Every parameter at once (a preset, a restored state): the structural ones that differ
+    // build one new pipeline between them, not one each.
+    void set(const Settings& settings);
     void set_actuator_gain_db(int actuator, double gain_db);
     // The vibration program from outside: applied at the audio thread's next block.
     void inject(const ControlFrame& frame);
     // A pulse at `frequency_hz` and `amplitude` with the envelope of the current settings.
     void trigger(double frequency_hz, double amplitude);
+    // What trigger() accepts: throws std::invalid_argument naming the values (any thread).
+    static void check_trigger(double frequency_hz, double amplitude);
     void set_program_source(ProgramSource source);
     // One reader thread: the oldest frame not yet read, if any.
     bool pop_frame(AnalysisFrame& frame);
@@ -165,7 +172,9 @@ class Engine {
         Engine& engine_;
     };
 
+    Settings fitted(const Settings& settings) const;
     std::unique_ptr<Pipeline> make_pipeline(const Settings& settings, int64_t origin) const;
+    void apply(const Settings& next);        // control thread, control_ held
     void swap_in(const Settings& settings);  // control thread
     void send(const Change& change);
     void free_retired();  // control thread

@@ -9,10 +9,18 @@
 
 namespace tactus {
 
-void ActuatorOutput::check(int index) const {
+void ActuatorOutput::check_gain_db(double gain_db) {
     if (!(gain_db >= kMinGainDb && gain_db <= 0))
-        throw std::invalid_argument(fmt::format("actuator {}: gain {} dB is outside {} to 0 dB",
-                                                index, gain_db, kMinGainDb));
+        throw std::invalid_argument(
+            fmt::format("gain {} dB is outside {} to 0 dB", gain_db, kMinGainDb));
+}
+
+void ActuatorOutput::check(int index) const {
+    try {
+        check_gain_db(gain_db);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(fmt::format("actuator {}: {}", index, e.what()));
+    }
     if (!(delay_ms >= 0 && delay_ms <= kMaxDelayMs))
         throw std::invalid_argument(fmt::format("actuator {}: delay {} ms is outside 0 to {} ms",
                                                 index, delay_ms, kMaxDelayMs));

@@ -22,6 +22,8 @@ struct ActuatorOutput {
     static constexpr double kMaxDelayMs = 1000;
     // Throws std::invalid_argument naming the actuator index and the value.
     void check(int index) const;
+    // Throws std::invalid_argument naming the gain (any thread).
+    static void check_gain_db(double gain_db);
 };
 
 class OutputTrim {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tactus/actuator/actuator_model.hpp"
 #include "tactus/core/units.hpp"
 #include "tactus/dsp/clip.hpp"
 #include "tactus/params/components.hpp"
@@ -37,8 +38,10 @@ void PostChain::prepare(const ProcessSpec& spec, const Settings& s,
     pressure_on_ = pressure_enabled(s);
     first_band_.prepare(spec, {.low_hz = low_hz, .high_hz = high_hz, .order = kFirstBandOrder});
     flatten_.prepare(spec, flattening_inputs(s));
-    compensate_ = actuator != nullptr;
-    if (actuator) compensation_.prepare(spec, *actuator);
+    erm_ = actuator != nullptr && actuator->type == ActuatorType::erm;
+    compensate_ = actuator != nullptr && !erm_;
+    if (compensate_) compensation_.prepare(spec, *actuator);
+    if (erm_) erm_drive_.prepare(spec, erm_spin_time_constant_ms(*actuator));
     max_drive_ = actuator ? actuator->max_drive : 1.0;
     limiter_.prepare(spec, s[P::post_lookahead_ms], {});
     set_live(s, 0);
@@ -72,6 +75,7 @@ void PostChain::reset() noexcept {
     flatten_.reset();
     flutter_peak_.reset();
     compensation_.reset();
+    erm_drive_.reset();
     limiter_.reset();
     last_band_.reset();
     clipped_ = 0;
@@ -79,6 +83,13 @@ void PostChain::reset() noexcept {
 
 void PostChain::process(float* samples, float* flutter, const float* pressure, int count) noexcept {
     first_band_.process(samples, count);
+    if (erm_) {
+        limiter_.process(samples, count);
+        erm_drive_.process(samples, count, float_at_most(ceiling_));
+        clipped_ += clip(samples, count, float_at_most(clip_ceiling_));
+        clip_ceiling_ = ceiling_;
+        return;
+    }
     flatten_.process(samples, count);
     if (flutter_on_ && flutter) {
         if (flutter_peak_on_)

@@ -17,6 +17,12 @@
 // so the sum stays under the ceiling. It is not delayed by the limiter's look-ahead (1.5 ms
 // against NPIII's >= 330 ms periods). With both off and no actuator the chain is exactly the
 // paper's.
+// An ERM (its vibration frequency follows its speed: only the carrier's intensity can reach the
+// skin) takes the carrier's intensity instead, shaped for its spin-up (erm_drive.hpp):
+//   carrier -> band-limit -> limiter -> ERM drive -> clip
+// without the flattening (a carrier frequency the skin never feels) and the compensation (its
+// response is its speed's, not the drive's spectrum's); the flutter and pressure are off on it
+// (actuator/fit.hpp).
 #pragma once
 
 #include <algorithm>
@@ -26,6 +32,7 @@
 #include "tactus/core/units.hpp"
 #include "tactus/params/params.hpp"
 #include "tactus/post/band_limit.hpp"
+#include "tactus/post/erm_drive.hpp"
 #include "tactus/post/flattening_filter.hpp"
 #include "tactus/post/peak_limiter.hpp"
 
@@ -71,6 +78,8 @@ class PostChain {
     FlatteningFilter flatten_;
     ActuatorCompensation compensation_;
     bool compensate_ = false;
+    bool erm_ = false;
+    ErmDrive erm_drive_;
     PeakLimiter limiter_;
     Biquad flutter_peak_;
     bool flutter_on_ = false, flutter_peak_on_ = false, pressure_on_ = false;
