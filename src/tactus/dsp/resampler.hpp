@@ -45,6 +45,8 @@ class Resampler {
     // position p shows in the output near p * L / M + delay_output_samples().
     double delay_output_samples() const { return delay_output_samples_; }
     int64_t outputs_written() const { return next_output_; }
+    // Input samples each output reads (the kernel's span, padded to a multiple of 8).
+    int taps() const { return taps_; }
 
     // count <= max_block input samples in; returns the output samples written to `out` (at
     // most count, as the output rate is not above the input rate).
