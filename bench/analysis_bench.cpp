@@ -15,21 +15,24 @@
 #include "tactus/analysis/pitch_yin.hpp"
 #include "tactus/analysis/stft_frame.hpp"
 #include "tactus/core/units.hpp"
+#include "tactus/dsp/resampler.hpp"
 #include "tactus/dsp/sample_history.hpp"
 
 namespace tactus::bench {
 namespace {
 
+constexpr double kAnalysisRateHz = Analyzer::kAnalysisRateHz;
+
 // The STFT window, sized as Analyzer::prepare sizes it (the Analyzer does not expose it).
 int window_samples(const Settings& s) {
-    return nearest_power_of_two(ms_to_samples(s[P::analysis_window_ms], kRateHz));
+    return nearest_fft_size(ms_to_samples(s[P::analysis_window_ms], kAnalysisRateHz));
 }
 
-// Runs `analyse(history)` once per hop over the Amen break; counts frames.
+// Runs `analyse(history)` once per hop over the Amen break at the analysis rate; counts frames.
 template <typename Analyse>
 void per_frame(benchmark::State& state, int history_samples, Analyse analyse) {
-    const std::vector<float>& in = amen();
-    const int hop = hop_samples();
+    const std::vector<float>& in = amen_analysis();
+    const int hop = analysis_hop_samples();
     SampleHistory history;
     history.prepare(history_samples);
     for (auto _ : state) {
@@ -44,7 +47,7 @@ void per_frame(benchmark::State& state, int history_samples, Analyse analyse) {
 
 void StftFrameAnalyse(benchmark::State& state) {
     StftFrame stft;
-    stft.prepare(window_samples({}), kRateHz);
+    stft.prepare(window_samples({}), kAnalysisRateHz);
     per_frame(state, stft.window_samples(), [&](const SampleHistory& h) {
         stft.analyse(h);
         benchmark::DoNotOptimize(stft.magnitudes().data());
@@ -62,11 +65,11 @@ const Spectra& amen_spectra() {
     static const Spectra spectra = [] {
         Spectra s;
         StftFrame stft;
-        stft.prepare(window_samples({}), kRateHz);
+        stft.prepare(window_samples({}), kAnalysisRateHz);
         SampleHistory history;
         history.prepare(stft.window_samples());
-        const std::vector<float>& in = amen();
-        const int hop = hop_samples();
+        const std::vector<float>& in = amen_analysis();
+        const int hop = analysis_hop_samples();
         for (size_t i = 0; i + hop <= in.size(); i += hop) {
             history.write(in.data() + i, hop);
             stft.analyse(history);
@@ -102,8 +105,8 @@ BENCHMARK(Noisiness);
 
 void Loudness(benchmark::State& state) {
     const Settings settings;
-    const std::vector<float>& in = amen();
-    const int hop = hop_samples();
+    const std::vector<float>& in = amen();  // at the input rate, as the Analyzer runs it
+    const int hop = static_cast<int>(kRateHz / frame_rate_hz());
     tactus::Loudness loudness;
     loudness.prepare({.sample_rate_hz = kRateHz}, settings[P::loudness_window_ms]);
     for (auto _ : state) {
@@ -120,9 +123,9 @@ BENCHMARK(Loudness);
 void PitchYinAnalyse(benchmark::State& state) {
     const Settings s;
     PitchYin pitch;
-    pitch.prepare({.sample_rate_hz = kRateHz},
+    pitch.prepare({.sample_rate_hz = kAnalysisRateHz},
                   {.min_hz = s[P::pitch_min_hz],
-                   .max_hz = std::min(s[P::pitch_max_hz], 0.45 * kRateHz),
+                   .max_hz = std::min(s[P::pitch_max_hz], 0.45 * kAnalysisRateHz),
                    .threshold = s[P::pitch_threshold]});  // as the Analyzer clamps it
     per_frame(state, pitch.span_samples(),
               [&](const SampleHistory& h) { benchmark::DoNotOptimize(pitch.analyse(h)); });
@@ -132,7 +135,7 @@ BENCHMARK(PitchYinAnalyse);
 void OnsetDetectorAnalyse(benchmark::State& state) {
     const Settings s;
     OnsetDetector onsets;
-    onsets.prepare({.sample_rate_hz = kRateHz}, hop_samples(),
+    onsets.prepare({.sample_rate_hz = kAnalysisRateHz}, analysis_hop_samples(),
                    {s[P::onset_window_ms], s[P::onset_threshold], s[P::onset_ratio],
                     s[P::onset_history_ms], s[P::onset_min_interval_ms]});
     per_frame(state, onsets.span_samples(),
@@ -140,16 +143,35 @@ void OnsetDetectorAnalyse(benchmark::State& state) {
 }
 BENCHMARK(OnsetDetectorAnalyse);
 
-// The whole analysis stage (YIN every ~10 ms, the rest every hop), per input sample.
+// The Resampler from the input rate to the analysis rate, per input sample.
+void ResamplerToAnalysisRate(benchmark::State& state) {
+    const std::vector<float>& in = amen();
+    Resampler resampler;
+    constexpr int kBlock = 128;
+    resampler.prepare(kRateHz, kAnalysisRateHz, kBlock);
+    std::vector<float> out(kBlock);
+    for (auto _ : state) {
+        resampler.reset();
+        for (size_t i = 0; i + kBlock <= in.size(); i += kBlock)
+            benchmark::DoNotOptimize(resampler.process(in.data() + i, kBlock, out.data()));
+    }
+    set_items(state, in.size(), "samples");
+}
+BENCHMARK(ResamplerToAnalysisRate);
+
+// The whole analysis stage (resampler, YIN every ~10 ms, the rest every hop), per input sample.
 void WholeAnalyzer(benchmark::State& state) {
     const std::vector<float>& in = amen();
     Analyzer analyzer;
     analyzer.prepare({.sample_rate_hz = kRateHz}, Settings{});
-    const int hop = analyzer.hop_samples();
     for (auto _ : state) {
         analyzer.reset();
-        for (size_t i = 0; i + hop <= in.size(); i += hop)
-            if (analyzer.process(in.data() + i, hop)) benchmark::DoNotOptimize(analyzer.analyse());
+        for (size_t i = 0; i < in.size();) {
+            const auto chunk = std::min<size_t>(in.size() - i, analyzer.samples_to_next_frame());
+            if (analyzer.process(in.data() + i, static_cast<int>(chunk)))
+                benchmark::DoNotOptimize(analyzer.analyse());
+            i += chunk;
+        }
     }
     set_items(state, in.size(), "samples");
 }

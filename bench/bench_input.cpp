@@ -6,6 +6,8 @@
 #include <utility>
 
 #include "tactus/analysis/analyzer.hpp"
+#include "tactus/core/units.hpp"
+#include "tactus/dsp/resampler.hpp"
 #include "tactus/engine/engine.hpp"
 #include "tactus/io/audio_reader.hpp"
 #include "tactus/mapping/mapper.hpp"
@@ -15,14 +17,15 @@ namespace tactus::bench {
 namespace {
 
 struct EngineRates {
-    int hop_samples, rate_divisor;
+    double frame_rate_hz;
+    int rate_divisor;
 };
 
 const EngineRates& engine_rates() {
     static const EngineRates rates = [] {
         Engine engine;
         engine.prepare(kRateHz, Engine::kMaxBlock);
-        return EngineRates{engine.hop_samples(), engine.rate_divisor()};
+        return EngineRates{kRateHz / engine.hop_samples(), engine.rate_divisor()};
     }();
     return rates;
 }
@@ -43,8 +46,8 @@ const std::vector<float>& amen() {
     return samples;
 }
 
-int hop_samples() {
-    return engine_rates().hop_samples;
+double frame_rate_hz() {
+    return engine_rates().frame_rate_hz;
 }
 
 int rate_divisor() {
@@ -55,15 +58,41 @@ double internal_rate_hz() {
     return kRateHz / rate_divisor();
 }
 
+const std::vector<float>& amen_analysis() {
+    static const std::vector<float> samples = [] {
+        const std::vector<float>& in = amen();
+        Resampler resampler;
+        resampler.prepare(kRateHz, Analyzer::kAnalysisRateHz, Engine::kMaxBlock);
+        std::vector<float> out(in.size());
+        size_t written = 0;
+        for (size_t i = 0; i < in.size(); i += Engine::kMaxBlock) {
+            const auto count = std::min<size_t>(in.size() - i, Engine::kMaxBlock);
+            written += static_cast<size_t>(
+                resampler.process(in.data() + i, static_cast<int>(count), out.data() + written));
+        }
+        out.resize(written);
+        return out;
+    }();
+    return samples;
+}
+
+int analysis_hop_samples() {
+    return static_cast<int>(
+        ms_to_samples(Settings{}[P::analysis_hop_ms], Analyzer::kAnalysisRateHz));
+}
+
 const std::vector<Features>& amen_features() {
     static const std::vector<Features> features = [] {
         Analyzer analyzer;
         analyzer.prepare({.sample_rate_hz = kRateHz}, Settings{});
         std::vector<Features> out;
         const std::vector<float>& in = amen();
-        const int hop = analyzer.hop_samples();
-        for (size_t i = 0; i + hop <= in.size(); i += hop)
-            if (analyzer.process(in.data() + i, hop)) out.push_back(analyzer.analyse());
+        for (size_t i = 0; i < in.size();) {
+            const auto chunk = std::min<size_t>(in.size() - i, analyzer.samples_to_next_frame());
+            if (analyzer.process(in.data() + i, static_cast<int>(chunk)))
+                out.push_back(analyzer.analyse());
+            i += chunk;
+        }
         return out;
     }();
     return features;
@@ -72,7 +101,7 @@ const std::vector<Features>& amen_features() {
 const std::vector<ControlFrame>& amen_control() {
     static const std::vector<ControlFrame> frames = [] {
         Mapper mapper;
-        mapper.prepare(Settings{}, kRateHz / hop_samples());
+        mapper.prepare(Settings{}, frame_rate_hz());
         std::vector<ControlFrame> out;
         for (const Features& f : amen_features()) out.push_back(mapper.map(f));
         return out;
@@ -83,12 +112,14 @@ const std::vector<ControlFrame>& amen_control() {
 const std::vector<int>& internal_samples_per_hop() {
     static const std::vector<int> counts = [] {
         // Internal sample k stands at input sample k * divisor: those due for the input
-        // samples [p, p + hop).
-        const int64_t hop = hop_samples(), divisor = rate_divisor();
+        // samples since the previous frame's end.
+        const int64_t divisor = rate_divisor();
         std::vector<int> out(amen_control().size());
+        int64_t p = 0;
         for (size_t f = 0; f < out.size(); ++f) {
-            const int64_t p = static_cast<int64_t>(f) * hop;
-            out[f] = static_cast<int>(ceil_div(p + hop, divisor) - ceil_div(p, divisor));
+            const int64_t end = amen_features()[f].frame_end_sample;
+            out[f] = static_cast<int>(ceil_div(end, divisor) - ceil_div(p, divisor));
+            p = end;
         }
         return out;
     }();

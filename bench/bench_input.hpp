@@ -20,18 +20,23 @@ inline constexpr const char* kAmenPath = "/usr/share/sonic-pi/samples/loop_amen_
 
 const std::vector<float>& amen();  // read once; its rate is kRateHz
 
-// Read once from the default Engine prepared at kRateHz: its analysis hop in input samples, and
+// Read once from the default Engine prepared at kRateHz: its analysis frames per second, and
 // input samples per internal (synthesis and post-processing) sample.
-int hop_samples();
+double frame_rate_hz();
 int rate_divisor();
 double internal_rate_hz();  // kRateHz / rate_divisor() (11.025 kHz)
+
+// amen() at the analysis rate (Analyzer::kAnalysisRateHz), through the Analyzer's Resampler,
+// and the default analysis hop there: what the feature extractors read.
+const std::vector<float>& amen_analysis();
+int analysis_hop_samples();
 
 // The default Analyzer's features for each analysis hop of amen().
 const std::vector<Features>& amen_features();
 // One control frame per analysis hop: amen_features() through the default Mapper.
 const std::vector<ControlFrame>& amen_control();
 // Internal samples the Voice renders during each hop, before that hop's control frame is
-// applied, as Engine::process schedules them (about hop_samples() / rate_divisor()).
+// applied, as Engine::process schedules them (about kRateHz / frame_rate_hz() / rate_divisor()).
 const std::vector<int>& internal_samples_per_hop();
 // The Voice's output for amen_control() at internal_rate_hz(): the input of post-processing.
 const std::vector<float>& amen_vibration();

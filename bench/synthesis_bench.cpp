@@ -18,7 +18,7 @@ namespace {
 void MapperMap(benchmark::State& state) {
     const std::vector<Features>& features = amen_features();
     Mapper mapper;
-    mapper.prepare(Settings{}, kRateHz / hop_samples());
+    mapper.prepare(Settings{}, frame_rate_hz());
     for (auto _ : state) {
         mapper.reset();
         for (const Features& f : features) benchmark::DoNotOptimize(mapper.map(f));

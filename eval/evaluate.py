@@ -10,7 +10,8 @@ Builds the corpus with BUILD_DIR/eval/make_drum_corpus (fixed seed), runs `tactu
 at +-25 and +-50 ms and the median signed timing offset (mir_eval), snare/kick vibration
 frequency ratio, hit gain -> output peak Spearman rho, share of output energy in 20-1000 Hz,
 output peak, silence in -> silence out, and the time from each hit's true onset to the output
-reaching half its pulse peak; then the same through each shipped actuator profile
+reaching half its pulse peak; then Sonic Pi's Amen break at every sample rate from 16 to 192 kHz
+(eval/sample_rates.py), and the corpus through each shipped actuator profile
 (eval/actuators.py). The same measures follow on a held-out corpus: General MIDI drum
 kits from three Debian soundfonts (eval/gm_kits.py), which no parameter was tuned on.
 """
@@ -31,6 +32,7 @@ import soundfile
 import actuators
 import felt
 import gm_kits
+import sample_rates
 
 AUBIO_METHODS = ["hfc", "energy", "complex", "phase", "specdiff", "kl", "mkl", "specflux"]
 # aubioonset's defaults, passed explicitly: buffer 512, hop 256, threshold 0.3, minioi 12 ms,
@@ -231,6 +233,8 @@ def main():
              f"{len(tuned['per_kit'])} kits of Sonic Pi drum hits, seed {args.seed}.", ""]
     lines += tables
     lines += [f"- digital silence in -> exact silence out: {'yes' if silence_exact else 'NO'}", ""]
+    lines += sample_rates.section(sample_rates.measure(args.build_dir, work / "sample-rates",
+                                                       args.preset)) + [""]
     lines += actuators.evaluate(args.build_dir, work / "sonic-pi" / "corpus", work / "actuators",
                                 args.preset) + [""]
     if args.held_out == "gm":

@@ -191,7 +191,8 @@ attribute named by its key with dots as underscores (engine.envelope_decay_ms).)
             "Samples the vibration lags the input (the limiter's look-ahead).")
         .def_property_readonly(
             "hop_samples", [](const PyEngine& e) { return e.engine().hop_samples(); },
-            "Samples between analysis frames.")
+            "Input samples between analysis frames, on average (the analysis hop is whole samples "
+            "at the 16 kHz analysis rate; frames end at whole input samples).")
         .def_property_readonly(
             "sample_rate", [](const PyEngine& e) { return e.engine().sample_rate_hz(); }, "Hz.")
         .def_property_readonly("channels", &PyEngine::channels, "Input channels.")

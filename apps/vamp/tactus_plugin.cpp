@@ -148,8 +148,10 @@ Vamp::Plugin::OutputList TactusPlugin::getOutputDescriptors() const {
         d.binCount = o.columns.size();
         if (o.columns.size() > 1)
             for (auto c : o.columns) d.binNames.emplace_back(c.substr(0, c.find("_sl_db")));
-        d.sampleType = OutputDescriptor::FixedSampleRate;
-        d.sampleRate = static_cast<float>(m_inputSampleRate / hop);
+        // Frames end at whole input samples, hop samples apart on average but not on a fixed
+        // grid (the analysis hop is whole 16 kHz samples): timestamped, to the input sample.
+        d.sampleType = OutputDescriptor::VariableSampleRate;
+        d.sampleRate = static_cast<float>(m_inputSampleRate);
         list.push_back(d);
     }
     return list;

@@ -41,12 +41,16 @@ TEST(Analyzer, FramesAreOnTheHopGridAndIndependentOfBlockSize) {
     const test::DrumSignal drums = test::drum_pattern(fs, 3.0, 5);
     Analyzer reference;
     reference.prepare({.sample_rate_hz = fs}, Settings{});
-    const int hop = reference.hop_samples();
-    EXPECT_EQ(hop, ms_to_samples(Settings{}[P::analysis_hop_ms], fs));
+    // The hop is whole analysis samples (16 kHz, a third of 48 kHz); frame k ends after the
+    // input its last analysis sample reads: floor((k hop - 1) * 3) + 1.
+    const int64_t hop = reference.hop_analysis_samples();
+    EXPECT_EQ(reference.analysis_rate_hz(), Analyzer::kAnalysisRateHz);
+    EXPECT_EQ(hop, ms_to_samples(Settings{}[P::analysis_hop_ms], Analyzer::kAnalysisRateHz));
+    EXPECT_DOUBLE_EQ(reference.hop_samples(), 3.0 * static_cast<double>(hop));
     const auto expected = run(reference, drums.audio, 4096);
-    ASSERT_EQ(expected.size(), drums.audio.size() / hop);
+    ASSERT_EQ(expected.size(), (drums.audio.size() + 2) / static_cast<size_t>(3 * hop));
     for (size_t i = 0; i < expected.size(); ++i)
-        ASSERT_EQ(expected[i].frame_end_sample, static_cast<int64_t>((i + 1) * hop));
+        ASSERT_EQ(expected[i].frame_end_sample, (static_cast<int64_t>(i + 1) * hop - 1) * 3 + 1);
     for (int block : {1, 7, 64, 480}) {
         Analyzer analyzer;
         analyzer.prepare({.sample_rate_hz = fs}, Settings{});

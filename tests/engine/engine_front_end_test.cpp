@@ -517,11 +517,15 @@ TEST(EngineFrontEnd, FramesReachAReaderThroughTheQueue) {
         engine.process(drums.audio.data() + done, y.data() + done, count);
         while (engine.pop_frame(frame)) frames.push_back(frame);
     }
-    ASSERT_EQ(frames.size(), y.size() / static_cast<size_t>(engine.hop_samples()));
+    // 48 kHz is three input samples per analysis sample: frame k ends after the input its last
+    // analysis sample reads, (k hop - 1) * 3 + 1 (Analyzer).
+    const auto hop = static_cast<int64_t>(engine.hop_samples() / 3);
+    ASSERT_EQ(engine.hop_samples(), 3.0 * static_cast<double>(hop));
+    ASSERT_EQ(frames.size(), (y.size() + 2) / static_cast<size_t>(3 * hop));
     int onsets = 0;
     for (size_t i = 0; i < frames.size(); ++i) {
         EXPECT_EQ(frames[i].features.frame_end_sample,
-                  static_cast<int64_t>(i + 1) * engine.hop_samples());
+                  (static_cast<int64_t>(i + 1) * hop - 1) * 3 + 1);
         onsets += frames[i].features.onset;
         EXPECT_EQ(frames[i].control.trigger, frames[i].features.onset);
     }

@@ -164,6 +164,13 @@ TEST(RealTime, AtOtherRatesAndSettings) {
     expect_process_is_real_time_safe(44100, s);
 }
 
+// The analysis resamples every input rate to 16 kHz: exact ratios of many phases, a whole ratio,
+// and one approximated (Resampler::kMaxPhases).
+TEST(RealTime, AtEveryKindOfAnalysisRatio) {
+    for (const double fs : {22050.0, 37800.0, 44099.0, 96000.0})
+        expect_process_is_real_time_safe(fs, Settings{});
+}
+
 TEST(RealTime, FourChannelComponents) {
     Settings s;
     apply_preset_file(s,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 #include "tactus/core/units.hpp"
 #include "tactus/dsp/sanitize.hpp"
@@ -10,33 +11,63 @@
 namespace tactus {
 namespace {
 constexpr double kPitchIntervalMs = 10.0;  // f0 changes slowly: update it every ~10 ms
+
+// The resampler's ratio for an input rate: to kAnalysisRateHz, or 1:1 below it.
+Resampler::Ratio analysis_ratio(double sample_rate_hz) {
+    return Resampler::ratio_for(sample_rate_hz,
+                                std::min(Analyzer::kAnalysisRateHz, sample_rate_hz));
+}
+}  // namespace
+
+double Analyzer::analysis_rate_for(double sample_rate_hz) {
+    const auto ratio = analysis_ratio(sample_rate_hz);
+    return sample_rate_hz * static_cast<double>(ratio.up) / static_cast<double>(ratio.down);
 }
 
-int Analyzer::hop_samples_for(const Settings& settings, double sample_rate_hz) {
+int Analyzer::hop_for(const Settings& settings, double analysis_rate_hz) {
     return std::max<int>(
-        1, static_cast<int>(ms_to_samples(settings[P::analysis_hop_ms], sample_rate_hz)));
+        1, static_cast<int>(ms_to_samples(settings[P::analysis_hop_ms], analysis_rate_hz)));
+}
+
+double Analyzer::hop_samples_for(const Settings& settings, double sample_rate_hz) {
+    const double analysis_rate = analysis_rate_for(sample_rate_hz);
+    return sample_rate_hz * hop_for(settings, analysis_rate) / analysis_rate;
+}
+
+// Frame k ends after input floor((k H - 1) M / L) + 1: the same ends, shifted, from any start
+// that is a multiple of M H / gcd(H, L) input samples.
+int64_t Analyzer::frame_grid_samples(const Settings& settings, double sample_rate_hz) {
+    const auto ratio = analysis_ratio(sample_rate_hz);
+    const int64_t hop = hop_for(settings, analysis_rate_for(sample_rate_hz));
+    return ratio.down * (hop / std::gcd(hop, ratio.up));
 }
 
 void Analyzer::prepare(const ProcessSpec& spec, const Settings& s) {
-    const double sample_rate_hz = spec.sample_rate_hz;
-    hop_samples_ = hop_samples_for(s, sample_rate_hz);
-    stft_.prepare(nearest_power_of_two(ms_to_samples(s[P::analysis_window_ms], sample_rate_hz)),
-                  sample_rate_hz);
+    sample_rate_hz_ = spec.sample_rate_hz;
+    const double analysis_rate = analysis_rate_for(sample_rate_hz_);
+    hop_ = hop_for(s, analysis_rate);
+    const auto ratio = analysis_ratio(sample_rate_hz_);
+    const auto max_inputs = static_cast<int>(hop_ * ratio.down / ratio.up + 2);
+    resampler_.prepare(sample_rate_hz_, std::min(kAnalysisRateHz, sample_rate_hz_), max_inputs);
+    const ProcessSpec analysis{.sample_rate_hz = analysis_rate, .max_block = max_inputs};
+    stft_.prepare(nearest_fft_size(ms_to_samples(s[P::analysis_window_ms], analysis_rate)),
+                  analysis_rate);
     brightness_.prepare(stft_.bins(), stft_.bin_hz());
     noisiness_.prepare(stft_.bins(), stft_.bin_hz());
     loudness_.prepare(spec, s[P::loudness_window_ms]);
-    pitch_.prepare(spec, {.min_hz = s[P::pitch_min_hz],
-                          .max_hz = std::min(s[P::pitch_max_hz], 0.45 * sample_rate_hz),
-                          .threshold = s[P::pitch_threshold]});
-    onsets_.prepare(spec, hop_samples_,
+    pitch_.prepare(analysis, {.min_hz = s[P::pitch_min_hz],
+                              .max_hz = std::min(s[P::pitch_max_hz], 0.45 * analysis_rate),
+                              .threshold = s[P::pitch_threshold]});
+    onsets_.prepare(analysis, hop_,
                     {s[P::onset_window_ms], s[P::onset_threshold], s[P::onset_ratio],
                      s[P::onset_history_ms], s[P::onset_min_interval_ms]});
     history_.prepare(
         std::max({stft_.window_samples(), pitch_.span_samples(), onsets_.span_samples()}));
-    clean_.assign(static_cast<size_t>(hop_samples_), 0.0f);
-    dc_blocker_.prepare(spec);
-    pitch_every_frames_ = std::max(
-        1, static_cast<int>(std::lround(kPitchIntervalMs * 1e-3 * sample_rate_hz / hop_samples_)));
+    clean_.assign(static_cast<size_t>(max_inputs), 0.0f);
+    analysed_.assign(static_cast<size_t>(max_inputs), 0.0f);
+    dc_blocker_.prepare(analysis);
+    pitch_every_frames_ =
+        std::max(1, static_cast<int>(std::lround(kPitchIntervalMs * 1e-3 * analysis_rate / hop_)));
     reset();
 }
 
@@ -46,12 +77,14 @@ void Analyzer::set_live(const Settings& s) noexcept {
 }
 
 void Analyzer::reset() noexcept {
+    resampler_.reset();
     history_.reset();
     loudness_.reset();
     dc_blocker_.reset();
     onsets_.reset();
     features_ = {};
-    filled_ = 0;
+    inputs_ = 0;
+    next_frame_end_ = hop_;
     frames_ = 0;
 }
 
@@ -63,16 +96,17 @@ bool Analyzer::process(const float* samples, const float* power, int count) noex
         else
             loudness_.process(clean_.data(), count);
     }
-    dc_blocker_.process(clean_.data(), count);
-    history_.write(clean_.data(), count);
-    filled_ += count;
-    return filled_ >= hop_samples_;
+    inputs_ += count;
+    const int analysed = resampler_.process(clean_.data(), count, analysed_.data());
+    dc_blocker_.process(analysed_.data(), analysed);
+    history_.write(analysed_.data(), analysed);
+    return history_.written() >= next_frame_end_;
 }
 
 const Features& Analyzer::analyse() noexcept {
-    filled_ = 0;
+    next_frame_end_ += hop_;
     Features& f = features_;
-    f.frame_end_sample = history_.written();
+    f.frame_end_sample = inputs_;
     if (computed_.loudness) f.loudness_db = loudness_.loudness_db();
     if (computed_.spectrum) {
         stft_.analyse(history_);
@@ -87,7 +121,14 @@ const Features& Analyzer::analyse() noexcept {
     const OnsetDecision onset = onsets_.analyse(history_);
     f.onset_odf = onset.odf;
     f.onset = onset.onset;
-    if (onset.onset) f.onset_sample = onset.onset_sample;
+    if (onset.onset) {  // analysis sample -> input sample, less the resampler's delay
+        const double inputs_per_analysed =
+            static_cast<double>(resampler_.down()) / static_cast<double>(resampler_.up());
+        const double at =
+            (static_cast<double>(onset.onset_sample) - resampler_.delay_output_samples()) *
+            inputs_per_analysed;
+        f.onset_sample = std::max<int64_t>(0, std::llround(at));
+    }
     return f;
 }
 

@@ -9,7 +9,6 @@
 namespace tactus {
 namespace {
 constexpr double kLogCompression = 1000.0;  // gamma: magnitudes 60 dB below full scale count
-constexpr double kTopHz = 16000.0;          // above this, flux is mostly noise
 constexpr double kSubBlockMs = 0.5;         // time resolution of the onset-time refinement
 }  // namespace
 
@@ -18,8 +17,8 @@ void OnsetDetector::prepare(const ProcessSpec& spec, int hop_samples, const Onse
     settings_ = s;
     sample_rate_hz_ = sample_rate_hz;
     hop_samples_ = hop_samples;
-    stft_.prepare(nearest_power_of_two(ms_to_samples(s.window_ms, sample_rate_hz)), sample_rate_hz);
-    end_bin_ = std::min(stft_.bins(), static_cast<int>(kTopHz / stft_.bin_hz()) + 1);
+    stft_.prepare(nearest_fft_size(ms_to_samples(s.window_ms, sample_rate_hz)), sample_rate_hz);
+    bins_ = stft_.bins();
     previous_log_.assign(static_cast<size_t>(stft_.bins()), 0.0f);
     older_log_.assign(static_cast<size_t>(stft_.bins()), 0.0f);
     rise_.assign(static_cast<size_t>(stft_.bins()), 0.0f);
@@ -57,14 +56,14 @@ OnsetDecision OnsetDetector::analyse(const SampleHistory& history) noexcept {
     const auto& magnitudes = stft_.magnitudes();
     // Rise over the louder of the two previous frames (SuperFlux's temporal maximum, Böck &
     // Widmer 2013): a noise bin must beat both to count, a new sound beats both.
-    for (int k = 0; k < end_bin_; ++k) {
+    for (int k = 0; k < bins_; ++k) {
         const float log_magnitude =
             fast_log(1.0f + static_cast<float>(kLogCompression) * magnitudes[k]);
         rise_[k] = std::max(0.0f, log_magnitude - std::max(previous_log_[k], older_log_[k]));
         older_log_[k] = previous_log_[k];
         previous_log_[k] = log_magnitude;
     }
-    const double flux = sum_of(rise_.data(), end_bin_) * 100.0 / end_bin_;  // per 100 bins
+    const double flux = sum_of(rise_.data(), bins_) * 100.0 / bins_;  // per 100 bins
 
     // Median of the recent flux: the background level, not raised by the hits themselves.
     std::copy(flux_history_.begin(), flux_history_.end(), scratch_.begin());

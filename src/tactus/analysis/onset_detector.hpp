@@ -51,7 +51,7 @@ class OnsetDetector {
     std::vector<float> previous_log_, older_log_, rise_, segment_;  // rise_: per bin, this frame
     std::vector<double> flux_history_, scratch_, block_energy_;
     size_t history_position_ = 0;
-    int hop_samples_ = 0, sub_block_samples_ = 0, end_bin_ = 0;
+    int hop_samples_ = 0, sub_block_samples_ = 0, bins_ = 0;
     int64_t min_interval_samples_ = 0, last_onset_sample_ = INT64_MIN / 2;
     bool armed_ = true;
 };

@@ -1,5 +1,5 @@
-// Real-input FFT of a fixed power-of-two size on FFTW3 single precision. Plans and buffers are
-// made in prepare(); forward()/inverse() are real-time safe.
+// Real-input FFT of a fixed size (fast for sizes with prime factors 2, 3 and 5) on FFTW3 single
+// precision. Plans and buffers are made in prepare(); forward()/inverse() are real-time safe.
 #pragma once
 
 #include <fftw3.h>

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 
 #include "tactus/actuator/fit.hpp"
@@ -210,10 +211,10 @@ void Engine::apply(const Settings& next) {
 void Engine::swap_in(const Settings& settings) {
     const auto prime = static_cast<int64_t>(kPrimeSeconds * spec_.sample_rate_hz);
     // The new pipeline starts on the grids one with these settings from the first sample has
-    // (an analysis frame every hop, an internal sample every rate_divisor_ input samples), so a
-    // change that keeps the hop keeps every frame and onset time.
-    const int64_t grid =
-        int64_t{Analyzer::hop_samples_for(settings, spec_.sample_rate_hz)} * rate_divisor_;
+    // (analysis frames: Analyzer::frame_grid_samples; an internal sample every rate_divisor_
+    // input samples), so a change that keeps the hop keeps every frame and onset time.
+    const int64_t grid = std::lcm(Analyzer::frame_grid_samples(settings, spec_.sample_rate_hz),
+                                  int64_t{rate_divisor_});
     std::vector<float> past, past_power;
     int64_t to = 0, from = 0;
     std::unique_ptr<Pipeline> pipeline;

@@ -54,7 +54,7 @@ void Pipeline::prepare(const ProcessSpec& spec, const Settings& settings,
     flutter_.assign(flutter_enabled(settings) ? internal : 0, 0.0f);
     pressure_.assign(pressure_enabled(settings) ? internal : 0, 0.0f);
     analyzer_.prepare(spec, settings);
-    const double frames_per_second = rate / analyzer_.hop_samples();
+    const double frames_per_second = analyzer_.frame_rate_hz();
     mapper_.prepare(settings, {.frames_per_second = frames_per_second,
                                .output_ceiling = chains_.front().post().ceiling()});
     voice_.prepare(internal_spec, settings[P::post_band_high_hz]);
@@ -146,7 +146,7 @@ void Pipeline::process(const float* mono, const float* power, float* const* out,
         done += chunk;
     }
     if (post_dirty_) {  // glides over an analysis frame: LiveSettings' steps join up
-        const int glide = std::max(rendered, analyzer_.hop_samples() / divisor);
+        const int glide = std::max(rendered, static_cast<int>(analyzer_.hop_samples() / divisor));
         for (auto& chain : chains_) chain.set_live(live_.now(), glide);
         for (auto& chain : chains_) chain.set_pressure_reference(chains_.front().post().ceiling());
         post_dirty_ = false;

@@ -58,7 +58,7 @@ class Pipeline {
 
     int rate_divisor() const { return rate_divisor_; }
     double internal_rate_hz() const { return sample_rate_hz_ / rate_divisor_; }
-    int hop_samples() const { return analyzer_.hop_samples(); }
+    double hop_samples() const { return analyzer_.hop_samples(); }  // input samples, mean
     int latency() const;
     int64_t position() const { return position_; }  // the next input sample it takes
     const PostChain& post(int actuator) const;

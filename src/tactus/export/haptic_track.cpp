@@ -82,7 +82,8 @@ HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engi
         // The carrier changes at hop boundaries at most; the envelope takes it per hop.
         for (int done = 0; done < count;) {
             const int64_t at = aligned + done;
-            const int chunk = std::min(count - done, std::max(1, engine.hop_samples()));
+            const int chunk =
+                std::min(count - done, std::max(1, static_cast<int>(engine.hop_samples())));
             envelope->write(vibration[0] + skip + done, chunk, carrier.at(at));
             done += chunk;
         }

@@ -1,0 +1,209 @@
+#include "tactus/dsp/resampler.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <numeric>
+#include <stdexcept>
+
+#include "tactus/core/units.hpp"
+
+namespace tactus {
+namespace {
+
+constexpr int kPointsPerOutput = 64;  // kernel table resolution; linear interpolation between
+constexpr int kFftSize = 1 << 16;     // cepstrum length: ~28 times the kernel, little aliasing
+constexpr double kFloorDb = -140;     // log-magnitude floor of the stop band's nulls
+constexpr double kTailEnergy = 1e-8;  // the minimum-phase kernel ends where less is left
+constexpr int kLanes = 8;             // taps padded to a multiple: the dot product vectorises
+
+using Complex = std::complex<double>;
+
+// In-place radix-2 FFT (inverse: conjugate exponent, unscaled).
+void fft(std::vector<Complex>& x, bool inverse) {
+    const size_t n = x.size();
+    for (size_t i = 1, j = 0; i < n; ++i) {
+        size_t bit = n >> 1;
+        for (; j & bit; bit >>= 1) j ^= bit;
+        j ^= bit;
+        if (i < j) std::swap(x[i], x[j]);
+    }
+    std::vector<Complex> twiddle(n / 2);
+    for (size_t k = 0; k < n / 2; ++k)
+        twiddle[k] = std::polar(
+            1.0, (inverse ? 2 : -2) * kPi * static_cast<double>(k) / static_cast<double>(n));
+    for (size_t length = 2; length <= n; length <<= 1) {
+        const size_t step = n / length;
+        for (size_t start = 0; start < n; start += length)
+            for (size_t k = 0; k < length / 2; ++k) {
+                const Complex a = x[start + k], b = x[start + k + length / 2] * twiddle[k * step];
+                x[start + k] = a + b;
+                x[start + k + length / 2] = a - b;
+            }
+    }
+}
+
+double bessel_i0(double x) {
+    double sum = 1, term = 1;
+    for (int k = 1; k < 50; ++k) {
+        term *= (x / (2.0 * k)) * (x / (2.0 * k));
+        sum += term;
+    }
+    return sum;
+}
+
+// The minimum-phase kernel, kPointsPerOutput points per output sample, unit sum over the
+// points divided by kPointsPerOutput (unit DC gain in continuous time). Rate-independent:
+// made once.
+struct Kernel {
+    std::vector<double> points;
+    double delay_output_samples = 0;
+};
+
+Kernel design_kernel() {
+    const double transition = Resampler::kStopEdge - Resampler::kPassEdge;  // cycles/sample
+    const double cutoff = 0.5 * (Resampler::kStopEdge + Resampler::kPassEdge);
+    const double beta = 0.1102 * (Resampler::kStopBandDb - 8.7);
+    const double length = (Resampler::kStopBandDb - 8) / (2.285 * 2 * kPi * transition);
+    const int half = static_cast<int>(std::ceil(0.5 * length * kPointsPerOutput));
+    std::vector<Complex> x(kFftSize);
+    for (int k = -half; k <= half; ++k) {
+        const double t = static_cast<double>(k) / kPointsPerOutput;  // output samples
+        const double arg = 2 * cutoff * t;
+        const double sinc = k == 0 ? 1.0 : std::sin(kPi * arg) / (kPi * arg);
+        const double r = static_cast<double>(k) / half;
+        const double window =
+            bessel_i0(beta * std::sqrt(std::max(0.0, 1 - r * r))) / bessel_i0(beta);
+        x[static_cast<size_t>(k + half)] = 2 * cutoff * sinc * window;
+    }
+    // Folded real cepstrum: log |H| -> its causal part doubled -> exp -> the minimum phase.
+    fft(x, false);
+    double peak = 0;
+    for (const auto& v : x) peak = std::max(peak, std::abs(v));
+    const double floor = peak * db_to_gain(kFloorDb);
+    for (auto& v : x) v = std::log(std::max(std::abs(v), floor));
+    fft(x, true);
+    for (size_t k = 1; k < kFftSize / 2; ++k) x[k] *= 2.0;
+    for (size_t k = kFftSize / 2 + 1; k < kFftSize; ++k) x[k] = 0;
+    for (auto& v : x) v /= kFftSize;
+    fft(x, false);
+    for (auto& v : x) v = std::exp(v);
+    fft(x, true);
+    std::vector<double> h(static_cast<size_t>(2 * half + 1));
+    double energy = 0;
+    for (size_t k = 0; k < h.size(); ++k) {
+        h[k] = x[k].real() / kFftSize;
+        energy += h[k] * h[k];
+    }
+    size_t end = h.size();
+    for (double tail = 0; end > 1 && tail + h[end - 1] * h[end - 1] < kTailEnergy * energy;)
+        tail += h[end - 1] * h[end - 1], --end;
+    h.resize(end);
+    const double sum = std::accumulate(h.begin(), h.end(), 0.0);
+    double moment = 0, energy_kept = 0;
+    for (size_t k = 0; k < h.size(); ++k) {
+        h[k] *= kPointsPerOutput / sum;
+        moment += static_cast<double>(k) * h[k] * h[k];
+        energy_kept += h[k] * h[k];
+    }
+    return {h, moment / energy_kept / kPointsPerOutput};
+}
+
+const Kernel& kernel() {
+    static const Kernel made = design_kernel();  // thread-safe initialisation
+    return made;
+}
+
+// The kernel at `t` output samples after its start (0 outside it), linearly interpolated.
+double kernel_at(const Kernel& k, double t) {
+    const double x = t * kPointsPerOutput;
+    if (x < 0) return 0;
+    const auto i = static_cast<size_t>(x);
+    if (i + 1 >= k.points.size()) return 0;
+    const double f = x - static_cast<double>(i);
+    return k.points[i] + f * (k.points[i + 1] - k.points[i]);
+}
+
+bool whole(double x) {
+    return x == std::floor(x) && x < 1e12;
+}
+
+}  // namespace
+
+Resampler::Ratio Resampler::ratio_for(double input_rate_hz, double output_rate_hz) {
+    Ratio r{kMaxPhases + 1, 1};
+    if (whole(input_rate_hz) && whole(output_rate_hz)) {
+        const auto in = static_cast<int64_t>(input_rate_hz);
+        const auto out = static_cast<int64_t>(output_rate_hz);
+        const int64_t g = std::gcd(in, out);
+        r = {out / g, in / g};
+    }
+    if (r.up > kMaxPhases) {  // the nearest ratio with L = kMaxPhases
+        r.up = kMaxPhases;
+        r.down = std::max<int64_t>(r.up, std::llround(input_rate_hz / output_rate_hz * kMaxPhases));
+        const int64_t g = std::gcd(r.up, r.down);
+        r.up /= g;
+        r.down /= g;
+    }
+    return r;
+}
+
+void Resampler::prepare(double input_rate_hz, double output_rate_hz, int max_block) {
+    if (!(output_rate_hz > 0 && output_rate_hz <= input_rate_hz))
+        throw std::invalid_argument("resampler: the output rate must be in (0, input rate]");
+    const Ratio r = ratio_for(input_rate_hz, output_rate_hz);
+    up_ = r.up;
+    down_ = r.down;
+    output_rate_hz_ = input_rate_hz * static_cast<double>(up_) / static_cast<double>(down_);
+    const Kernel& k = kernel();
+    delay_output_samples_ = k.delay_output_samples;
+    // Input samples per output sample: down / up. Tap i reads the input i samples before the
+    // newest, at (phase / up + i) input samples = (phase / up + i) up / down output samples.
+    const double outputs_per_input = static_cast<double>(up_) / static_cast<double>(down_);
+    const double span = static_cast<double>(k.points.size()) / kPointsPerOutput;  // outputs
+    const int needed = static_cast<int>(std::ceil(span / outputs_per_input)) + 1;
+    taps_ = (needed + kLanes - 1) / kLanes * kLanes;
+    kernel_.assign(static_cast<size_t>(up_ * taps_), 0.0f);
+    for (int64_t p = 0; p < up_; ++p) {
+        float* phase = kernel_.data() + p * taps_;
+        double sum = 0;
+        for (int i = 0; i < taps_; ++i) {
+            const double t =
+                (static_cast<double>(p) / static_cast<double>(up_) + i) * outputs_per_input;
+            sum += phase[taps_ - 1 - i] = static_cast<float>(kernel_at(k, t) * outputs_per_input);
+        }
+        for (int i = 0; i < taps_; ++i) phase[i] = static_cast<float>(phase[i] / sum);  // DC: 1
+    }
+    history_.assign(static_cast<size_t>(taps_ - 1 + max_block), 0.0f);
+    reset();
+}
+
+void Resampler::reset() noexcept {
+    std::fill(history_.begin(), history_.end(), 0.0f);
+    next_output_ = next_base_ = phase_ = written_ = 0;
+}
+
+int Resampler::process(const float* in, int count, float* out) noexcept {
+    const int taps = taps_;
+    float* const history = history_.data();
+    std::copy_n(in, count, history + taps - 1);
+    const int64_t end = written_ + count;
+    int produced = 0;
+    while (next_base_ < end) {
+        const float* x = history + (next_base_ - written_);  // taps samples, newest last
+        const float* w = kernel_.data() + phase_ * taps;
+        float s[kLanes] = {};
+        for (int i = 0; i < taps; i += kLanes)
+            for (int j = 0; j < kLanes; ++j) s[j] += w[i + j] * x[i + j];
+        out[produced++] = ((s[0] + s[1]) + (s[2] + s[3])) + ((s[4] + s[5]) + (s[6] + s[7]));
+        phase_ += down_;
+        next_base_ += phase_ / up_;
+        phase_ %= up_;
+        ++next_output_;
+    }
+    std::copy(history + count, history + count + taps - 1, history);
+    written_ = end;
+    return produced;
+}
+
+}  // namespace tactus
