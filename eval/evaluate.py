@@ -183,7 +183,7 @@ def sections(result):
             lines.append(f"| {detector} | {label} | {cells} | {offset} |")
     lines += ["", "## Vibration per kit (isolated hits, gains 0 to -24 dB)", "",
               "Felt: the output weighted by the skin's sensitivity (eval/felt.py: the inverse of "
-              "the P threshold, -12 dB/octave below 250 Hz, -9 dB/octave above, minimum phase). "
+              "the P threshold, -12 dB/octave below 250 Hz, -9 dB/octave above, zero phase). "
               "Hz: the median pulse carrier frequency; rho: Spearman's rho of hit gain -> pulse "
               "peak. Raw: the same of the unweighted output.", "",
               "| kit | kick Hz | snare Hz | snare/kick | kick rho | snare rho "
