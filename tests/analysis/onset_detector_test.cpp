@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -23,8 +24,9 @@ struct Detection {
 };
 
 std::vector<Detection> detect(const std::vector<float>& x, double fs,
-                              const OnsetSettings& settings = {}) {
-    const int hop = static_cast<int>(ms_to_samples(2.9, fs));
+                              const OnsetSettings& settings = {}, double hop_ms = 2.9,
+                              double* largest_odf = nullptr) {
+    const int hop = static_cast<int>(ms_to_samples(hop_ms, fs));
     OnsetDetector detector;
     detector.prepare({.sample_rate_hz = fs}, hop, settings);
     SampleHistory history;
@@ -34,6 +36,7 @@ std::vector<Detection> detect(const std::vector<float>& x, double fs,
         history.write(x.data() + done, hop);
         const OnsetDecision d = detector.analyse(history);
         EXPECT_TRUE(std::isfinite(d.odf));
+        if (largest_odf) *largest_odf = std::max(*largest_odf, d.odf);
         if (d.onset) found.push_back({history.written(), d.onset_sample});
     }
     return found;
@@ -89,6 +92,28 @@ TEST(OnsetDetector, ClicksAreFoundOnceAtTheRightTime) {
             }
         }
     }
+}
+
+// The rise is measured over lags in time (OnsetDetector::kLagMs), not in frames: at a 1 ms hop
+// the detection function rises as high as at the default hop (over one frame it would see a
+// third of the rise), so the same thresholds find every quiet burst once, and decide sooner.
+TEST(OnsetDetector, AShorterHopDecidesSoonerWithTheSameThresholds) {
+    const double fs = 48000;
+    std::vector<float> x(static_cast<size_t>(3 * fs), 0.0f);
+    const auto truth = place_clicks(x, fs, Click::burst, 0.02, 17);
+    const auto delay_ms = [&](const std::vector<Detection>& found) {
+        double sum = 0;
+        for (size_t i = 0; i < found.size(); ++i)
+            sum += static_cast<double>(found[i].decided_at - truth[i]);
+        return sum / static_cast<double>(found.size()) / fs * 1000;
+    };
+    double odf_default = 0, odf_1_ms = 0;
+    const auto at_default = detect(x, fs, {}, 2.9, &odf_default);
+    const auto at_1_ms = detect(x, fs, {}, 1.0, &odf_1_ms);
+    EXPECT_GT(odf_1_ms, 0.7 * odf_default);
+    expect_each_found_once(truth, at_1_ms, fs, "bursts at a 1 ms hop");
+    ASSERT_FALSE(at_default.empty());
+    EXPECT_LT(delay_ms(at_1_ms), delay_ms(at_default) - 0.5);
 }
 
 TEST(OnsetDetector, NothingInSilenceOrSteadyNoise) {

@@ -19,8 +19,10 @@ void OnsetDetector::prepare(const ProcessSpec& spec, int hop_samples, const Onse
     hop_samples_ = hop_samples;
     stft_.prepare(nearest_fft_size(ms_to_samples(s.window_ms, sample_rate_hz)), sample_rate_hz);
     bins_ = stft_.bins();
-    previous_log_.assign(static_cast<size_t>(stft_.bins()), 0.0f);
-    older_log_.assign(static_cast<size_t>(stft_.bins()), 0.0f);
+    lag_frames_ =
+        std::max(1, static_cast<int>(std::lround(kLagMs * 1e-3 * sample_rate_hz / hop_samples)));
+    past_frames_ = 2 * lag_frames_;
+    past_log_.assign(static_cast<size_t>(past_frames_) * static_cast<size_t>(bins_), 0.0f);
     rise_.assign(static_cast<size_t>(stft_.bins()), 0.0f);
     const auto history_frames =
         std::max<int64_t>(1, std::llround(s.history_ms * 1e-3 * sample_rate_hz / hop_samples));
@@ -43,8 +45,8 @@ void OnsetDetector::set_thresholds(double threshold, double ratio,
 }
 
 void OnsetDetector::reset() noexcept {
-    std::fill(previous_log_.begin(), previous_log_.end(), 0.0f);
-    std::fill(older_log_.begin(), older_log_.end(), 0.0f);
+    std::fill(past_log_.begin(), past_log_.end(), 0.0f);
+    past_position_ = 0;
     std::fill(flux_history_.begin(), flux_history_.end(), 0.0);
     history_position_ = 0;
     last_onset_sample_ = INT64_MIN / 2;
@@ -54,15 +56,23 @@ void OnsetDetector::reset() noexcept {
 OnsetDecision OnsetDetector::analyse(const SampleHistory& history) noexcept {
     stft_.analyse(history);
     const auto& magnitudes = stft_.magnitudes();
-    // Rise over the louder of the two previous frames (SuperFlux's temporal maximum, Böck &
-    // Widmer 2013): a noise bin must beat both to count, a new sound beats both.
+    // Rise over the louder of the frames one and two lags back (SuperFlux's temporal maximum,
+    // Böck & Widmer 2013): a noise bin must beat both to count, a new sound beats both. The ring
+    // slot at past_position_ holds the frame two lags back; it takes this frame's.
+    const auto slot = [&](int frames_back) {
+        return past_log_.data() +
+               static_cast<size_t>((past_position_ + past_frames_ - frames_back) % past_frames_) *
+                   static_cast<size_t>(bins_);
+    };
+    const float* one_lag = slot(lag_frames_);
+    float* two_lags = slot(past_frames_);
     for (int k = 0; k < bins_; ++k) {
         const float log_magnitude =
             fast_log(1.0f + static_cast<float>(kLogCompression) * magnitudes[k]);
-        rise_[k] = std::max(0.0f, log_magnitude - std::max(previous_log_[k], older_log_[k]));
-        older_log_[k] = previous_log_[k];
-        previous_log_[k] = log_magnitude;
+        rise_[k] = std::max(0.0f, log_magnitude - std::max(one_lag[k], two_lags[k]));
+        two_lags[k] = log_magnitude;
     }
+    past_position_ = (past_position_ + 1) % past_frames_;
     const double flux = sum_of(rise_.data(), bins_) * 100.0 / bins_;  // per 100 bins
 
     // Median of the recent flux: the background level, not raised by the hits themselves.

@@ -1,11 +1,13 @@
 // Causal onset detection (the role of bonk~ in the paper, §6).
 // Detection function: log-compressed spectral flux of a short-window STFT, i.e. the mean over
-// bins of the half-wave rectified rise of log(1 + gamma |X|) (Klapuri 1999; Böck & Widmer 2013
-// for the log compression). Peak picking is causal: an onset is decided the first frame the flux
-// exceeds an adaptive threshold, threshold + ratio * mean of the recent flux, at least
-// min_interval after the previous onset; it re-arms when the flux falls back below the threshold.
-// The onset time is then refined in the time domain to the sub-millisecond block with the
-// largest energy rise in the newest window.
+// bins of the half-wave rectified rise of log(1 + gamma |X|) over the louder of the frames
+// kLagMs and 2 kLagMs before (Klapuri 1999; Böck & Widmer 2013 for the log compression and the
+// temporal maximum). The lags are in time, not frames: a shorter hop samples the same function
+// more often, so it decides sooner with the same thresholds. Peak picking is causal: an onset is
+// decided the first frame the flux exceeds an adaptive threshold, threshold + ratio * mean of the
+// recent flux, at least min_interval after the previous onset; it re-arms when the flux falls back
+// below the threshold. The onset time is then refined in the time domain to the sub-millisecond
+// block with the largest energy rise in the newest window.
 #pragma once
 
 #include <array>
@@ -34,6 +36,9 @@ struct OnsetDecision {
 
 class OnsetDetector {
   public:
+    // One default hop (2.9 ms), where the thresholds were tuned.
+    static constexpr double kLagMs = 2.9;
+
     void prepare(const ProcessSpec& spec, int hop_samples, const OnsetSettings& settings);
     void reset() noexcept;
     // Live (audio thread): threshold, ratio and minimum interval; the windows stay as prepared.
@@ -48,7 +53,9 @@ class OnsetDetector {
     OnsetSettings settings_;
     double sample_rate_hz_ = 48000;
     StftFrame stft_;
-    std::vector<float> previous_log_, older_log_, rise_, segment_;  // rise_: per bin, this frame
+    std::vector<float> rise_, segment_;  // rise_: per bin, this frame
+    std::vector<float> past_log_;        // the last frames (2 lags' worth), bins_ each, a ring
+    int past_frames_ = 2, lag_frames_ = 1, past_position_ = 0;
     std::vector<double> flux_history_, scratch_, block_energy_;
     size_t history_position_ = 0;
     int hop_samples_ = 0, sub_block_samples_ = 0, bins_ = 0;
