@@ -54,16 +54,7 @@ void print_summary(std::ostream& out, const MeterOptions& o, const ActuatorProfi
 
 void meter(const MeterOptions& o) {
     if (!is_stdout(o.output)) check_output(o.input, o.output, o.force);
-    // The actuator named, else the one the file says it was rendered for, else the default.
-    std::string actuator_name = o.actuator;
-    if (actuator_name.empty()) {
-        actuator_name = RenderInfo::from_comment(AudioReader(o.input).comment()).actuator;
-        if (!actuator_name.empty())
-            note(fmt::format("{}: rendered for {}: metered through it", o.input, actuator_name));
-        else
-            actuator_name = kDefaultActuator;
-    }
-    const ActuatorProfile actuator = load_actuator(resolve_actuator(actuator_name));
+    const ActuatorProfile actuator = actuator_of_vibration(o.actuator, o.input, "metered");
     std::optional<TextOutput> csv;
     if (!o.output.empty()) {
         csv.emplace(o.output);

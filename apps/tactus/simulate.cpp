@@ -23,22 +23,12 @@ struct SimulateOptions {
     BatchOptions batch;
 };
 
-// The actuator named, else the one the file says it was rendered for, else the default.
-std::string actuator_of(const SimulateOptions& o) {
-    if (!o.actuator.empty()) return o.actuator;
-    const std::string rendered_for =
-        RenderInfo::from_comment(AudioReader(o.input).comment()).actuator;
-    if (rendered_for.empty()) return std::string(kDefaultActuator);
-    note(fmt::format("{}: rendered for {}: simulated through it", o.input, rendered_for));
-    return rendered_for;
-}
-
 void simulate(const SimulateOptions& o) {
     if (o.output.empty())
         throw std::runtime_error("simulate: give either -o FILE (one input) or -O DIR");
     check_output(o.input, o.output, o.force);
     writable_sound_format(o.output, SampleFormat::float32);
-    const ActuatorProfile actuator = load_actuator(resolve_actuator(actuator_of(o)));
+    const ActuatorProfile actuator = actuator_of_vibration(o.actuator, o.input, "simulated");
     const RenderInfo how{.source = std::filesystem::path(o.input).filename().string(),
                          .preset = {},
                          .changes = {},
