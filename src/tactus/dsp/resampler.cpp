@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <complex>
 #include <numeric>
 #include <stdexcept>
 
 #include "tactus/core/units.hpp"
+#include "tactus/dsp/fir_design.hpp"
 
 namespace tactus {
 namespace {
@@ -16,41 +16,6 @@ constexpr int kFftSize = 1 << 16;     // cepstrum length: ~28 times the kernel, 
 constexpr double kFloorDb = -140;     // log-magnitude floor of the stop band's nulls
 constexpr double kTailEnergy = 1e-8;  // the minimum-phase kernel ends where less is left
 constexpr int kLanes = 8;             // taps padded to a multiple: the dot product vectorises
-
-using Complex = std::complex<double>;
-
-// In-place radix-2 FFT (inverse: conjugate exponent, unscaled).
-void fft(std::vector<Complex>& x, bool inverse) {
-    const size_t n = x.size();
-    for (size_t i = 1, j = 0; i < n; ++i) {
-        size_t bit = n >> 1;
-        for (; j & bit; bit >>= 1) j ^= bit;
-        j ^= bit;
-        if (i < j) std::swap(x[i], x[j]);
-    }
-    std::vector<Complex> twiddle(n / 2);
-    for (size_t k = 0; k < n / 2; ++k)
-        twiddle[k] = std::polar(
-            1.0, (inverse ? 2 : -2) * kPi * static_cast<double>(k) / static_cast<double>(n));
-    for (size_t length = 2; length <= n; length <<= 1) {
-        const size_t step = n / length;
-        for (size_t start = 0; start < n; start += length)
-            for (size_t k = 0; k < length / 2; ++k) {
-                const Complex a = x[start + k], b = x[start + k + length / 2] * twiddle[k * step];
-                x[start + k] = a + b;
-                x[start + k + length / 2] = a - b;
-            }
-    }
-}
-
-double bessel_i0(double x) {
-    double sum = 1, term = 1;
-    for (int k = 1; k < 50; ++k) {
-        term *= (x / (2.0 * k)) * (x / (2.0 * k));
-        sum += term;
-    }
-    return sum;
-}
 
 // The minimum-phase kernel, kPointsPerOutput points per output sample, unit sum over the
 // points divided by kPointsPerOutput (unit DC gain in continuous time). Rate-independent:
@@ -66,35 +31,17 @@ Kernel design_kernel() {
     const double beta = 0.1102 * (Resampler::kStopBandDb - 8.7);
     const double length = (Resampler::kStopBandDb - 8) / (2.285 * 2 * kPi * transition);
     const int half = static_cast<int>(std::ceil(0.5 * length * kPointsPerOutput));
-    std::vector<Complex> x(kFftSize);
+    std::vector<double> h(static_cast<size_t>(2 * half + 1));
     for (int k = -half; k <= half; ++k) {
         const double t = static_cast<double>(k) / kPointsPerOutput;  // output samples
         const double arg = 2 * cutoff * t;
         const double sinc = k == 0 ? 1.0 : std::sin(kPi * arg) / (kPi * arg);
-        const double r = static_cast<double>(k) / half;
-        const double window =
-            bessel_i0(beta * std::sqrt(std::max(0.0, 1 - r * r))) / bessel_i0(beta);
-        x[static_cast<size_t>(k + half)] = 2 * cutoff * sinc * window;
+        h[static_cast<size_t>(k + half)] =
+            2 * cutoff * sinc * kaiser_window(static_cast<double>(k) / half, beta);
     }
-    // Folded real cepstrum: log |H| -> its causal part doubled -> exp -> the minimum phase.
-    fft(x, false);
-    double peak = 0;
-    for (const auto& v : x) peak = std::max(peak, std::abs(v));
-    const double floor = peak * db_to_gain(kFloorDb);
-    for (auto& v : x) v = std::log(std::max(std::abs(v), floor));
-    fft(x, true);
-    for (size_t k = 1; k < kFftSize / 2; ++k) x[k] *= 2.0;
-    for (size_t k = kFftSize / 2 + 1; k < kFftSize; ++k) x[k] = 0;
-    for (auto& v : x) v /= kFftSize;
-    fft(x, false);
-    for (auto& v : x) v = std::exp(v);
-    fft(x, true);
-    std::vector<double> h(static_cast<size_t>(2 * half + 1));
+    h = minimum_phase(h, kFftSize, kFloorDb);
     double energy = 0;
-    for (size_t k = 0; k < h.size(); ++k) {
-        h[k] = x[k].real() / kFftSize;
-        energy += h[k] * h[k];
-    }
+    for (double v : h) energy += v * v;
     size_t end = h.size();
     for (double tail = 0; end > 1 && tail + h[end - 1] * h[end - 1] < kTailEnergy * energy;)
         tail += h[end - 1] * h[end - 1], --end;

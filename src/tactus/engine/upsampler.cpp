@@ -2,29 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
-#include <complex>
 #include <stdexcept>
 
 #include "tactus/core/units.hpp"
-#include "tactus/dsp/real_fft.hpp"
+#include "tactus/dsp/fir_design.hpp"
 
 namespace tactus {
 namespace {
 
-constexpr double kKaiserBeta = 7.0;       // ~70 dB stop band at 8 taps per phase
-constexpr int kCepstrumSize = 8192;       // dense enough that the cepstrum does not alias
-constexpr float kMagnitudeFloor = 1e-8f;  // -160 dB: keeps log() finite at the zeros
-
-// Zeroth-order modified Bessel function of the first kind (power series).
-double bessel_i0(double x) {
-    double sum = 1.0, term = 1.0;
-    for (int k = 1; k < 50; ++k) {
-        term *= (x / (2.0 * k)) * (x / (2.0 * k));
-        sum += term;
-        if (term < 1e-17 * sum) break;
-    }
-    return sum;
-}
+constexpr double kKaiserBeta = 7.0;  // ~70 dB stop band at 8 taps per phase
+constexpr int kCepstrumSize = 8192;  // dense enough that the cepstrum does not alias
+constexpr double kFloorDb = -160;    // re the peak: keeps log() finite at the zeros
 
 // Linear-phase low-pass cut at the internal Nyquist frequency, gain `factor` (interpolation).
 std::vector<double> kaiser_lowpass(int factor, int length) {
@@ -36,35 +24,9 @@ std::vector<double> kaiser_lowpass(int factor, int length) {
         const double sinc =
             t == 0.0 ? 1.0 : std::sin(2.0 * kPi * cutoff * t) / (2.0 * kPi * cutoff * t);
         const double r = t / middle;
-        const double window =
-            bessel_i0(kKaiserBeta * std::sqrt(std::max(0.0, 1.0 - r * r))) / bessel_i0(kKaiserBeta);
-        h[n] = 2.0 * cutoff * sinc * window * factor;
+        h[n] = 2.0 * cutoff * sinc * kaiser_window(r, kKaiserBeta) * factor;
     }
     return h;
-}
-
-// The minimum-phase filter with the same magnitude response: fold the real cepstrum of
-// log|H| onto positive quefrencies and exponentiate back.
-std::vector<double> minimum_phase(const std::vector<double>& h) {
-    RealFft fft;
-    fft.prepare(kCepstrumSize);
-    float* time = fft.time();
-    std::complex<float>* spectrum = fft.spectrum();
-    std::fill_n(time, kCepstrumSize, 0.0f);
-    std::copy(h.begin(), h.end(), time);
-    fft.forward();
-    for (int k = 0; k < fft.bins(); ++k)
-        spectrum[k] = std::log(std::max(std::abs(spectrum[k]), kMagnitudeFloor));
-    fft.inverse();  // the real cepstrum, times the size
-    for (int n = 1; n < kCepstrumSize / 2; ++n) time[n] *= 2.0f;
-    std::fill(time + kCepstrumSize / 2 + 1, time + kCepstrumSize, 0.0f);
-    for (int n = 0; n < kCepstrumSize; ++n) time[n] /= kCepstrumSize;
-    fft.forward();
-    for (int k = 0; k < fft.bins(); ++k) spectrum[k] = std::exp(spectrum[k]);
-    fft.inverse();
-    std::vector<double> out(h.size());
-    for (size_t n = 0; n < h.size(); ++n) out[n] = time[n] / double(kCepstrumSize);
-    return out;
 }
 
 }  // namespace
@@ -76,7 +38,8 @@ void Upsampler::prepare(const ProcessSpec& spec, int factor) {
     taps_ = {};
     delay_samples_ = 0.0;
     if (factor > 1) {  // factor 1 copies: no filter
-        std::vector<double> h = minimum_phase(kaiser_lowpass(factor, factor * kTapsPerPhase));
+        std::vector<double> h =
+            minimum_phase(kaiser_lowpass(factor, factor * kTapsPerPhase), kCepstrumSize, kFloorDb);
         // Each phase sums to exactly 1: a constant passes without ripple at the internal rate.
         for (int r = 0; r < factor; ++r) {
             double sum = 0.0;
