@@ -36,6 +36,13 @@ AUBIO_ARGS = ["-O", "hfc", "-B", "512", "-H", "256", "-t", "0.3", "-M", "0.012",
 LOOPS = {"10 min": 87, "60 min": 524}
 
 
+def work_dir(build_dir):
+    """The benchmarks' cache of looped inputs and outputs, BUILD_DIR/bench-compare."""
+    work = build_dir / "bench-compare"
+    work.mkdir(parents=True, exist_ok=True)
+    return work
+
+
 def looped(work, repeats):
     path = work / f"amen-x{repeats + 1}.flac"
     if not path.exists():
@@ -102,8 +109,7 @@ def main():
     for tool in (tactus, "aubioonset", "sox", "/usr/bin/time"):
         if not shutil.which(tool):
             sys.exit(f"bench/compare.py: {tool}: not found")
-    work = args.build_dir / "bench-compare"
-    work.mkdir(parents=True, exist_ok=True)
+    work = work_dir(args.build_dir)
     aubio_version = subprocess.run(["dpkg-query", "-W", "-f", "${Version}", "aubio-tools"],
                                    capture_output=True, text=True).stdout.strip()
     commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,

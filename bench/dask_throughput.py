@@ -22,7 +22,7 @@ import subprocess
 import sys
 import time
 
-from compare import LOOPS, looped
+from compare import LOOPS, looped, work_dir
 
 EXAMPLE = pathlib.Path(__file__).resolve().parents[1] / "examples" / "python" / "dask_render.py"
 
@@ -40,8 +40,7 @@ def main():
     parser.add_argument("--runs", type=int, default=3)
     args = parser.parse_args()
     cli = args.build_dir / "bin" / "tactus"
-    work = args.build_dir / "bench-compare"
-    work.mkdir(parents=True, exist_ok=True)
+    work = work_dir(args.build_dir)
     flac = looped(work, LOOPS["10 min"])
     folder = work / "dask-in"
     shutil.rmtree(folder, ignore_errors=True)

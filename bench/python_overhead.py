@@ -21,7 +21,7 @@ import subprocess
 import sys
 import time
 
-from compare import LOOPS, looped
+from compare import LOOPS, looped, work_dir
 
 import tactus
 
@@ -50,8 +50,7 @@ def main():
     parser.add_argument("--runs", type=int, default=5)
     args = parser.parse_args()
     cli = args.build_dir / "bin" / "tactus"
-    work = args.build_dir / "bench-compare"
-    work.mkdir(parents=True, exist_ok=True)
+    work = work_dir(args.build_dir)
     flac = looped(work, LOOPS["10 min"])
     out = work / "python-overhead.vibration.wav"
 
