@@ -95,11 +95,7 @@ TEST_F(ClapPlugin, DefaultsRenderAsTheCommandLine) {
     ASSERT_EQ(instance.input_channels(), 2);
     ASSERT_EQ(instance.output_channels(), kActuators + 2);
     const Outputs out = play(instance, drums_);
-    for (int k = 0; k < kActuators; ++k) {
-        const double d = max_difference(out[static_cast<size_t>(k)], cli.channels[0]);
-        std::printf("CLAP vibration %d vs tactus render: largest difference %.3g\n", k + 1, d);
-        EXPECT_LE(d, 1e-5);
-    }
+    expect_each_actuator_is(out, kActuators, cli.channels[0], "CLAP");
     // The latency the host is told is the engine's, and the music comes out delayed by it.
     Engine engine;
     engine.prepare({.sample_rate_hz = drums_.sample_rate_hz, .max_block = kBlock, .channels = 2});

@@ -70,11 +70,7 @@ TEST_F(Lv2Plugin, DefaultsRenderAsTheCommandLine) {
     ASSERT_EQ(instance.output_channels(), kActuators + 2);
     instance.activate();
     const Outputs out = play(instance, drums_);
-    for (int k = 0; k < kActuators; ++k) {
-        const double d = max_difference(out[static_cast<size_t>(k)], cli.channels[0]);
-        std::printf("LV2 vibration %d vs tactus render: largest difference %.3g\n", k + 1, d);
-        EXPECT_LE(d, 1e-5);
-    }
+    expect_each_actuator_is(out, kActuators, cli.channels[0], "LV2");
     Engine engine;
     engine.prepare({.sample_rate_hz = drums_.sample_rate_hz, .max_block = kBlock, .channels = 2});
     const auto latency = static_cast<size_t>(instance.control("lv2_latency"));

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <vector>
 
@@ -49,6 +50,17 @@ inline double max_difference(const std::vector<float>& a, const std::vector<floa
     for (size_t i = from; i < std::min(a.size(), b.size()); ++i)
         d = std::max(d, std::abs(static_cast<double>(a[i]) - b[i]));
     return d;
+}
+
+// Each of the first `actuators` outputs is `vibration` within 1e-5 (each difference printed,
+// named by `host`).
+inline void expect_each_actuator_is(const std::vector<std::vector<float>>& out, int actuators,
+                                    const std::vector<float>& vibration, const char* host) {
+    for (int k = 0; k < actuators; ++k) {
+        const double d = max_difference(out[static_cast<size_t>(k)], vibration);
+        std::printf("%s vibration %d vs tactus render: largest difference %.3g\n", host, k + 1, d);
+        EXPECT_LE(d, 1e-5);
+    }
 }
 
 // The largest sample-to-sample step in [from, to).
