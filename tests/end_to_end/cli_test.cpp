@@ -18,6 +18,7 @@
 #include "support/run_cli.hpp"
 #include "support/signals.hpp"
 #include "tactus/io/audio_reader.hpp"
+#include "tactus/params/params.hpp"
 
 namespace {
 
@@ -97,7 +98,8 @@ TEST_F(Cli, AnalyzeCsvAndJson) {
         << csv.out.substr(0, 200);
     const auto rows = std::count(csv.out.begin(), csv.out.end(), '\n') - 2;
     const double seconds = static_cast<double>(info_of(kAmen).frames) / info_of(kAmen).samplerate;
-    EXPECT_NEAR(rows, seconds / 0.0029, 0.02 * rows);  // one row per 2.9 ms frame
+    const double hop_s = tactus::Settings{}[tactus::P::analysis_hop_ms] * 1e-3;
+    EXPECT_NEAR(rows, seconds / hop_s, 0.02 * rows);  // one row per analysis frame
 
     const fs::path json = dir_ / "amen.json";
     ASSERT_EQ(run("analyze " + kAmen + " -o " + json.string()).exit_code, 0);

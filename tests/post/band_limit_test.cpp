@@ -71,6 +71,18 @@ TEST(BandLimit, NoLowpassAtOrAboveFortyFivePercentOfTheRate) {
     EXPECT_NEAR(band.magnitude_db(20.0), kCornerDb, 0.001);
 }
 
+TEST(BandLimit, HighPassAloneLeavesTheTopOpen) {
+    BandLimit band;
+    band.prepare({.sample_rate_hz = 44100.0},
+                 {.low_hz = 30.0, .high_hz = 1000.0, .order = 8, .low_pass = false});
+    EXPECT_NEAR(band.magnitude_db(30.0), kCornerDb, 0.001);
+    EXPECT_NEAR(band.magnitude_db(1000.0), 0.0, 0.001);
+    EXPECT_NEAR(band.magnitude_db(10000.0), 0.0, 0.001);
+    const double measured =
+        test::measured_gain_db([&](float* x, int n) { band.process(x, n); }, 2000.0, 44100.0);
+    EXPECT_NEAR(measured, 0.0, 0.02);
+}
+
 TEST(BandLimit, RejectsInvalidOrders) {
     BandLimit band;
     for (int order : {0, 1, 3, 10, -2})

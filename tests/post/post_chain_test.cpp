@@ -271,13 +271,15 @@ TEST(PostChain, ComponentsThatAreOffChangeNothing) {
 }
 
 TEST(PostChain, WithoutAnActuatorItIsExactlyThePapersFourStages) {
-    // Bit for bit: band-limit, flattening, limiter, band-limit and the final clip run by hand.
+    // Bit for bit: band-limit (its high-pass: the carrier has nothing above the band), flattening,
+    // limiter, band-limit and the final clip run by hand.
     const double fs = 44100;
     const Settings s;
     BandLimit first, last;
     first.prepare({.sample_rate_hz = fs}, {.low_hz = s[P::post_band_low_hz],
                                            .high_hz = s[P::post_band_high_hz],
-                                           .order = PostChain::kFirstBandOrder});
+                                           .order = PostChain::kFirstBandOrder,
+                                           .low_pass = false});
     last.prepare({.sample_rate_hz = fs}, {.low_hz = s[P::post_band_low_hz],
                                           .high_hz = s[P::post_band_high_hz],
                                           .order = PostChain::kLastBandOrder});

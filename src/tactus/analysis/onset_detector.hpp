@@ -36,7 +36,7 @@ struct OnsetDecision {
 
 class OnsetDetector {
   public:
-    // One default hop (2.9 ms), where the thresholds were tuned.
+    // Two default hops (1.45 ms), where the thresholds were tuned.
     static constexpr double kLagMs = 2.9;
 
     void prepare(const ProcessSpec& spec, int hop_samples, const OnsetSettings& settings);

@@ -19,7 +19,7 @@ void BandLimit::prepare(const ProcessSpec& spec, const BandEdges& band) {
         sections_[count_++].set(
             BiquadCoefficients::highpass(low_hz, butterworth_q(order, k), sample_rate_hz));
     // A low-pass near Nyquist would be meaningless; the band then ends at Nyquist.
-    if (high_hz < 0.45 * sample_rate_hz)
+    if (band.low_pass && high_hz < 0.45 * sample_rate_hz)
         for (int k = 0; k < per_side; ++k)
             sections_[count_++].set(
                 BiquadCoefficients::lowpass(high_hz, butterworth_q(order, k), sample_rate_hz));

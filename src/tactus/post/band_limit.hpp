@@ -1,5 +1,6 @@
 // Band-limit to the vibrotactile range (paper §6, first and last post-processing stages):
-// Butterworth high-pass at low_hz and low-pass at high_hz, each of the given even order.
+// Butterworth high-pass at low_hz and low-pass at high_hz, each of the given even order, or the
+// high-pass alone for a signal that has nothing above high_hz.
 #pragma once
 
 #include <array>
@@ -14,6 +15,7 @@ struct BandEdges {
     double low_hz = 20;
     double high_hz = 1000;
     int order = 8;
+    bool low_pass = true;  // false: the high-pass alone
 };
 
 class BandLimit {

@@ -36,10 +36,17 @@ void PostChain::prepare(const ProcessSpec& spec, const Settings& s,
     sample_rate_hz_ = sample_rate_hz;
     flutter_on_ = flutter_enabled(s);
     pressure_on_ = pressure_enabled(s);
-    first_band_.prepare(spec, {.low_hz = low_hz, .high_hz = high_hz, .order = kFirstBandOrder});
     flatten_.prepare(spec, flattening_inputs(s));
     erm_ = actuator != nullptr && actuator->type == ActuatorType::erm;
     compensate_ = actuator != nullptr && !erm_;
+    // The carrier has no partial above the band (synthesis/oscillator.hpp): without an actuator
+    // the first band-limit is a high-pass, as a low-pass would only delay every pulse (0.8 ms at
+    // 8th order). An actuator's compensation lifts the envelope's sidebands just above a narrow
+    // band (an LRA's) by up to its bound: the low-pass keeps them out.
+    first_band_.prepare(spec, {.low_hz = low_hz,
+                               .high_hz = high_hz,
+                               .order = kFirstBandOrder,
+                               .low_pass = compensate_});
     if (compensate_) compensation_.prepare(spec, *actuator);
     if (erm_) erm_drive_.prepare(spec, erm_spin_time_constant_ms(*actuator));
     max_drive_ = actuator ? actuator->max_drive : 1.0;

@@ -1,5 +1,7 @@
 // Post-processing in the paper's order (§6): band-limit to the vibrotactile range, P-channel
-// flattening, peak limiter, band-limit again. The limiter's ceiling sits 1 dB under the output
+// flattening, peak limiter, band-limit again. Without an actuator the first band-limit is a
+// high-pass only: the carrier has no partial above the band's top, so a low-pass would only add
+// its delay. The limiter's ceiling sits 1 dB under the output
 // ceiling to leave room for the last band-limit's ringing; a final clip at the ceiling makes the
 // bound absolute and counts how often it had to act (it should not: see clipped_samples()).
 // With an actuator profile, its compensation follows the flattening (so the limiter bounds what
@@ -14,7 +16,7 @@
 // compensation shapes and the limiter guards the sum; the last band-limit's high-pass then sits
 // at post.flutter_low_hz. The NPIII pressure (a slow offset) joins after the last band-limit; the
 // limiter's ceiling is lowered by the pressure's largest value (its weight times the ceiling),
-// so the sum stays under the ceiling. It is not delayed by the limiter's look-ahead (1 ms
+// so the sum stays under the ceiling. It is not delayed by the limiter's look-ahead (0.3 ms
 // against NPIII's >= 330 ms periods). With both off and no actuator the chain is exactly the
 // paper's.
 // An ERM (its vibration frequency follows its speed: only the carrier's intensity can reach the
