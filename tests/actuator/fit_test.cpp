@@ -52,6 +52,16 @@ TEST(ActuatorFit, LraFrequenciesStayInItsBandInOrder) {
     EXPECT_EQ(fitted[P::post_band_high_hz], a.band_high_hz);
 }
 
+TEST(ActuatorFit, AnLraHoldsOneFrequencyPerPulse) {
+    const ActuatorProfile lra = load_actuator(resolve_actuator("lra-175"));
+    EXPECT_EQ(fit_to_actuator(lra, Settings{}).settings[P::frequency_hold], 1.0);
+    for (const char* other : {"voice-coil", "erm"})
+        EXPECT_EQ(fit_to_actuator(load_actuator(resolve_actuator(other)), Settings{})
+                      .settings[P::frequency_hold],
+                  0.0)
+            << other;
+}
+
 TEST(ActuatorFit, WhatTheActuatorCannotPlayIsDropped) {
     Settings four;
     apply_preset_file(four, resolve_preset("four-channel"));

@@ -24,6 +24,7 @@ TEST(ActuatorWarnings, OneLineSaysWhatWasFittedOnTheLra) {
     EXPECT_EQ(w[0].rfind("lra-175: fitted to its usable band 150-235 Hz: ", 0), 0u) << w[0];
     EXPECT_TRUE(contains(w[0], "mapping.frequency 40-400 Hz -> 156-226 Hz")) << w[0];
     EXPECT_TRUE(contains(w[0], "square harmonics dropped")) << w[0];
+    EXPECT_TRUE(contains(w[0], "mapping.frequency.hold on")) << w[0];
     EXPECT_TRUE(contains(w[0], "max drive -3.1 dBFS")) << w[0];
     EXPECT_EQ(w[0].find('\n'), std::string::npos);
     Settings inside;
@@ -33,6 +34,7 @@ TEST(ActuatorWarnings, OneLineSaysWhatWasFittedOnTheLra) {
     inside.set(P::post_band_high_hz, 235);
     inside.set(P::post_band_low_hz, 150);
     inside.set(P::post_ceiling_db, -4);
+    inside.set(P::frequency_hold, 1);
     EXPECT_TRUE(actuator_warnings(load_actuator(resolve_actuator("lra-175")), inside).empty());
 }
 

@@ -8,6 +8,12 @@
 //               span on lra-175). An ERM's frequency follows its drive: it is fitted too, which
 //               keeps the carrier whose envelope drives it above the envelope's smoothing.
 //   square      a square's harmonics (3f and up) above the band are dropped: sine only.
+//   hold        on an LRA, one frequency per pulse (mapping.frequency.hold): its sharp
+//               resonance (Q 10 on lra-175, -10 dB at the band's edges) turns a few hertz of
+//               the carrier into a decibel of displacement, so a pitch that wanders within a
+//               pulse, or differs between two hits of one drum with where in the hit the onset
+//               was decided, reorders their levels (through lra-175's model, hit gain -> felt
+//               peak rho 0.73 without, 0.98 with; eval/actuators.py).
 //   band        post.band_low_hz / band_high_hz within the usable band: the band-limit cuts what
 //               the actuator cannot play (the compensation no longer lifts it there either);
 //               not on an ERM, whose carrier only carries the intensity.
