@@ -86,7 +86,7 @@ const Spectra& amen_spectra() {
 void Brightness(benchmark::State& state) {
     const Spectra& s = amen_spectra();
     tactus::Brightness brightness;
-    brightness.prepare(s.bins, s.bin_hz);
+    brightness.prepare(s.bins, s.bin_hz, tactus::Settings{}[tactus::P::brightness_max_hz]);
     for (auto _ : state)
         for (const auto& m : s.magnitudes) benchmark::DoNotOptimize(brightness.centroid_hz(m));
     set_items(state, s.magnitudes.size(), "analysis frames");

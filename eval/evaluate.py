@@ -9,7 +9,8 @@ Builds the corpus with BUILD_DIR/eval/make_drum_corpus (fixed seed), runs `tactu
 `pd -nogui -batch`; all parameters explicit), and checks: onset F-measure, precision and recall
 at +-25 and +-50 ms and the median signed timing offset (mir_eval), snare/kick vibration
 frequency ratio, hit gain -> pulse peak Spearman rho, share of output energy in 20-1000 Hz,
-output peak, silence in -> silence out, and the time from each hit's true onset to the output
+output peak, silence in -> silence out, felt snare/kick in the breakbeats, and the time from
+each hit's true onset to the output
 reaching half its pulse peak, each as felt (eval/felt.py) and raw, with a summary up front; then Sonic Pi's Amen break at every sample rate from 16 to 192 kHz
 (eval/sample_rates.py), and the corpus through each shipped actuator profile
 (eval/actuators.py). The same measures follow on a held-out corpus: General MIDI drum
@@ -44,6 +45,9 @@ AUBIO_ARGS = ["-B", "512", "-H", "256", "-t", "0.3", "-M", "0.012", "-s", "-90"]
 # fallen back under the low one, so its times lag the onset by some hops.
 BONK_PATCH = pathlib.Path(__file__).resolve().parent / "bonk_onsets.pd"
 TOLERANCES_S = (0.025, 0.05)
+# A breakbeat hit's pulse is measured over its first 80 ms: the next hit comes 91 ms later at
+# worst (sixteenths at 165 BPM).
+BREAKBEAT_PULSE_S = 0.08
 
 
 def run(cmd):
@@ -151,12 +155,21 @@ def evaluate(args, tactus, work, kits=None, samples=None):
             kick, snare = result[f"kick_{prefix}hz"], result[f"snare_{prefix}hz"]
             result[prefix + "ratio"] = snare / kick if kick else float("nan")
         per_kit.append(result)
+    breakbeat_ratios = []  # (felt snare/kick, file) of each clean breakbeat
     for out in sorted(renders.glob("breakbeat-*.vibration.wav")):
         y, rate = soundfile.read(out, dtype="float64")
         worst_share = min(worst_share, in_band_share(y, rate))
         worst_peak = max(worst_peak, float(np.max(np.abs(y))))
+        name = out.name[:-len(".vibration.wav")]
+        if not name.endswith("-noise"):
+            hits = read_hits(corpus / f"{name}.hits.csv")
+            hz = {i: statistics.median(f for _, f, _ in felt.pulses(
+                y, rate, [t for t, inst, _ in hits if inst == i], window_s=BREAKBEAT_PULSE_S))
+                for i in ("kick", "snare")}
+            breakbeat_ratios.append((hz["snare"] / hz["kick"], name))
 
     return {"detectors": detectors, "scores": scores, "per_kit": per_kit,
+            "breakbeat_ratios": breakbeat_ratios,
             "latencies": latencies[""], "raw_latencies": latencies["raw_"], "share": worst_share, "peak": worst_peak}
 
 
@@ -201,7 +214,11 @@ def sections(result):
               f"- onset -> felt output at half its pulse peak: median {np.nanmedian(felt_ms):.1f} ms, "
               f"95th percentile {np.nanpercentile(felt_ms, 95):.1f} ms",
               f"- onset -> raw output at half its pulse peak: median {np.nanmedian(raw_ms):.1f} ms, "
-              f"90th percentile {np.nanpercentile(raw_ms, 90):.1f} ms"]
+              f"90th percentile {np.nanpercentile(raw_ms, 90):.1f} ms",
+              f"- felt snare/kick in the clean breakbeats, where hits overlap (each hit's first "
+              f"{1000 * BREAKBEAT_PULSE_S:.0f} ms): median over the files "
+              f"{np.median([r for r, _ in result['breakbeat_ratios']]):.2f}, worst "
+              "{:.2f} ({})".format(*min(result["breakbeat_ratios"]))]
     return lines
 
 
@@ -219,6 +236,10 @@ def summary(corpora):
                            for r in result["per_kit"] for i in ("kick", "snare"))
         return f"{value:.3f} ({where})"
 
+    def breakbeats(result):
+        ratios = result["breakbeat_ratios"]
+        return f"{np.median([r for r, _ in ratios]):.2f} / " + "{:.2f} ({})".format(*min(ratios))
+
     def latency(result):
         ms = 1000 * np.array(result["latencies"])
         return f"{np.nanmedian(ms):.1f} / {np.nanpercentile(ms, 95):.1f}"
@@ -228,7 +249,8 @@ def summary(corpora):
             ("hit gain -> felt pulse peak rho, worst", lambda r: worst_rho(r, "")),
             ("onset -> felt output at half its pulse peak, median / 95th percentile ms", latency),
             ("felt snare/kick frequency ratio, worst kit", lambda r: worst(r, "ratio")),
-            ("raw snare/kick frequency ratio, worst kit", lambda r: worst(r, "raw_ratio"))]
+            ("raw snare/kick frequency ratio, worst kit", lambda r: worst(r, "raw_ratio")),
+            ("felt snare/kick in the clean breakbeats, median / worst file", breakbeats)]
     names = [name for name, _ in corpora]
     lines = ["## Summary", "", "| figure | " + " | ".join(names) + " |",
              "|---|" + "---|" * len(names)]

@@ -49,9 +49,9 @@ def weighted(y, rate_hz, minimum_phase=False):
     return np.fft.irfft(np.fft.rfft(y, n) * response, n)[:len(y)]
 
 
-def pulse(felt, rate_hz, onset_s):
+def pulse(felt, rate_hz, onset_s, window_s=PULSE_WINDOW_S):
     start = int(round(onset_s * rate_hz))
-    return felt[start:start + int(PULSE_WINDOW_S * rate_hz)]
+    return felt[start:start + int(window_s * rate_hz)]
 
 
 def peak(segment):
@@ -89,13 +89,14 @@ def half_peak_latency_s(segment, rate_hz):
     return np.argmax(np.abs(segment) >= 0.5 * top) / rate_hz
 
 
-def pulses(y, rate_hz, onsets_s, weight=True):
-    """Peak, frequency (Hz) and half-peak latency (s) of the pulse after each onset: felt (its
-    frequency the felt spectrum's centroid) or, without `weight`, raw (zero crossings)."""
+def pulses(y, rate_hz, onsets_s, weight=True, window_s=PULSE_WINDOW_S):
+    """Peak, frequency (Hz) and half-peak latency (s) of the pulse after each onset, measured
+    over `window_s`: felt (its frequency the felt spectrum's centroid) or, without `weight`, raw
+    (zero crossings)."""
     signal = weighted(y, rate_hz) if weight else np.asarray(y, dtype=float)
     frequency = centroid_hz if weight else zero_crossing_hz
     out = []
     for t in onsets_s:
-        seg = pulse(signal, rate_hz, t)
+        seg = pulse(signal, rate_hz, t, window_s)
         out.append((peak(seg), frequency(seg, rate_hz), half_peak_latency_s(seg, rate_hz)))
     return out

@@ -44,9 +44,10 @@ TEST(ActuatorFit, LraFrequenciesStayInItsBandInOrder) {
             EXPECT_NEAR(f, before, 1e-6 * before);
         }
     }
-    // A dull kick and a bright snare (tfd: 144 and 356 Hz on the voice coil) at the band's ends.
-    EXPECT_NEAR(frequency_at(fitted, 300), a.band_low_hz * kEdgeMargin, 1e-6);
-    EXPECT_NEAR(frequency_at(fitted, 1700), a.band_high_hz / kEdgeMargin, 1e-6);
+    // A kick and a snare (tfd's body brightness: Sonic Pi's kicks 60-110 Hz, snares 290-530 Hz)
+    // at the band's two ends.
+    EXPECT_NEAR(frequency_at(fitted, 110), a.band_low_hz * kEdgeMargin, 1e-6);
+    EXPECT_NEAR(frequency_at(fitted, 290), a.band_high_hz / kEdgeMargin, 1e-6);
     EXPECT_EQ(fitted[P::square_mix_out_max], 0.0);
     EXPECT_EQ(fitted[P::post_band_low_hz], a.band_low_hz);
     EXPECT_EQ(fitted[P::post_band_high_hz], a.band_high_hz);

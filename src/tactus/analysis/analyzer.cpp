@@ -52,7 +52,7 @@ void Analyzer::prepare(const ProcessSpec& spec, const Settings& s) {
     const ProcessSpec analysis{.sample_rate_hz = analysis_rate, .max_block = max_inputs};
     stft_.prepare(nearest_fft_size(ms_to_samples(s[P::analysis_window_ms], analysis_rate)),
                   analysis_rate);
-    brightness_.prepare(stft_.bins(), stft_.bin_hz());
+    brightness_.prepare(stft_.bins(), stft_.bin_hz(), s[P::brightness_max_hz]);
     noisiness_.prepare(stft_.bins(), stft_.bin_hz());
     loudness_.prepare(spec, s[P::loudness_window_ms]);
     pitch_.prepare(analysis, {.min_hz = s[P::pitch_min_hz],
@@ -74,6 +74,7 @@ void Analyzer::prepare(const ProcessSpec& spec, const Settings& s) {
 void Analyzer::set_live(const Settings& s) noexcept {
     onsets_.set_thresholds(s[P::onset_threshold], s[P::onset_ratio], s[P::onset_min_interval_ms]);
     pitch_.set_threshold(s[P::pitch_threshold]);
+    brightness_.set_max_hz(s[P::brightness_max_hz]);
 }
 
 void Analyzer::reset() noexcept {

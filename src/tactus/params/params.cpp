@@ -76,7 +76,7 @@ constexpr ParamSpec kTable[] = {
      "feature mapped to vibration frequency", kSources},
     {P::frequency_in_min, 21, "mapping.frequency.in_min", "", real, -1e6, 1e6, 100, lin, live, 20,
      "source value mapped to out_min"},
-    {P::frequency_in_max, 22, "mapping.frequency.in_max", "", real, -1e6, 1e6, 800, lin, live, 20,
+    {P::frequency_in_max, 22, "mapping.frequency.in_max", "", real, -1e6, 1e6, 300, lin, live, 20,
      "source value mapped to out_max"},
     {P::frequency_out_min, 23, "mapping.frequency.out_min", "Hz", real, 1, 1000, 40, log, live, 20,
      "vibration frequency at in_min"},
@@ -201,6 +201,10 @@ constexpr ParamSpec kTable[] = {
     {P::frequency_settle_ms, 77, "mapping.frequency.settle_ms", "ms", real, 0, 100, 30, lin, live, 0,
      "with hold on: how long after an onset the pulse's frequency follows the mapping before "
      "it holds (0: the onset frame's)"},
+    // Analysis: the band the brightness reads (analysis/brightness.hpp).
+    {P::brightness_max_hz, 78, "brightness.max_hz", "Hz", real, 200, 8000, 1500, log, live, 0,
+     "highest frequency the brightness centroid reads: a drum's body, not its beater click or "
+     "snare wires (8000: the whole 16 kHz analysis band)"},
 };
 // clang-format on
 

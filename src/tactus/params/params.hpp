@@ -108,6 +108,7 @@ enum class P : int {
     perception_contact_area_cm2,
     frequency_hold,
     frequency_settle_ms,
+    brightness_max_hz,
     count
 };
 
