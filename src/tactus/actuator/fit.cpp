@@ -102,7 +102,8 @@ ActuatorFit fit_to_actuator(const ActuatorProfile& a, const Settings& settings) 
 
     if (a.type == ActuatorType::lra && s[P::frequency_hold] == 0.0) {
         s.set(P::frequency_hold, 1.0);
-        done.push_back("mapping.frequency.hold on (its resonance turns a wandering pitch into level)");
+        done.push_back(
+            "mapping.frequency.hold on (its resonance turns a wandering pitch into level)");
     }
 
     // An ERM's carrier only carries its intensity (post/erm_drive.hpp): its band stays.

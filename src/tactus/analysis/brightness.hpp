@@ -18,7 +18,7 @@ namespace tactus {
 class Brightness {
   public:
     void prepare(int bins, double bin_hz, double max_hz);  // may allocate (ln k per bin)
-    void set_max_hz(double max_hz) noexcept;                // live (audio thread)
+    void set_max_hz(double max_hz) noexcept;               // live (audio thread)
     double centroid_hz(std::span<const float> magnitudes) const noexcept;
 
   private:

@@ -43,10 +43,9 @@ void PostChain::prepare(const ProcessSpec& spec, const Settings& s,
     // the first band-limit is a high-pass, as a low-pass would only delay every pulse (0.8 ms at
     // 8th order). An actuator's compensation lifts the envelope's sidebands just above a narrow
     // band (an LRA's) by up to its bound: the low-pass keeps them out.
-    first_band_.prepare(spec, {.low_hz = low_hz,
-                               .high_hz = high_hz,
-                               .order = kFirstBandOrder,
-                               .low_pass = compensate_});
+    first_band_.prepare(
+        spec,
+        {.low_hz = low_hz, .high_hz = high_hz, .order = kFirstBandOrder, .low_pass = compensate_});
     if (compensate_) compensation_.prepare(spec, *actuator);
     if (erm_) erm_drive_.prepare(spec, erm_spin_time_constant_ms(*actuator));
     max_drive_ = actuator ? actuator->max_drive : 1.0;

@@ -1,7 +1,6 @@
 // Post-processing in the paper's order (§6): band-limit to the vibrotactile range, P-channel
-// flattening, peak limiter, band-limit again. Without an actuator the first band-limit is a
-// high-pass only: the carrier has no partial above the band's top, so a low-pass would only add
-// its delay. The limiter's ceiling sits 1 dB under the output
+// flattening, peak limiter, band-limit again; without an actuator the first band-limit is its
+// high-pass alone (post_chain.cpp). The limiter's ceiling sits 1 dB under the output
 // ceiling to leave room for the last band-limit's ringing; a final clip at the ceiling makes the
 // bound absolute and counts how often it had to act (it should not: see clipped_samples()).
 // With an actuator profile, its compensation follows the flattening (so the limiter bounds what
