@@ -9,9 +9,7 @@ namespace tactus {
 namespace {
 const double kRiseTimeConstants = std::log(9.0);  // a one-pole's 10-90 % rise, in time constants
 constexpr double kDbPerOctavePerSection = 12.0;   // a 2nd-order Butterworth edge's asymptote
-constexpr double kLowestFitHz = 1.0;
-constexpr double kWidestFitRatio = 181.0;  // FittedEq's 16 half-octave sections
-constexpr double kStillSpeed = 1e-12;      // below it the motor stands: silence stays silent
+constexpr double kStillSpeed = 1e-12;             // below it the motor stands: silence stays silent
 }  // namespace
 
 double erm_spin_time_constant_ms(const ActuatorProfile& actuator) {
@@ -33,8 +31,7 @@ void ActuatorModel::prepare(const ProcessSpec& spec, const ActuatorProfile& a) {
     actuator_ = a;
     sample_rate_hz_ = spec.sample_rate_hz;
     erm_ = a.type == ActuatorType::erm;
-    const double tau_ms = erm_spin_time_constant_ms(a);
-    follow_ = tau_ms > 0 ? 1.0 - std::exp(-1e3 / (tau_ms * spec.sample_rate_hz)) : 1.0;
+    follow_ = 1.0 - one_pole_coefficient(erm_spin_time_constant_ms(a), spec.sample_rate_hz);
     const double nyquist_hz = 0.45 * spec.sample_rate_hz;
     resonance_on_ = !erm_ && a.resonance != ResonanceKind::none && a.resonance_hz < nyquist_hz;
     if (resonance_on_)
@@ -56,12 +53,10 @@ void ActuatorModel::prepare(const ProcessSpec& spec, const ActuatorProfile& a) {
                     BiquadCoefficients::lowpass(a.band_high_hz, q, sample_rate_hz_));
         }
     }
-    const double fit_low_hz = std::max(a.band_low_hz / 2, kLowestFitHz);
-    const double fit_high_hz = std::min(a.band_high_hz * 2, fit_low_hz * kWidestFitRatio);
     rest_.prepare(
         spec,
         erm_ ? FittedEq::Design{}
-             : FittedEq::fit(sample_rate_hz_, {.low_hz = fit_low_hz, .high_hz = fit_high_hz},
+             : FittedEq::fit(sample_rate_hz_, FitBand::octave_beyond(a.band_low_hz, a.band_high_hz),
                              [this](double f) { return actuator_.response_db(f) - fixed_db(f); }));
     reset();
 }

@@ -6,16 +6,12 @@
 #include "tactus/core/units.hpp"
 
 namespace tactus {
-namespace {
-constexpr double kLowestFitHz = 1.0;
-constexpr double kWidestFitRatio = 181.0;  // 7.5 octaves: FittedEq's 16 half-octave sections
-}  // namespace
-
 double ActuatorCompensation::target_db(double frequency_hz) const {
     const double f = std::clamp(frequency_hz, actuator_.band_low_hz, actuator_.band_high_hz);
     // Outside the band nothing is lifted towards what the actuator cannot play: the edge's
     // value falls away at the profile's roll-off.
-    const double outside_octaves = std::abs(std::log2(std::max(frequency_hz, kLowestFitHz) / f));
+    const double outside_octaves =
+        std::abs(std::log2(std::max(frequency_hz, FitBand::kLowestHz) / f));
     return std::clamp(-actuator_.response_db(f), -kBoundDb, kBoundDb) -
            actuator_.rolloff_db_per_octave * outside_octaves;
 }
@@ -42,12 +38,10 @@ void ActuatorCompensation::prepare(const ProcessSpec& spec, const ActuatorProfil
             BiquadCoefficients::peaking(actuator.resonance_hz, q, -kBoundDb, sample_rate_hz));
         notch_gain_ = db_to_gain(kBoundDb - actuator.response_db(actuator.resonance_hz));
     }
-    // Fitted an octave beyond the band on each side (the target holds its edge values there),
-    // so the response stays near the bound outside the band instead of drifting.
-    const double fit_low_hz = std::max(actuator.band_low_hz / 2, kLowestFitHz);
-    const double fit_high_hz = std::min(actuator.band_high_hz * 2, fit_low_hz * kWidestFitRatio);
-    eq_.prepare(spec, FittedEq::fit(sample_rate_hz, {.low_hz = fit_low_hz, .high_hz = fit_high_hz},
-                                    [this](double f) { return target_db(f) - notch_db(f); }));
+    eq_.prepare(spec,
+                FittedEq::fit(sample_rate_hz,
+                              FitBand::octave_beyond(actuator.band_low_hz, actuator.band_high_hz),
+                              [this](double f) { return target_db(f) - notch_db(f); }));
     reset();
 }
 

@@ -22,8 +22,18 @@ namespace tactus {
 
 // The band a fit spans.
 struct FitBand {
+    static constexpr double kLowestHz = 1.0;
+    static constexpr double kWidestRatio = 181.0;  // 7.5 octaves: 16 half-octave sections
+
     double low_hz = 20;
     double high_hz = 1000;
+
+    // An octave beyond [low_hz, high_hz] on each side (a target that holds its edge values
+    // there keeps the response from drifting just outside), within what the sections reach.
+    static FitBand octave_beyond(double low_hz, double high_hz) {
+        const double low = std::max(low_hz / 2, kLowestHz);
+        return {.low_hz = low, .high_hz = std::min(high_hz * 2, low * kWidestRatio)};
+    }
 };
 
 class FittedEq {

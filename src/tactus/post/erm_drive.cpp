@@ -14,9 +14,7 @@ constexpr double kSilentDrive = 1e-9;          // below it the drive is 0: silen
 void ErmDrive::prepare(const ProcessSpec& spec, double spin_time_constant_ms) {
     envelope_.set(
         BiquadCoefficients::lowpass(kEnvelopeHz, butterworth_q(2, 0), spec.sample_rate_hz));
-    follow_ = spin_time_constant_ms > 0
-                  ? 1.0 - std::exp(-1e3 / (spin_time_constant_ms * spec.sample_rate_hz))
-                  : 1.0;
+    follow_ = 1.0 - one_pole_coefficient(spin_time_constant_ms, spec.sample_rate_hz);
     reset();
 }
 
