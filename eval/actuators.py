@@ -18,7 +18,6 @@ another tactus (a baseline); the model and meter stay BUILD_DIR's.
 import argparse
 import pathlib
 import statistics
-import subprocess
 import sys
 import tempfile
 
@@ -27,13 +26,10 @@ import scipy.stats
 import soundfile
 
 import felt
+from shared import band_share, read_hits, run
 
 PROFILES = ("voice-coil", "lra-175", "erm")
 TENTH = 0.1
-
-
-def run(cmd):
-    return subprocess.run([str(c) for c in cmd], check=True, capture_output=True, text=True)
 
 
 def usable_band(actuators_dir, name):
@@ -43,18 +39,6 @@ def usable_band(actuators_dir, name):
         if key.strip() in ("band_low_hz", "band_high_hz"):
             values[key.strip()] = float(value.split("#")[0])
     return values["band_low_hz"], values["band_high_hz"]
-
-
-def band_share(y, rate, low_hz, high_hz):
-    power = np.abs(np.fft.rfft(y)) ** 2
-    freqs = np.fft.rfftfreq(len(y), 1.0 / rate)
-    total = power.sum()
-    return float("nan") if total == 0 else power[(freqs >= low_hz) & (freqs <= high_hz)].sum() / total
-
-
-def read_hits(path):
-    rows = [line.split(",") for line in path.read_text().splitlines()[1:]]
-    return [(float(t), instrument, float(g)) for t, instrument, g in rows]
 
 
 def meter_p(tactus, render, name, csv):

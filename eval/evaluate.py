@@ -34,6 +34,7 @@ import actuators
 import felt
 import gm_kits
 import sample_rates
+from shared import band_share, read_hits, run
 
 AUBIO_METHODS = ["hfc", "energy", "complex", "phase", "specdiff", "kl", "mkl", "specflux"]
 # aubioonset's defaults, passed explicitly: buffer 512, hop 256, threshold 0.3, minioi 12 ms,
@@ -48,10 +49,6 @@ TOLERANCES_S = (0.025, 0.05)
 # A breakbeat hit's pulse is measured over its first 80 ms: the next hit comes 91 ms later at
 # worst (sixteenths at 165 BPM).
 BREAKBEAT_PULSE_S = 0.08
-
-
-def run(cmd):
-    return subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
 
 
 def column(text, index=0):
@@ -84,18 +81,6 @@ def onset_scores(reference, estimated):
     return scores, offsets
 
 
-def read_hits(path):
-    rows = [line.split(",") for line in path.read_text().splitlines()[1:]]
-    return [(float(t), instrument, float(g)) for t, instrument, g in rows]
-
-
-def in_band_share(y, rate, low_hz=20.0, high_hz=1000.0):
-    power = np.abs(np.fft.rfft(y)) ** 2
-    freqs = np.fft.rfftfreq(len(y), 1.0 / rate)
-    total = power.sum()
-    return 1.0 if total == 0 else power[(freqs >= low_hz) & (freqs <= high_hz)].sum() / total
-
-
 def evaluate(args, tactus, work, kits=None, samples=None):
     """Builds one corpus in `work` (Sonic Pi's kits, or `kits` from the `samples` directory),
     runs every detector on it and renders it; returns its measures."""
@@ -114,12 +99,12 @@ def evaluate(args, tactus, work, kits=None, samples=None):
         name = wav.stem
         condition = "noise" if name.endswith("-noise") else "clean"
         reference = np.loadtxt(corpus / f"{name}.onsets.txt", ndmin=1)
-        tactus_onsets = run([tactus, "onsets", str(wav), "--preset", args.preset])
+        tactus_onsets = run([tactus, "onsets", wav, "--preset", args.preset]).stdout
         estimates = {"tactus": column(tactus_onsets, 0),
                      "tactus decided": column(tactus_onsets, 1)}
         for m in AUBIO_METHODS:
             estimates["aubio " + m] = column(
-                run(["aubioonset", "-i", str(wav), "-O", m] + AUBIO_ARGS))
+                run(["aubioonset", "-i", wav, "-O", m] + AUBIO_ARGS).stdout)
         estimates["bonk~"] = bonk_onsets(wav, soundfile.info(wav).samplerate)
         for detector, estimated in estimates.items():
             per_file, offsets = scores[condition][detector]
@@ -149,7 +134,7 @@ def evaluate(args, tactus, work, kits=None, samples=None):
                 result[f"{instrument}_{prefix}rho"] = scipy.stats.spearmanr(
                     gains, [peak for peak, _, _ in measured]).correlation
                 result[f"{instrument}_{prefix}hz"] = statistics.median(f for _, f, _ in measured)
-            worst_share = min(worst_share, in_band_share(y, rate))
+            worst_share = min(worst_share, band_share(y, rate))
             worst_peak = max(worst_peak, float(np.max(np.abs(y))))
         for prefix in ("", "raw_"):
             kick, snare = result[f"kick_{prefix}hz"], result[f"snare_{prefix}hz"]
@@ -158,7 +143,7 @@ def evaluate(args, tactus, work, kits=None, samples=None):
     breakbeat_ratios = []  # (felt snare/kick, file) of each clean breakbeat
     for out in sorted(renders.glob("breakbeat-*.vibration.wav")):
         y, rate = soundfile.read(out, dtype="float64")
-        worst_share = min(worst_share, in_band_share(y, rate))
+        worst_share = min(worst_share, band_share(y, rate))
         worst_peak = max(worst_peak, float(np.max(np.abs(y))))
         name = out.name[:-len(".vibration.wav")]
         if not name.endswith("-noise"):

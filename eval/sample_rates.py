@@ -13,7 +13,6 @@ deviations over all pulses; then each render's output peak.
 import argparse
 import math
 import pathlib
-import subprocess
 import sys
 import tempfile
 
@@ -23,6 +22,7 @@ import scipy.signal
 import soundfile
 
 import felt
+from shared import run
 
 AMEN = pathlib.Path("/usr/share/sonic-pi/samples/loop_amen_full.flac")
 REFERENCE_HZ = 44100
@@ -31,12 +31,8 @@ MATCH_S = 0.001
 PULSE_FLOOR_DB = -40  # a pulse: a felt peak within this of the render's loudest
 
 
-def run(cmd):
-    return subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
-
-
 def onsets_s(tactus, wav, preset):
-    text = run([tactus, "onsets", str(wav), "--preset", preset])
+    text = run([tactus, "onsets", wav, "--preset", preset]).stdout
     return np.array([float(line.split()[0]) for line in text.splitlines() if line.strip()])
 
 
