@@ -53,6 +53,18 @@ TEST(FeatureMapping, LogCurveMapsRatiosToRatios) {
     EXPECT_NEAR(m.shape(1e6), 320, 1e-9);
 }
 
+TEST(FeatureMapping, InputForReadsEveryCurveBackwards) {
+    for (const auto curve : {MappingCurve::lin, MappingCurve::log, MappingCurve::exp})
+        for (const bool inverted : {false, true}) {
+            const auto m = inverted ? make(P::frequency_source, 300, 100, 40, 400, curve)
+                                    : make(P::frequency_source, 100, 300, 40, 400, curve);
+            for (const double input : {100.0, 137.0, 200.0, 299.0})
+                EXPECT_NEAR(m.input_for(m.shape(input)), input, 1e-9) << static_cast<int>(curve);
+            EXPECT_NEAR(m.input_for(1), inverted ? 300 : 100, 1e-9);  // beyond the range
+            EXPECT_NEAR(m.input_for(1000), inverted ? 100 : 300, 1e-9);
+        }
+}
+
 TEST(FeatureMapping, ExpCurveMapsDecibelsToAmplitudeRatios) {
     const auto m = make(P::amplitude_source, -60, 0, 0.03, 1, MappingCurve::exp);
     EXPECT_NEAR(m.shape(-60), 0.03, 1e-12);

@@ -7,6 +7,7 @@
 
 #include "tactus/actuator/compensation.hpp"
 #include "tactus/core/units.hpp"
+#include "tactus/mapping/feature_mapping.hpp"
 #include "tactus/perception/channels.hpp"
 
 namespace tactus {
@@ -15,59 +16,42 @@ namespace {
 // A square wave's lowest harmonic above its fundamental.
 constexpr double kSquareHarmonic = 3.0;
 
-// One FeatureMapping's range and curve (mapping/feature_mapping.cpp's shape(), read backwards).
-struct MappingRange {
-    double in_min, in_max, out_min, out_max;
-    MappingCurve curve;
-
-    bool log_out() const { return curve != MappingCurve::lin; }
-    double t_of_out(double out) const {
-        return log_out() ? std::log(out / out_min) / std::log(out_max / out_min)
-                         : (out - out_min) / (out_max - out_min);
-    }
-    double in_at(double t) const {
-        return curve == MappingCurve::log ? in_min * std::pow(in_max / in_min, t)
-                                          : in_min + t * (in_max - in_min);
-    }
-};
-
-MappingRange frequency_range(const Settings& s) {
-    return {s[P::frequency_in_min], s[P::frequency_in_max], s[P::frequency_out_min],
-            s[P::frequency_out_max],
-            static_cast<MappingCurve>(static_cast<int>(s[P::frequency_curve]))};
-}
-
 // Fits the frequency mapping into [band_low_hz, band_high_hz] (kEdgeMargin inside it) when it
 // reaches outside; returns what it did, or "".
 std::string fit_frequency(Settings& s, double band_low_hz, double band_high_hz) {
-    const MappingRange m = frequency_range(s);
-    const double lo = std::min(m.out_min, m.out_max), hi = std::max(m.out_min, m.out_max);
+    const double in_min = s[P::frequency_in_min], in_max = s[P::frequency_in_max];
+    const double out_min = s[P::frequency_out_min], out_max = s[P::frequency_out_max];
+    const double lo = std::min(out_min, out_max), hi = std::max(out_min, out_max);
     if (lo >= band_low_hz && hi <= band_high_hz) return {};
     const double low_hz = band_low_hz * kEdgeMargin, high_hz = band_high_hz / kEdgeMargin;
-    const std::string was = fmt::format("mapping.frequency {:g}-{:g} Hz", m.out_min, m.out_max);
+    const std::string was = fmt::format("mapping.frequency {:g}-{:g} Hz", out_min, out_max);
     if (hi / lo < 1 + 1e-9) {  // one frequency: the nearest the band has
         const double f = std::clamp(lo, low_hz, high_hz);
         s.set(P::frequency_out_min, f);
         s.set(P::frequency_out_max, f);
         return fmt::format("{} -> {:.3g} Hz", was, f);
     }
-    const bool log_in = m.curve == MappingCurve::log && m.in_min > 0 && m.in_max > 0;
+    FeatureMapping mapping;
+    mapping.configure(s, P::frequency_source, 1.0);
+    const bool log_curve =
+        static_cast<int>(s[P::frequency_curve]) == static_cast<int>(MappingCurve::log);
     const double centre_hz = std::sqrt(low_hz * high_hz);
     const double half_span = std::pow(std::sqrt(high_hz / low_hz), kFrequencySpread);
     double window_lo = std::max(lo, centre_hz / half_span);
     double window_hi = std::min(hi, centre_hz * half_span);
     if (!(window_hi / window_lo > 1 + 1e-6)) window_lo = lo, window_hi = hi;  // all outside
-    const bool rising = m.out_max > m.out_min;
-    double in_min = m.in_at(m.t_of_out(rising ? window_lo : window_hi));
-    double in_max = m.in_at(m.t_of_out(rising ? window_hi : window_lo));
-    if (m.curve == MappingCurve::log && !log_in) in_min = m.in_min, in_max = m.in_max;
-    s.set(P::frequency_in_min, in_min);
-    s.set(P::frequency_in_max, in_max);
+    const bool rising = out_max > out_min;
+    // A log curve over a non-positive input has no ratios to keep: its inputs stay.
+    const bool keep_in = log_curve && !(in_min > 0 && in_max > 0);
+    s.set(P::frequency_in_min,
+          keep_in ? in_min : mapping.input_for(rising ? window_lo : window_hi));
+    s.set(P::frequency_in_max,
+          keep_in ? in_max : mapping.input_for(rising ? window_hi : window_lo));
     s.set(P::frequency_out_min, rising ? low_hz : high_hz);
     s.set(P::frequency_out_max, rising ? high_hz : low_hz);
     return fmt::format("{} -> {:.4g}-{:.4g} Hz (in {:.4g}-{:.4g} -> {:.4g}-{:.4g}, log-scaled)",
-                       was, s[P::frequency_out_min], s[P::frequency_out_max], m.in_min, m.in_max,
-                       in_min, in_max);
+                       was, s[P::frequency_out_min], s[P::frequency_out_max], in_min, in_max,
+                       s[P::frequency_in_min], s[P::frequency_in_max]);
 }
 
 double clamp_to_spec(P id, double value) {

@@ -38,6 +38,21 @@ double FeatureMapping::shape(double input) const noexcept {
     return lo * std::pow(hi / lo, t);
 }
 
+double FeatureMapping::input_for(double output) const noexcept {
+    double t = 0.0;
+    if (curve_ == MappingCurve::lin) {
+        t = out_max_ != out_min_ ? (output - out_min_) / (out_max_ - out_min_) : 0.0;
+    } else {
+        const double lo = std::log(std::max(out_min_, kSmallest));
+        const double hi = std::log(std::max(out_max_, kSmallest));
+        t = hi != lo ? (std::log(std::max(output, kSmallest)) - lo) / (hi - lo) : 0.0;
+    }
+    t = std::clamp(t, 0.0, 1.0);
+    if (curve_ != MappingCurve::log) return in_min_ + t * (in_max_ - in_min_);
+    const double lo = std::max(in_min_, kSmallest), hi = std::max(in_max_, kSmallest);
+    return lo * std::pow(hi / lo, t);
+}
+
 double FeatureMapping::map(const Features& features) noexcept {
     const double target = shape(feature_value(features, source_));
     if (!std::isfinite(target)) return smoothed_;  // hold rather than pass NaN to the synth

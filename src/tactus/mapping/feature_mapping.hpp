@@ -29,6 +29,9 @@ class FeatureMapping {
     double current() const { return smoothed_; }
     // The curve alone, without smoothing.
     double shape(double input) const noexcept;
+    // The curve read backwards: the input shape() maps to `output` (an output beyond the range
+    // gives the nearer end's input).
+    double input_for(double output) const noexcept;
 
   private:
     FeatureSource source_{};
