@@ -31,8 +31,8 @@ std::string fit_frequency(Settings& s, double band_low_hz, double band_high_hz) 
         s.set(P::frequency_out_max, f);
         return fmt::format("{} -> {:.3g} Hz", was, f);
     }
-    FeatureMapping mapping;
-    mapping.configure(s, P::frequency_source, 1.0);
+    FeatureMapping mapping;  // its curve only: the frame rate (smoothing) plays no part
+    mapping.configure(s, P::frequency_source, /*frames_per_second=*/1.0);
     const bool log_curve =
         static_cast<int>(s[P::frequency_curve]) == static_cast<int>(MappingCurve::log);
     const double centre_hz = std::sqrt(low_hz * high_hz);

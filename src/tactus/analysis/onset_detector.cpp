@@ -21,8 +21,7 @@ void OnsetDetector::prepare(const ProcessSpec& spec, int hop_samples, const Onse
     bins_ = stft_.bins();
     lag_frames_ =
         std::max(1, static_cast<int>(std::lround(kLagMs * 1e-3 * sample_rate_hz / hop_samples)));
-    past_frames_ = 2 * lag_frames_;
-    past_log_.assign(static_cast<size_t>(past_frames_) * static_cast<size_t>(bins_), 0.0f);
+    past_log_.assign(static_cast<size_t>(past_frames()) * static_cast<size_t>(bins_), 0.0f);
     rise_.assign(static_cast<size_t>(stft_.bins()), 0.0f);
     const auto history_frames =
         std::max<int64_t>(1, std::llround(s.history_ms * 1e-3 * sample_rate_hz / hop_samples));
@@ -59,20 +58,21 @@ OnsetDecision OnsetDetector::analyse(const SampleHistory& history) noexcept {
     // Rise over the louder of the frames one and two lags back (SuperFlux's temporal maximum,
     // Böck & Widmer 2013): a noise bin must beat both to count, a new sound beats both. The ring
     // slot at past_position_ holds the frame two lags back; it takes this frame's.
+    const int frames = past_frames();
     const auto slot = [&](int frames_back) {
         return past_log_.data() +
-               static_cast<size_t>((past_position_ + past_frames_ - frames_back) % past_frames_) *
+               static_cast<size_t>((past_position_ + frames - frames_back) % frames) *
                    static_cast<size_t>(bins_);
     };
     const float* one_lag = slot(lag_frames_);
-    float* two_lags = slot(past_frames_);
+    float* two_lags = slot(frames);
     for (int k = 0; k < bins_; ++k) {
         const float log_magnitude =
             fast_log(1.0f + static_cast<float>(kLogCompression) * magnitudes[k]);
         rise_[k] = std::max(0.0f, log_magnitude - std::max(one_lag[k], two_lags[k]));
         two_lags[k] = log_magnitude;
     }
-    past_position_ = (past_position_ + 1) % past_frames_;
+    past_position_ = (past_position_ + 1) % frames;
     const double flux = sum_of(rise_.data(), bins_) * 100.0 / bins_;  // per 100 bins
 
     // Median of the recent flux: the background level, not raised by the hits themselves.

@@ -54,8 +54,9 @@ class OnsetDetector {
     double sample_rate_hz_ = 48000;
     StftFrame stft_;
     std::vector<float> rise_, segment_;  // rise_: per bin, this frame
-    std::vector<float> past_log_;        // the last frames (2 lags' worth), bins_ each, a ring
-    int past_frames_ = 2, lag_frames_ = 1, past_position_ = 0;
+    std::vector<float> past_log_;        // the last past_frames() frames, bins_ each, a ring
+    int past_frames() const { return 2 * lag_frames_; }
+    int lag_frames_ = 1, past_position_ = 0;
     std::vector<double> flux_history_, scratch_, block_energy_;
     size_t history_position_ = 0;
     int hop_samples_ = 0, sub_block_samples_ = 0, bins_ = 0;

@@ -16,8 +16,8 @@
 // at post.flutter_low_hz. The NPIII pressure (a slow offset) joins after the last band-limit; the
 // limiter's ceiling is lowered by the pressure's largest value (its weight times the ceiling),
 // so the sum stays under the ceiling. It is not delayed by the limiter's look-ahead (0.3 ms
-// against NPIII's >= 330 ms periods). With both off and no actuator the chain is exactly the
-// paper's.
+// against NPIII's >= 330 ms periods). With both off and no actuator the chain is the paper's
+// (its first low-pass aside).
 // An ERM (its vibration frequency follows its speed: only the carrier's intensity can reach the
 // skin) takes the carrier's intensity instead, shaped for its spin-up (erm_drive.hpp):
 //   carrier -> band-limit -> limiter -> ERM drive -> clip
