@@ -2,7 +2,7 @@
 """Measures tactus on the drum corpus and compares its onsets with aubioonset's.
 
 usage: eval/evaluate.py BUILD_DIR [--out eval/results.md] [--work DIR] [--seed N]
-                        [--held-out gm|none]
+                        [--held-out gm|none] [--music|--no-music]
 
 Builds the corpus with BUILD_DIR/eval/make_drum_corpus (fixed seed), runs `tactus onsets` and
 `tactus render` on it, runs aubioonset with every method and bonk~ in Pd (eval/bonk_onsets.pd,
@@ -14,7 +14,9 @@ each hit's true onset to the output
 reaching half its pulse peak, each as felt (eval/felt.py) and raw, with a summary up front; then Sonic Pi's Amen break at every sample rate from 16 to 192 kHz
 (eval/sample_rates.py), and the corpus through each shipped actuator profile
 (eval/actuators.py). The same measures follow on a held-out corpus: General MIDI drum
-kits from three Debian soundfonts (eval/gm_kits.py), which no parameter was tuned on.
+kits from three Debian soundfonts (eval/gm_kits.py), which no parameter was tuned on. Last, drums
+inside music (eval/music.py): full mixes with exact drum truth (eval/music_corpus.py), a tuning
+part and a held-out part, measured for onsets, felt pulses, isolated hits and drum parts.
 """
 import argparse
 import os
@@ -33,13 +35,11 @@ import soundfile
 import actuators
 import felt
 import gm_kits
+import music
 import sample_rates
-from shared import band_share, read_hits, run
+from shared import AUBIO_ARGS, band_share, read_hits, run
 
 AUBIO_METHODS = ["hfc", "energy", "complex", "phase", "specdiff", "kl", "mkl", "specflux"]
-# aubioonset's defaults, passed explicitly: buffer 512, hop 256, threshold 0.3, minioi 12 ms,
-# silence -90 dB.
-AUBIO_ARGS = ["-B", "512", "-H", "256", "-t", "0.3", "-M", "0.012", "-s", "-90"]
 # bonk~'s defaults (Pd 0.53, bonk 1.5), passed explicitly in eval/bonk_onsets.pd: 256-point
 # window, hop 128, 11 filters 6 halftones wide, thresh 2.5 5, minvel 7, mask 4 0.7, debounce 0,
 # attack-frames 1. It reports an attack when the growth has risen over the high threshold and
@@ -207,8 +207,9 @@ def sections(result):
     return lines
 
 
-def summary(corpora):
-    """The headline figures of each corpus side by side, the worst kit named."""
+def summary(corpora, extra_rows=()):
+    """The headline figures of each corpus side by side, the worst kit named; then `extra_rows`,
+    (label, [cell per corpus]) each."""
     def f_at_50(result, condition):
         return np.mean(result["scores"][condition]["tactus"][0], axis=0)[1][0]
 
@@ -241,6 +242,8 @@ def summary(corpora):
              "|---|" + "---|" * len(names)]
     for label, measure in rows:
         lines.append(f"| {label} | " + " | ".join(measure(r) for _, r in corpora) + " |")
+    for label, cells in extra_rows:
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
     return lines + [""]
 
 
@@ -253,6 +256,8 @@ def main():
     parser.add_argument("--seed", type=int, default=1, help="corpus seed (1 is the tuning set)")
     parser.add_argument("--held-out", choices=("gm", "none"), default="gm",
                         help="also measure the General MIDI kits tactus was not tuned on")
+    parser.add_argument("--music", action=argparse.BooleanOptionalAction, default=True,
+                        help="also measure drums inside full music mixes (eval/music.py)")
     args = parser.parse_args()
 
     tactus = str(args.build_dir / "bin/tactus")
@@ -290,10 +295,17 @@ def main():
                   "or chorus; soft-attack acoustic bass drums in two kits), placed as above "
                   f"(seed {args.seed}).", ""]
         lines += ["#" + line if line.startswith("## ") else line for line in tables] + [""]
+    music_rows = []
+    if args.music:
+        parts = ("tuning", "held-out") if args.held_out == "gm" else ("tuning",)
+        measured = music.measure(args.build_dir, work / "music", args.preset, work / "gm-samples",
+                                 parts)
+        lines += music.section(measured) + [""]
+        music_rows = music.summary_rows(measured)
     corpora = [("Sonic Pi kits (tuned)", tuned)]
     if args.held_out == "gm":
         corpora.append(("General MIDI kits (held out)", held_out))
-    lines[summary_at:summary_at] = summary(corpora)
+    lines[summary_at:summary_at] = summary(corpora, music_rows)
     report = "\n".join(lines)
     print(report)
     if args.out:

@@ -46,20 +46,30 @@ def varlen(t):
     return bytes(out)
 
 
-def midi_file(notes):
-    """A one-track Standard MIDI File on channel 10: for each (program, note) a program change
-    and the note (velocity 100) at the start of its slot."""
-    ticks_per_second = 960  # 480 per quarter at the default 120 BPM
-    events, now = b"", 0
-    for i, (program, note) in enumerate(notes):
-        on = int(i * SLOT_S * ticks_per_second)
-        events += varlen(on - now) + bytes([0xC9, program, 0, 0x99, note, 100])
-        off = on + int(NOTE_S * ticks_per_second)
-        events += varlen(off - on) + bytes([0x89, note, 0])
-        now = off
-    events += varlen(0) + bytes([0xFF, 0x2F, 0])
+def smf(events):
+    """A one-track Standard MIDI File of (time s, message bytes) events at 960 ticks a second
+    (480 per quarter at the default 120 BPM); at the same tick, note-offs come first, the other
+    events in the order given."""
+    ticks_per_second = 960
+    timed = sorted(((int(round(t * ticks_per_second)), message[0] & 0xF0 != 0x80, message)
+                    for t, message in events), key=lambda e: e[:2])
+    track, now = b"", 0
+    for tick, _, message in timed:
+        track += varlen(tick - now) + bytes(message)
+        now = tick
+    track += varlen(0) + bytes([0xFF, 0x2F, 0])
     return (b"MThd" + struct.pack(">IHHH", 6, 0, 1, ticks_per_second // 2) +
-            b"MTrk" + struct.pack(">I", len(events)) + events)
+            b"MTrk" + struct.pack(">I", len(track)) + track)
+
+
+def midi_file(notes):
+    """A Standard MIDI File on channel 10: for each (program, note) a program change and the note
+    (velocity 100) at the start of its slot."""
+    events = []
+    for i, (program, note) in enumerate(notes):
+        on = i * SLOT_S
+        events += [(on, [0xC9, program]), (on, [0x99, note, 100]), (on + NOTE_S, [0x89, note, 0])]
+    return smf(events)
 
 
 def trimmed(hit, rate):

@@ -1,8 +1,12 @@
-"""What the evaluation scripts share: running a tool, reading a corpus file's hits, and the share
-of a render's energy inside a band."""
+"""What the evaluation scripts share: running a tool, aubioonset's parameters, reading a corpus
+file's hits, and the share of a render's energy inside a band."""
 import subprocess
 
 import numpy as np
+
+# aubioonset's defaults, passed explicitly: buffer 512, hop 256, threshold 0.3, minioi 12 ms,
+# silence -90 dB.
+AUBIO_ARGS = ["-B", "512", "-H", "256", "-t", "0.3", "-M", "0.012", "-s", "-90"]
 
 
 def run(cmd):

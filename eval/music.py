@@ -1,0 +1,332 @@
+"""Measures tactus on drums inside full music mixes (eval/music_corpus.py), the tuning part and the
+held-out part side by side.
+
+- Onsets: F, precision and recall at +-50 ms (mir_eval, one-to-one, mean over files) of
+  `tactus onsets` (its first column) and of aubioonset mkl and specflux against the drum hits'
+  distinct times, per bed level. Every onset the bed causes counts against precision, so recall
+  (drum hits that are detected) is the headline.
+- Felt pulses: a drum hit gives a felt pulse when the felt render (eval/felt.py, its envelope: the
+  magnitude of the analytic signal, so a low carrier's zero crossings do not count as quiet) has
+  its largest value over [hit, hit + 60 ms] inside that window (a local peak, not the rise into
+  the next one) at least 6 dB above its largest value over the 10 ms before the hit, and a
+  `tactus onsets` onset is matched to the hit one-to-one within +-50 ms.
+- Isolated hits over music (kick alone and snare alone, 0 to -24 dB, over a bed at -12 and -6 dB
+  re the loudest hit, and without bed): Spearman's rho of hit gain -> felt pulse peak, the felt
+  peak over [hit, hit + 80 ms] with nothing subtracted, so the bed's own vibration under a soft
+  hit lowers rho; the felt snare/kick ratio of the median pulse frequencies (felt.centroid_hz over
+  felt.PULSE_WINDOW_S, as evaluate.py's per-kit table, bed included); and the latency onset ->
+  felt output at half its pulse peak (felt.half_peak_latency_s), over the hits that give a
+  distinct pulse as above (the others' half peak would be the bed's), their count given.
+- Drum part: when `tactus onsets` prints a 4th column (kick, snare, hat or other), the share of
+  its onsets matched one-to-one to a hit within +-50 ms whose part is the hit's, per part and
+  overall. Where hits coincide the true part is the first of kick, snare, hat among them.
+"""
+import collections
+import concurrent.futures
+import pathlib
+import statistics
+
+import mir_eval
+import numpy as np
+import scipy.signal
+import scipy.stats
+import soundfile
+
+import felt
+import music_corpus
+from shared import AUBIO_ARGS, read_hits, run
+
+TOLERANCE_S = 0.05
+PULSE_S = 0.06  # a hit's felt pulse is looked for over this long after it
+BEFORE_S = 0.01  # against the felt level over this long before it
+DISTINCT_DB = 6.0
+ISOLATED_PULSE_S = 0.08
+PRIORITY = ("kick", "snare", "hat")
+DETECTORS = ("tactus", "aubio mkl", "aubio specflux")
+LEVELS = (None,) + music_corpus.BED_LEVELS_DB
+GAIN_LEVELS = (None,) + music_corpus.GAIN_BED_LEVELS_DB
+PART_NAMES = {"tuning": "tuning (Sonic Pi kits, FluidR3 bed)",
+              "held-out": "held out (GM kits, TimGM6mb and MuseScore beds)"}
+
+
+def level_label(level_db):
+    return "alone" if level_db is None else f"{level_db:+d} dB"
+
+
+def truth(hits):
+    """The hits' distinct times (sorted) and each time's part: the first of PRIORITY there."""
+    parts = {}
+    for t, instrument, _ in hits:
+        key = round(t, 6)
+        if key not in parts or PRIORITY.index(instrument) < PRIORITY.index(parts[key]):
+            parts[key] = instrument
+    times = sorted(parts)
+    return np.array(times), [parts[t] for t in times]
+
+
+def tactus_onsets(tactus, wav, preset):
+    """Onset times and, when `tactus onsets` prints a 4th column, each onset's part (else None)."""
+    rows = [line.split() for line in run([tactus, "onsets", wav, "--preset", preset]).stdout
+            .splitlines() if line.strip()]
+    times = np.array([float(r[0]) for r in rows])
+    has_part = bool(rows) and all(len(r) >= 4 for r in rows)
+    return times, ([r[3] for r in rows] if has_part else None)
+
+
+def aubio_onsets(wav, method):
+    out = run(["aubioonset", "-i", wav, "-O", method] + AUBIO_ARGS).stdout
+    return np.array([float(line.split()[0]) for line in out.splitlines() if line.strip()])
+
+
+def felt_render(tactus, wav, renders, preset):
+    """The felt render of `wav`: (felt signal, its envelope, rate)."""
+    out = renders / f"{wav.stem}.vibration.wav"
+    run([tactus, "render", wav, "-o", out, "--force", "--preset", preset])
+    y, rate = soundfile.read(out, dtype="float64")
+    signal = felt.weighted(y, rate)
+    return signal, np.abs(scipy.signal.hilbert(signal)), rate
+
+
+def gives_pulse(envelope, rate, t):
+    """Whether the felt envelope peaks inside [t, t + PULSE_S], DISTINCT_DB above its largest
+    value over [t - BEFORE_S, t]."""
+    start = int(round(t * rate))
+    window = envelope[start:start + int(PULSE_S * rate)]
+    before = envelope[max(0, start - int(BEFORE_S * rate)):start]
+    if len(window) < 2:
+        return False
+    top = int(np.argmax(window))
+    floor = np.max(before) if len(before) else 0.0
+    return top < len(window) - 1 and window[top] >= floor * 10 ** (DISTINCT_DB / 20)
+
+
+def analyse_mix(tactus, entry, directory, renders, preset):
+    """One mix's onset scores per detector, its hits giving a felt pulse (count, total) and its
+    part matches {part: [right, total]} (None without a part column)."""
+    wav = directory / f"{entry['name']}.wav"
+    reference, parts = truth(read_hits(directory / f"{entry['name']}.hits.csv"))
+    times, labels = tactus_onsets(tactus, wav, preset)
+    estimates = {"tactus": times, "aubio mkl": aubio_onsets(wav, "mkl"),
+                 "aubio specflux": aubio_onsets(wav, "specflux")}
+    scores = {d: mir_eval.onset.f_measure(reference, e, window=TOLERANCE_S)
+              for d, e in estimates.items()}
+    matches = mir_eval.util.match_events(reference, times, TOLERANCE_S)
+    _, envelope, rate = felt_render(tactus, wav, renders, preset)
+    pulses = sum(gives_pulse(envelope, rate, reference[i]) for i, _ in matches)
+    part_counts = None
+    if labels is not None:
+        part_counts = {p: [0, 0] for p in PRIORITY}
+        for i, j in matches:
+            part_counts[parts[i]][0] += labels[j] == parts[i]
+            part_counts[parts[i]][1] += 1
+    return {"scores": scores, "pulses": (pulses, len(reference)), "parts": part_counts}
+
+
+def analyse_gain(tactus, entry, directory, renders, preset):
+    """One isolated-hit file's (gain dB, felt peak, felt Hz, half-peak latency s or None when the
+    hit gives no distinct pulse) per hit."""
+    wav = directory / f"{entry['name']}.wav"
+    hits = read_hits(directory / f"{entry['name']}.hits.csv")
+    signal, envelope, rate = felt_render(tactus, wav, renders, preset)
+    out = []
+    for t, _, gain in hits:
+        segment = felt.pulse(signal, rate, t, ISOLATED_PULSE_S)
+        latency = felt.half_peak_latency_s(segment, rate) if gives_pulse(envelope, rate, t) \
+            else None
+        hz = felt.centroid_hz(felt.pulse(signal, rate, t), rate)
+        out.append((gain, felt.peak(segment), hz, latency))
+    return out
+
+
+def measure_part(tactus, directory, manifest, preset, jobs):
+    """Every measure of one part of the corpus."""
+    renders = directory / "renders"
+    renders.mkdir(exist_ok=True)
+    with concurrent.futures.ThreadPoolExecutor(jobs) as pool:
+        mixes = list(pool.map(lambda e: analyse_mix(tactus, e, directory, renders, preset),
+                              manifest["mixes"]))
+        gains = list(pool.map(lambda e: analyse_gain(tactus, e, directory, renders, preset),
+                              manifest["gain"]))
+    by_level = collections.defaultdict(list)
+    for entry, result in zip(manifest["mixes"], mixes):
+        by_level[entry["bed_db"]].append((entry, result))
+    gain_files = collections.defaultdict(dict)  # level -> (kit, instrument) -> hits
+    for entry, result in zip(manifest["gain"], gains):
+        gain_files[entry["bed_db"]][(entry["kit"], entry["instrument"])] = result
+    return {"mixes": by_level, "gain": gain_files}
+
+
+def measure(build_dir, work, preset, gm_samples, parts=("tuning", "held-out"), jobs=2):
+    """Builds the music corpus in `work` (cached) and measures tactus on each of `parts`."""
+    tactus = str(pathlib.Path(build_dir) / "bin/tactus")
+    manifests = music_corpus.build(work, gm_samples, parts, jobs)
+    return {part: measure_part(tactus, pathlib.Path(work) / part, manifests[part], preset, jobs)
+            for part in parts}
+
+
+# Figures of one part.
+def onset_means(part, level, detector):
+    """Mean (F, P, R) over the files at `level`."""
+    return np.mean([r["scores"][detector] for _, r in part["mixes"][level]], axis=0)
+
+
+def pulse_share(part, level):
+    given = sum(r["pulses"][0] for _, r in part["mixes"][level])
+    total = sum(r["pulses"][1] for _, r in part["mixes"][level])
+    return given / total
+
+
+def part_accuracy(part, level):
+    """{kick, snare, hat, all: share right} or None when tactus prints no part."""
+    results = [r["parts"] for _, r in part["mixes"][level]]
+    if not results or any(r is None for r in results):
+        return None
+    counts = {p: [sum(r[p][0] for r in results), sum(r[p][1] for r in results)] for p in PRIORITY}
+    counts["all"] = [sum(c[0] for c in counts.values()), sum(c[1] for c in counts.values())]
+    return {p: (right / total if total else float("nan")) for p, (right, total) in counts.items()}
+
+
+def rhos(part, level):
+    """[(rho of gain -> felt peak, 'kit instrument')] of every isolated-hit file at `level`."""
+    return [(scipy.stats.spearmanr([g for g, *_ in hits], [p for _, p, _, _ in hits]).correlation,
+             f"{kit} {instrument}") for (kit, instrument), hits in part["gain"][level].items()]
+
+
+def snare_kick(part, level):
+    """[(felt snare/kick of the median pulse frequencies, kit)] at `level`."""
+    files = part["gain"][level]
+    hz = {key: statistics.median(f for _, _, f, _ in hits) for key, hits in files.items()}
+    return [(hz[(kit, "snare")] / hz[(kit, "kick")], kit)
+            for kit in sorted({k for k, _ in files})]
+
+
+def latencies(part, level):
+    """Half-peak latencies (s) of the hits giving a distinct pulse, and the number of hits."""
+    hits = [h for file in part["gain"][level].values() for h in file]
+    return [h[3] for h in hits if h[3] is not None], len(hits)
+
+
+# Cells.
+def worst_cell(pairs, digits):
+    value, where = min(pairs)
+    return f"{value:.{digits}f} ({where})"
+
+
+def latency_cell(part, level):
+    values, total = latencies(part, level)
+    ms = 1000 * np.array(values)
+    return f"{np.median(ms):.1f} / {np.percentile(ms, 95):.1f} ({len(values)} of {total})"
+
+
+def recall_cell(part, detector="tactus"):
+    return " / ".join(f"{onset_means(part, level, detector)[2]:.3f}" for level in LEVELS)
+
+
+def accuracy_cell(part, level):
+    accuracy = part_accuracy(part, level)
+    if accuracy is None:
+        return "n/a"
+    return " / ".join(f"{accuracy[p]:.3f}" for p in PRIORITY + ("all",))
+
+
+def summary_rows(result):
+    """(label, [cell per part]) rows for evaluate.py's summary table."""
+    parts = list(result.values())
+    levels = "/".join(level_label(level).replace(" dB", "") for level in LEVELS)
+    rows = [(f"music: tactus onset recall at +-50 ms, bed {levels} dB", recall_cell),
+            ("music: drum hits giving a felt pulse, bed -6 / 0 dB",
+             lambda p: f"{pulse_share(p, -6):.3f} / {pulse_share(p, 0):.3f}"),
+            ("music: isolated hits, bed -6 dB: gain -> felt pulse peak rho, worst",
+             lambda p: worst_cell(rhos(p, -6), 3)),
+            ("music: isolated hits, bed -6 dB: felt snare/kick, worst kit",
+             lambda p: worst_cell(snare_kick(p, -6), 2)),
+            ("music: isolated hits, bed -6 dB: onset -> felt half peak, median / 95th "
+             "percentile ms (distinct pulses)", lambda p: latency_cell(p, -6)),
+            ("music: drum part right, bed 0 dB, kick / snare / hat / all",
+             lambda p: accuracy_cell(p, 0))]
+    return [(label, [cell(p) for p in parts]) for label, cell in rows]
+
+
+def section(result):
+    """The "Drums inside music" section's markdown lines."""
+    names = [PART_NAMES[p] for p in result]
+    parts = list(result.values())
+    rule = "|---" * len(names) + "|"
+    n_mixes = {name: len([1 for level in p["mixes"].values() for _ in level])
+               for name, p in zip(names, parts)}
+    lines = ["# Drums inside music", "",
+             "Full mixes with exact drum truth (`eval/music_corpus.py`): a drum stem of one-shot "
+             "hits placed sample-exactly in rock, house, funk (16ths, ghost snares), half-time "
+             "and swung hip-hop patterns at 70-172 BPM, accents and ghost notes -14..-8 dB; a bed "
+             "of bass, chords or a pad and a melody (fluidsynth, General MIDI programs on melodic "
+             "channels) and an espeak-ng voice; mixed alone and with the bed at -12, -6, 0 and "
+             "+6 dB re the drums (RMS of each stem over the song), some through sox reverb and/or "
+             "compand, peak-normalised to -1 dBFS, a quarter at 48 kHz. Tuning part: the Sonic Pi "
+             "kits, FluidR3 beds, seed 1; held out: the General MIDI kits of the held-out corpus, "
+             "TimGM6mb and MuseScore beds with other programs and voices, seed 2, plus shuffle "
+             "and two-step patterns. Files: " +
+             ", ".join(f"{n} {name}" for name, n in n_mixes.items()) + ".", "",
+             "## Onsets in music", "",
+             "Mean over the files of each bed level of F, precision and recall at +-50 ms "
+             "(mir_eval, one-to-one) against the drum hits' distinct times. The bed's own onsets "
+             "count as false positives; recall is the share of drum hits detected. aubioonset: "
+             f"`{' '.join(AUBIO_ARGS)}`.", "",
+             "| detector | bed | " + " | ".join(f"{n}: R / P / F" for n in names) + " |",
+             "|---|---" + rule]
+    for detector in DETECTORS:
+        for level in LEVELS:
+            cells = [" / ".join(f"{v:.3f}" for v in onset_means(p, level, detector)[[2, 1, 0]])
+                     for p in parts]
+            lines.append(f"| {detector} | {level_label(level)} | " + " | ".join(cells) + " |")
+    lines += ["", "tactus recall per style (alone / -12 / -6 / 0 / +6 dB):", ""]
+    for name, p in zip(names, parts):
+        styles = sorted({e["style"] for e, _ in p["mixes"][None]})
+        per_style = []
+        for style in styles:
+            cells = [np.mean([r["scores"]["tactus"][2] for e, r in p["mixes"][level]
+                              if e["style"] == style]) for level in LEVELS]
+            per_style.append(f"{style} " + "/".join(f"{c:.2f}" for c in cells))
+        lines.append(f"- {name}: " + ", ".join(per_style))
+    lines += ["", "## Drum hits that give a felt pulse", "",
+              f"A hit gives a felt pulse when the felt render's envelope peaks within "
+              f"{1000 * PULSE_S:.0f} ms after it, {DISTINCT_DB:.0f} dB above its level over the "
+              f"{1000 * BEFORE_S:.0f} ms before (which holds the previous hit's and the bed's "
+              "vibration), and a tactus onset is matched to it (+-50 ms, one-to-one). Share of "
+              "the drum hits' distinct times.", "",
+              "| bed | " + " | ".join(names) + " |", "|---" + rule]
+    for level in LEVELS:
+        lines.append(f"| {level_label(level)} | " +
+                     " | ".join(f"{pulse_share(p, level):.3f}" for p in parts) + " |")
+    lines += ["", "## Isolated hits over music", "",
+              "Each kit's kick alone and snare alone, 9 hits 1 s apart at 0 to -24 dB, without "
+              "bed and over a bed at -12 and -6 dB re the loudest hit (the bed's RMS against the "
+              f"0 dB hit's over its first {1000 * music_corpus.REFERENCE_S:.0f} ms). Pulse peak: "
+              f"the felt peak over [hit, hit + {1000 * ISOLATED_PULSE_S:.0f} ms], the bed's "
+              "vibration included (nothing subtracted); rho: Spearman's of hit gain -> pulse "
+              "peak; snare/kick: of the median felt pulse frequencies (felt centroid over "
+              f"{1000 * felt.PULSE_WINDOW_S:.0f} ms, as in the per-kit table); latency: onset -> "
+              "felt output at half its pulse peak, over the hits giving a distinct pulse (as "
+              "above, without the onset condition).", "",
+              "| figure | bed | " + " | ".join(names) + " |", "|---|---" + rule]
+    figures = [("gain -> felt peak rho, worst", lambda p, lv: worst_cell(rhos(p, lv), 3)),
+               ("gain -> felt peak rho, median",
+                lambda p, lv: f"{np.median([r for r, _ in rhos(p, lv)]):.3f}"),
+               ("felt snare/kick, worst kit", lambda p, lv: worst_cell(snare_kick(p, lv), 2)),
+               ("felt snare/kick, median over kits",
+                lambda p, lv: f"{np.median([r for r, _ in snare_kick(p, lv)]):.2f}"),
+               ("onset -> felt half peak, median / p95 ms", latency_cell)]
+    for label, cell in figures:
+        for level in GAIN_LEVELS:
+            lines.append(f"| {label} | {level_label(level)} | " +
+                         " | ".join(cell(p, level) for p in parts) + " |")
+    lines += ["", "## Drum part", "",
+              "`tactus onsets`' 4th column (kick, snare, hat, other), over its onsets matched "
+              "one-to-one to a drum hit within +-50 ms: the share naming the hit's part, per "
+              "true part and overall; where hits coincide the true part is the first of kick, "
+              "snare, hat among them. n/a: tactus prints no part.", "",
+              "| bed | " + " | ".join(f"{n}: kick / snare / hat / all" for n in names) + " |",
+              "|---" + rule]
+    for level in LEVELS:
+        lines.append(f"| {level_label(level)} | " +
+                     " | ".join(accuracy_cell(p, level) for p in parts) + " |")
+    return lines
