@@ -1,6 +1,11 @@
-// tactus onsets IN: one onset per line, "onset_s decided_s strength". The first column alone is
-// an onset list as aubioonset prints it and as onset evaluation tools read it.
+// tactus onsets IN: one onset per line, "onset_s decided_s strength_db part". The first column
+// alone is an onset list as aubioonset prints it and as onset evaluation tools read it; decided_s
+// is when the onset was decided (its pulse starts), strength_db what the hit added above what was
+// sounding and part its drum part, both read parts.settle_ms after the onset
+// (analysis/hit_analysis.hpp).
 #include <fmt/format.h>
+
+#include <optional>
 
 #include "batch_plan.hpp"
 #include "commands.hpp"
@@ -18,8 +23,8 @@ struct OnsetsOptions {
     PipelineOptions pipeline;
 };
 
-// Only the onset detector runs: the features and the vibration are not computed, the onsets are
-// those `render` triggers pulses on.
+// Only the onset detector and the spectrum its parts are read from run: the other features and
+// the vibration are not computed, the onsets are those `render` triggers pulses on.
 void onsets(const OnsetsOptions& o) {
     const Settings settings = o.pipeline.resolve();
     if (!is_stdout(o.output)) check_output(o.input, o.output, o.force);
@@ -28,15 +33,29 @@ void onsets(const OnsetsOptions& o) {
     Analyzer analyzer;
     double sample_rate_hz = 0;
     Progress progress("onsets");
+    std::optional<Features> pending;  // an onset whose part is not decided yet
+    const auto print = [&](const Features& onset, const Features& decided) {
+        out << fmt::format("{:.6f} {:.6f} {:.2f} {}\n", onset.onset_sample / sample_rate_hz,
+                           onset.frame_end_sample / sample_rate_hz, decided.hit_strength_db,
+                           name_of(decided.part));
+    };
+    FeatureSet spectrum = FeatureSet::none();
+    spectrum.spectrum = true;
     analyse_file(
-        o.input, analyzer, settings, FeatureSet::none(),
+        o.input, analyzer, settings, spectrum,
         [&](const Features& f) {
-            if (f.onset)
-                out << fmt::format("{:.6f} {:.6f} {:.4g}\n", f.onset_sample / sample_rate_hz,
-                                   f.frame_end_sample / sample_rate_hz, f.onset_odf);
+            if (f.onset) {
+                if (pending) print(*pending, *pending);  // the next onset came first
+                pending = f;
+            }
+            if (f.part_decided && pending) {
+                print(*pending, f);
+                pending.reset();
+            }
         },
         with_progress(progress,
                       {.on_start = [&](double rate_hz, int) { sample_rate_hz = rate_hz; }}));
+    if (pending) print(*pending, *pending);  // the input ended first
     output.commit();
 }
 
@@ -45,7 +64,7 @@ void onsets(const OnsetsOptions& o) {
 void add_onsets(CLI::App& app) {
     auto options = std::make_shared<OnsetsOptions>();
     CLI::App* command =
-        app.add_subcommand("onsets", "print one onset per line: onset_s decided_s strength");
+        app.add_subcommand("onsets", "print one onset per line: onset_s decided_s strength_db part");
     options->batch.add_to(*command, "file to write, one input (default: stdout)", ".onsets.txt");
     options->pipeline.add_to(*command);
     command->callback([options] { for_each_input(*options, ".onsets.txt", "onsets", onsets); });

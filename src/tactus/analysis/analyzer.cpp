@@ -61,6 +61,8 @@ void Analyzer::prepare(const ProcessSpec& spec, const Settings& s) {
     onsets_.prepare(analysis, hop_,
                     {s[P::onset_window_ms], s[P::onset_threshold], s[P::onset_ratio],
                      s[P::onset_history_ms], s[P::onset_min_interval_ms]});
+    hits_.prepare(stft_.bins(), stft_.bin_hz(), analysis_rate, hop_, onsets_.span_samples(),
+                  hit_settings(s));
     history_.prepare(
         std::max({stft_.window_samples(), pitch_.span_samples(), onsets_.span_samples()}));
     clean_.assign(static_cast<size_t>(max_inputs), 0.0f);
@@ -71,7 +73,12 @@ void Analyzer::prepare(const ProcessSpec& spec, const Settings& s) {
     reset();
 }
 
+HitSettings Analyzer::hit_settings(const Settings& s) {
+    return {.brightness_max_hz = s[P::brightness_max_hz], .settle_ms = s[P::parts_settle_ms]};
+}
+
 void Analyzer::set_live(const Settings& s) noexcept {
+    hits_.set_live(hit_settings(s));
     onsets_.set_thresholds(s[P::onset_threshold], s[P::onset_ratio], s[P::onset_min_interval_ms]);
     pitch_.set_threshold(s[P::pitch_threshold]);
     brightness_.set_max_hz(s[P::brightness_max_hz]);
@@ -83,6 +90,7 @@ void Analyzer::reset() noexcept {
     loudness_.reset();
     dc_blocker_.reset();
     onsets_.reset();
+    hits_.reset();
     features_ = {};
     inputs_ = 0;
     next_frame_end_ = hop_;
@@ -122,6 +130,14 @@ const Features& Analyzer::analyse() noexcept {
     const OnsetDecision onset = onsets_.analyse(history_);
     f.onset_odf = onset.odf;
     f.onset = onset.onset;
+    if (computed_.spectrum) {
+        hits_.analyse(stft_.powers(), history_.written(), onset.onset ? onset.onset_sample : -1);
+        f.hit_db = hits_.level_db();
+        f.hit_brightness_hz = hits_.brightness_hz();
+        f.part = hits_.part();
+        f.part_decided = hits_.part_decided();
+        f.hit_strength_db = hits_.peak_db();
+    }
     if (onset.onset) {  // analysis sample -> input sample, less the resampler's delay
         const double inputs_per_analysed =
             static_cast<double>(resampler_.down()) / static_cast<double>(resampler_.up());

@@ -19,6 +19,7 @@
 #include "tactus/analysis/brightness.hpp"
 #include "tactus/analysis/dc_blocker.hpp"
 #include "tactus/analysis/features.hpp"
+#include "tactus/analysis/hit_analysis.hpp"
 #include "tactus/analysis/loudness.hpp"
 #include "tactus/analysis/noisiness.hpp"
 #include "tactus/analysis/onset_detector.hpp"
@@ -77,6 +78,7 @@ class Analyzer {
 
   private:
     static int hop_for(const Settings& settings, double analysis_rate_hz);
+    static HitSettings hit_settings(const Settings& settings);
 
     Resampler resampler_;
     DcBlocker dc_blocker_;
@@ -87,6 +89,7 @@ class Analyzer {
     Noisiness noisiness_;
     PitchYin pitch_;
     OnsetDetector onsets_;
+    HitAnalysis hits_;
     Features features_;
     std::vector<float> clean_;     // sanitised input, one hop
     std::vector<float> analysed_;  // clean_ at the analysis rate

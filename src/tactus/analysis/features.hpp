@@ -3,6 +3,7 @@
 
 #include <cstdint>
 
+#include "tactus/analysis/drum_part.hpp"
 #include "tactus/params/params.hpp"
 
 namespace tactus {
@@ -17,10 +18,16 @@ struct Features {
     double onset_odf = 0;          // onset detection function (log spectral flux)
     bool onset = false;            // an onset was decided at frame_end_sample
     int64_t onset_sample = 0;      // its estimated start (valid when onset)
+    // What the latest hit added above what was sounding before it (analysis/hit_analysis.hpp).
+    double hit_db = -120;          // its level now, dB re full scale
+    double hit_brightness_hz = 0;  // its brightness
+    DrumPart part = DrumPart::other;  // the latest hit's part (decided settle_ms after its onset)
+    bool part_decided = false;        // ... on this frame
+    double hit_strength_db = -120;    // the latest hit's strongest level so far
 };
 
-// The analysis by cost: loudness (a K filter on every sample), spectrum (brightness and
-// noisiness: an FFT every hop) and pitch (YIN, as much as the rest together). Onsets are always
+// The analysis by cost: loudness (a K filter on every sample), spectrum (brightness, noisiness
+// and what each hit adds, with its part: an FFT every hop) and pitch (YIN, as much as the rest together). Onsets are always
 // computed: they trigger the envelope. A group nothing reads is skipped and keeps its default.
 struct FeatureSet {
     bool loudness = true, spectrum = true, pitch = true;
@@ -41,6 +48,8 @@ constexpr FeatureSet group_of(FeatureSource source) {
         case FeatureSource::brightness_hz:
         case FeatureSource::noisiness:
         case FeatureSource::tonality:
+        case FeatureSource::hit_db:
+        case FeatureSource::hit_brightness_hz:
             set.spectrum = true;
             break;
         case FeatureSource::pitch_hz:
@@ -69,6 +78,10 @@ inline double feature_value(const Features& f, FeatureSource source) {
             return f.pitch_confidence;
         case FeatureSource::onset_odf:
             return f.onset_odf;
+        case FeatureSource::hit_db:
+            return f.hit_db;
+        case FeatureSource::hit_brightness_hz:
+            return f.hit_brightness_hz;
     }
     return 0.0;
 }

@@ -46,6 +46,8 @@ class OnsetDetector {
     // Analyses the frame ending at the newest sample of `history`.
     OnsetDecision analyse(const SampleHistory& history) noexcept;
     int span_samples() const { return stft_.window_samples() + hop_samples_; }
+    // The power spectrum of the frame analyse() last read.
+    const StftFrame& frame() const { return stft_; }
 
   private:
     int64_t refine_onset_sample(const SampleHistory& history) noexcept;

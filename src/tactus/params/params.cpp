@@ -205,6 +205,10 @@ constexpr ParamSpec kTable[] = {
     {P::brightness_max_hz, 78, "brightness.max_hz", "Hz", real, 200, 8000, 1500, log, live, 0,
      "highest frequency the brightness centroid reads: a drum's body, not its beater click or "
      "snare wires (8000: the whole 16 kHz analysis band)"},
+    // Analysis: what each hit adds and its drum part (analysis/hit_analysis.hpp).
+    {P::parts_settle_ms, 79, "parts.settle_ms", "ms", real, 1, 30, 8, lin, live, 0,
+     "time from a hit's onset to the decision of its drum part (kick, snare, hat, other): "
+     "longer reads more of the hit"},
 };
 // clang-format on
 

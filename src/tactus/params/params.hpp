@@ -39,9 +39,9 @@ struct ParamSpec {
 };
 
 // Features a mapping can read (analysis outputs), in the order of FeatureSource.
-inline constexpr std::array<std::string_view, 7> kFeatureSourceNames = {
-    "loudness_db", "brightness_hz",    "noisiness", "tonality",
-    "pitch_hz",    "pitch_confidence", "onset_odf"};
+inline constexpr std::array<std::string_view, 9> kFeatureSourceNames = {
+    "loudness_db", "brightness_hz",    "noisiness", "tonality",         "pitch_hz",
+    "pitch_confidence", "onset_odf", "hit_db", "hit_brightness_hz"};
 enum class FeatureSource {
     loudness_db,
     brightness_hz,
@@ -49,7 +49,9 @@ enum class FeatureSource {
     tonality,
     pitch_hz,
     pitch_confidence,
-    onset_odf
+    onset_odf,
+    hit_db,            // what the latest hit added above what was sounding, dB
+    hit_brightness_hz  // its brightness
 };
 
 // lin: output linear in input. log: input and output on logarithmic scales (equal input ratios
@@ -109,6 +111,7 @@ enum class P : int {
     frequency_hold,
     frequency_settle_ms,
     brightness_max_hz,
+    parts_settle_ms,
     count
 };
 
