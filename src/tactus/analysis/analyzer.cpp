@@ -60,7 +60,11 @@ void Analyzer::prepare(const ProcessSpec& spec, const Settings& s) {
                               .threshold = s[P::pitch_threshold]});
     onsets_.prepare(analysis, hop_,
                     {s[P::onset_window_ms], s[P::onset_threshold], s[P::onset_ratio],
-                     s[P::onset_history_ms], s[P::onset_min_interval_ms]});
+                     s[P::onset_history_ms], s[P::onset_min_interval_ms], s[P::onset_high_weight]});
+    high_band_.prepare(sample_rate_hz_,
+                       std::max(1, static_cast<int>(std::lround(
+                                       ms_to_samples(s[P::onset_window_ms], analysis_rate) /
+                                       static_cast<double>(hop_)))));
     hits_.prepare(stft_.bins(), stft_.bin_hz(), analysis_rate, hop_, onsets_.span_samples(),
                   hit_settings(s));
     history_.prepare(
@@ -79,7 +83,8 @@ HitSettings Analyzer::hit_settings(const Settings& s) {
 
 void Analyzer::set_live(const Settings& s) noexcept {
     hits_.set_live(hit_settings(s));
-    onsets_.set_thresholds(s[P::onset_threshold], s[P::onset_ratio], s[P::onset_min_interval_ms]);
+    onsets_.set_thresholds(s[P::onset_threshold], s[P::onset_ratio], s[P::onset_min_interval_ms],
+                           s[P::onset_high_weight]);
     pitch_.set_threshold(s[P::pitch_threshold]);
     brightness_.set_max_hz(s[P::brightness_max_hz]);
 }
@@ -90,6 +95,7 @@ void Analyzer::reset() noexcept {
     loudness_.reset();
     dc_blocker_.reset();
     onsets_.reset();
+    high_band_.reset();
     hits_.reset();
     features_ = {};
     inputs_ = 0;
@@ -105,6 +111,7 @@ bool Analyzer::process(const float* samples, const float* power, int count) noex
         else
             loudness_.process(clean_.data(), count);
     }
+    high_band_.process(clean_.data(), count);
     inputs_ += count;
     const int analysed = resampler_.process(clean_.data(), count, analysed_.data());
     dc_blocker_.process(analysed_.data(), analysed);
@@ -127,7 +134,7 @@ const Features& Analyzer::analyse() noexcept {
         f.pitch_hz = pitch.f0_hz;
         f.pitch_confidence = pitch.confidence;
     }
-    const OnsetDecision onset = onsets_.analyse(history_);
+    const OnsetDecision onset = onsets_.analyse(history_, high_band_.frame());
     f.onset_odf = onset.odf;
     f.onset = onset.onset;
     if (computed_.spectrum) {

@@ -8,6 +8,9 @@
 // recent flux, at least min_interval after the previous onset; it re-arms when the flux falls back
 // below the threshold. The onset time is then refined in the time domain to the sub-millisecond
 // block with the largest energy rise in the newest window.
+// Above the analysis band, the input's high band (analysis/high_band.hpp) adds its own rise, of
+// its log-compressed power over the same lags, weighted as high_weight bins of the spectrum: the
+// hats a 16 kHz analysis cannot see.
 #pragma once
 
 #include <array>
@@ -26,6 +29,7 @@ struct OnsetSettings {
     double ratio = 1.25;
     double history_ms = 60;
     double min_interval_ms = 50;
+    double high_weight = 30;
 };
 
 struct OnsetDecision {
@@ -42,9 +46,11 @@ class OnsetDetector {
     void prepare(const ProcessSpec& spec, int hop_samples, const OnsetSettings& settings);
     void reset() noexcept;
     // Live (audio thread): threshold, ratio and minimum interval; the windows stay as prepared.
-    void set_thresholds(double threshold, double ratio, double min_interval_ms) noexcept;
-    // Analyses the frame ending at the newest sample of `history`.
-    OnsetDecision analyse(const SampleHistory& history) noexcept;
+    void set_thresholds(double threshold, double ratio, double min_interval_ms,
+                        double high_weight) noexcept;
+    // Analyses the frame ending at the newest sample of `history`, with the high band's mean
+    // power over the same window (0 without one).
+    OnsetDecision analyse(const SampleHistory& history, double high_band_power) noexcept;
     int span_samples() const { return stft_.window_samples() + hop_samples_; }
     // The power spectrum of the frame analyse() last read.
     const StftFrame& frame() const { return stft_; }
@@ -57,6 +63,7 @@ class OnsetDetector {
     StftFrame stft_;
     std::vector<float> rise_, segment_;  // rise_: per bin, this frame
     std::vector<float> past_log_;        // the last past_frames() frames, bins_ each, a ring
+    std::vector<float> past_high_;       // the high band's, the same frames
     int past_frames() const { return 2 * lag_frames_; }
     int lag_frames_ = 1, past_position_ = 0;
     std::vector<double> flux_history_, scratch_, block_energy_;

@@ -209,6 +209,9 @@ constexpr ParamSpec kTable[] = {
     {P::parts_settle_ms, 79, "parts.settle_ms", "ms", real, 1, 30, 8, lin, live, 0,
      "time from a hit's onset to the decision of its drum part (kick, snare, hat, other): "
      "longer reads more of the hit"},
+    {P::onset_high_weight, 80, "onset.high_weight", "", real, 0, 200, 30, lin, live, 0,
+     "weight, in spectrum bins, of the rise of the input above 6 kHz in the onset detection "
+     "function (hats; 0 = the analysis band alone)"},
 };
 // clang-format on
 

@@ -112,6 +112,7 @@ enum class P : int {
     frequency_settle_ms,
     brightness_max_hz,
     parts_settle_ms,
+    onset_high_weight,
     count
 };
 
