@@ -65,7 +65,8 @@ void Analyzer::prepare(const ProcessSpec& spec, const Settings& s) {
                        std::max(1, static_cast<int>(std::lround(
                                        ms_to_samples(s[P::onset_window_ms], analysis_rate) /
                                        static_cast<double>(hop_)))));
-    hits_.prepare(stft_.bins(), stft_.bin_hz(), analysis_rate, hop_, onsets_.span_samples(),
+    hits_.prepare({onsets_.frame().bins(), onsets_.frame().bin_hz()},
+                  {stft_.bins(), stft_.bin_hz()}, analysis_rate, hop_, onsets_.span_samples(),
                   hit_settings(s));
     history_.prepare(
         std::max({stft_.window_samples(), pitch_.span_samples(), onsets_.span_samples()}));
@@ -134,11 +135,13 @@ const Features& Analyzer::analyse() noexcept {
         f.pitch_hz = pitch.f0_hz;
         f.pitch_confidence = pitch.confidence;
     }
-    const OnsetDecision onset = onsets_.analyse(history_, high_band_.frame());
+    const HighBand::Power high_band = high_band_.frame();
+    const OnsetDecision onset = onsets_.analyse(history_, high_band.mean);
     f.onset_odf = onset.odf;
     f.onset = onset.onset;
     if (computed_.spectrum) {
-        hits_.analyse(stft_.powers(), history_.written(), onset.onset ? onset.onset_sample : -1);
+        hits_.analyse(onsets_.frame().powers(), stft_.powers(), high_band.hann,
+                      history_.written(), onset.onset ? onset.onset_sample : -1);
         f.hit_db = hits_.level_db();
         f.hit_brightness_hz = hits_.brightness_hz();
         f.part = hits_.part();

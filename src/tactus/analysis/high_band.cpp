@@ -1,7 +1,9 @@
 #include "tactus/analysis/high_band.hpp"
 
 #include <algorithm>
-#include <numeric>
+#include <cmath>
+
+#include "tactus/core/units.hpp"
 
 namespace tactus {
 
@@ -12,6 +14,14 @@ void HighBand::prepare(double sample_rate_hz, int window_frames) {
             BiquadCoefficients::highpass(kEdgeHz, butterworth_q(4, s), sample_rate_hz));
     energy_.assign(static_cast<size_t>(std::max(1, window_frames)), 0.0);
     samples_.assign(energy_.size(), 0);
+    // Frame j back (0: the newest) spans (j, j + 1) of the window's window_frames: its Hann weight
+    // at its centre, squared as the spectrum's power is.
+    weight_.resize(energy_.size());
+    for (size_t j = 0; j < weight_.size(); ++j) {
+        const double w = 0.5 - 0.5 * std::cos(2 * kPi * (static_cast<double>(j) + 0.5) /
+                                              static_cast<double>(weight_.size()));
+        weight_[j] = w * w;
+    }
     reset();
 }
 
@@ -33,13 +43,21 @@ void HighBand::process(const float* samples, int count) noexcept {
     samples_[position_] += count;
 }
 
-double HighBand::frame() noexcept {
-    const double energy = std::accumulate(energy_.begin(), energy_.end(), 0.0);
-    const int samples = std::accumulate(samples_.begin(), samples_.end(), 0);
+HighBand::Power HighBand::frame() noexcept {
+    const int frames = static_cast<int>(energy_.size());
+    double energy = 0, samples = 0, weighted_energy = 0, weighted_samples = 0;
+    for (int j = 0; j < frames; ++j) {
+        const int slot = (position_ + frames - j) % frames;
+        energy += energy_[slot];
+        samples += samples_[slot];
+        weighted_energy += weight_[j] * energy_[slot];
+        weighted_samples += weight_[j] * samples_[slot];
+    }
     position_ = (position_ + 1) % static_cast<int>(energy_.size());
     energy_[position_] = 0;
     samples_[position_] = 0;
-    return samples > 0 ? energy / samples : 0.0;
+    if (samples <= 0) return {};
+    return {.mean = energy / samples, .hann = weighted_energy / weighted_samples};
 }
 
 }  // namespace tactus

@@ -1,22 +1,23 @@
-// What a hit adds to the sound: the drum parts inside music (paper §6: brightness "used for drum
-// part separation", read here on the hit instead of on the whole mix). At each onset the power
-// spectrum of the last frame that ended before the hit began is kept as what was already sounding
-// (bass, chords, voice, the previous hit's tail). Every frame from then to the next onset, the
-// hit's spectrum is the newest power spectrum less that one, bin by bin, where positive. From it:
+// What each hit adds to the sound, and which drum part it is: the drum parts inside music
+// (paper §6: brightness "used for drum part separation", read here on what the hit added instead
+// of on the whole mix, so bass, chords and a voice neither brighten a kick nor darken a snare).
+// Two added spectra (analysis/added_spectrum.hpp), both with the input's high band
+// (analysis/high_band.hpp) as one more value:
+//   fast: the onset detector's 10 ms spectrum, for the level, which then rises as fast as the
+//         loudness does;
+//   fine: the 23 ms analysis spectrum, for the brightness (its bins resolve a kick's body).
+// Read from them, every frame until the next onset:
 //   level_db       the power the hit added, dB re full scale (a full-scale 1 kHz sine added reads
 //                  -3.01, as BS.1770 reads it), so a soft hit over a loud chord reads soft;
 //   brightness_hz  its log-frequency centroid up to brightness.max_hz (analysis/brightness.hpp);
-//   part           kick, snare, hat or other, decided once, settle_ms after the onset, from where
-//                  the added power lies: a kick's below 150 Hz, a hat's above 3 kHz with little
-//                  below 1 kHz, a snare's spread across both, the rest (a bass note, a chord, a
-//                  voice) with little above 3 kHz and little below 150 Hz ... see classify().
-// Audio thread: analyse() every frame; prepare() allocates.
+// and once, settle_ms after the onset, its part, from where the added power lies (classify()).
+// Audio thread: analyse(); prepare() allocates.
 #pragma once
 
 #include <cstdint>
 #include <span>
-#include <vector>
 
+#include "tactus/analysis/added_spectrum.hpp"
 #include "tactus/analysis/brightness.hpp"
 #include "tactus/analysis/drum_part.hpp"
 
@@ -27,18 +28,25 @@ struct HitSettings {
     double settle_ms = 8;  // onset -> its part decided
 };
 
+// One power spectrum stream: its bins, their width.
+struct SpectrumShape {
+    int bins = 0;
+    double bin_hz = 0;
+};
+
 class HitAnalysis {
   public:
-    // `bins` and `bin_hz`: the spectra analyse() is given; `longest_wait_samples`: the most
-    // analysis samples an onset's start can lie before the frame that decides it.
-    void prepare(int bins, double bin_hz, double sample_rate_hz, int hop_samples,
+    // `longest_wait_samples`: the most analysis samples an onset's start can lie before the
+    // frame that decides it.
+    void prepare(SpectrumShape fast, SpectrumShape fine, double sample_rate_hz, int hop_samples,
                  int longest_wait_samples, const HitSettings& settings);
     void reset() noexcept;
     void set_live(const HitSettings& settings) noexcept;  // audio thread
 
-    // One frame ending at analysis sample `now`: its power spectrum, and the start of an onset
-    // this frame decided (`onset_start` < 0: none).
-    void analyse(std::span<const float> powers, int64_t now, int64_t onset_start) noexcept;
+    // One frame ending at analysis sample `now`: both spectra, the mean power of the input's
+    // high band, and the start of an onset this frame decided (< 0: none).
+    void analyse(std::span<const float> fast, std::span<const float> fine,
+                 double high_band_power, int64_t now, int64_t onset_start) noexcept;
 
     double level_db() const { return level_db_; }
     double brightness_hz() const { return brightness_hz_; }
@@ -50,14 +58,11 @@ class HitAnalysis {
 
   private:
     DrumPart classify() const noexcept;
-    const float* past(int frames_back) const noexcept;
 
+    AddedSpectrum fast_, fine_;
     Brightness brightness_;
-    std::vector<float> ring_;       // the last frames_ power spectra, bins_ each
-    std::vector<float> reference_;  // what was sounding when the latest hit began
-    std::vector<float> added_, added_magnitude_;
-    int bins_ = 0, frames_ = 0, position_ = 0, hop_samples_ = 1;
-    int low_bins_ = 0, mid_bins_ = 0, high_bin_ = 0;  // band edges in bins (classify())
+    std::vector<float> fine_magnitude_;
+    int low_bins_ = 0, mid_bins_ = 0;  // band edges in fast bins (classify())
     double sample_rate_hz_ = 16000;
     int64_t settle_samples_ = 0, hit_start_ = -1;
     double level_db_ = -120, brightness_hz_ = 0, peak_db_ = -120;
