@@ -34,7 +34,7 @@ std::vector<Detection> detect(const std::vector<float>& x, double fs,
     std::vector<Detection> found;
     for (size_t done = 0; done + static_cast<size_t>(hop) <= x.size(); done += hop) {
         history.write(x.data() + done, hop);
-        const OnsetDecision d = detector.analyse(history, 0.0);
+        const OnsetDecision d = detector.analyse(history, {0.0, 0.0});
         EXPECT_TRUE(std::isfinite(d.odf));
         if (largest_odf) *largest_odf = std::max(*largest_odf, d.odf);
         if (d.onset) found.push_back({history.written(), d.onset_sample});
@@ -155,7 +155,7 @@ TEST(OnsetDetector, ResetForgetsThePast) {
     auto first_onset_frame = [&] {
         for (int frame = 0; frame < 10; ++frame) {
             history.write(frame == 0 ? click.data() : silence.data(), hop);
-            if (detector.analyse(history, 0.0).onset) return frame;
+            if (detector.analyse(history, {0.0, 0.0}).onset) return frame;
         }
         return -1;
     };

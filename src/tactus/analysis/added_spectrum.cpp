@@ -9,7 +9,6 @@ void AddedSpectrum::prepare(int bins, int hop_samples, int longest_wait_samples)
     hop_samples_ = std::max(1, hop_samples);
     frames_ = longest_wait_samples / hop_samples_ + 2;
     ring_.assign(static_cast<size_t>(frames_) * static_cast<size_t>(bins_), 0.0f);
-    extra_ring_.assign(static_cast<size_t>(frames_), 0.0);
     reference_.assign(static_cast<size_t>(bins_), 0.0f);
     added_.assign(static_cast<size_t>(bins_), 0.0f);
     reset();
@@ -17,25 +16,22 @@ void AddedSpectrum::prepare(int bins, int hop_samples, int longest_wait_samples)
 
 void AddedSpectrum::reset() noexcept {
     std::fill(ring_.begin(), ring_.end(), 0.0f);
-    std::fill(extra_ring_.begin(), extra_ring_.end(), 0.0);
     std::fill(reference_.begin(), reference_.end(), 0.0f);
     std::fill(added_.begin(), added_.end(), 0.0f);
     position_ = 0;
-    added_sum_ = added_extra_ = reference_extra_ = 0;
+    added_sum_ = 0;
 }
 
-void AddedSpectrum::analyse(std::span<const float> powers, double extra, int64_t now,
+void AddedSpectrum::analyse(std::span<const float> powers, int64_t now,
                             int64_t onset_start) noexcept {
     position_ = (position_ + 1) % frames_;
     std::copy_n(powers.data(), bins_, ring_.data() + static_cast<size_t>(position_) * bins_);
-    extra_ring_[position_] = extra;
     if (onset_start >= 0) {
         // The last frame that ended at or before the hit's start: what was already sounding.
         const auto back = static_cast<int>(
             std::min<int64_t>((now - onset_start + hop_samples_ - 1) / hop_samples_, frames_ - 1));
         const int slot = (position_ + frames_ - back) % frames_;
         std::copy_n(ring_.data() + static_cast<size_t>(slot) * bins_, bins_, reference_.data());
-        reference_extra_ = extra_ring_[slot];
     }
     double sum = 0;
     for (int k = 0; k < bins_; ++k) {
@@ -43,7 +39,6 @@ void AddedSpectrum::analyse(std::span<const float> powers, double extra, int64_t
         sum += added_[k];
     }
     added_sum_ = sum;
-    added_extra_ = std::max(0.0, extra - reference_extra_);
 }
 
 }  // namespace tactus

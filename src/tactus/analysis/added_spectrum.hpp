@@ -19,22 +19,18 @@ class AddedSpectrum {
     void prepare(int bins, int hop_samples, int longest_wait_samples);
     void reset() noexcept;
     // One frame ending at analysis sample `now`, and the start of an onset this frame decided
-    // (< 0: none). `extra` is one more value read the same way (the high band's power).
-    void analyse(std::span<const float> powers, double extra, int64_t now,
-                 int64_t onset_start) noexcept;
+    // (< 0: none).
+    void analyse(std::span<const float> powers, int64_t now, int64_t onset_start) noexcept;
 
     const std::vector<float>& added() const { return added_; }
     const std::vector<float>& reference() const { return reference_; }
     double added_sum() const { return added_sum_; }  // over every bin
-    double added_extra() const { return added_extra_; }
-    double reference_extra() const { return reference_extra_; }
 
   private:
     std::vector<float> ring_;  // the last frames_ spectra, bins_ each
-    std::vector<double> extra_ring_;
     std::vector<float> reference_, added_;
     int bins_ = 0, frames_ = 0, position_ = 0, hop_samples_ = 1;
-    double added_sum_ = 0, added_extra_ = 0, reference_extra_ = 0;
+    double added_sum_ = 0;
 };
 
 }  // namespace tactus

@@ -58,13 +58,12 @@ void Analyzer::prepare(const ProcessSpec& spec, const Settings& s) {
     pitch_.prepare(analysis, {.min_hz = s[P::pitch_min_hz],
                               .max_hz = std::min(s[P::pitch_max_hz], 0.45 * analysis_rate),
                               .threshold = s[P::pitch_threshold]});
-    onsets_.prepare(analysis, hop_,
-                    {s[P::onset_window_ms], s[P::onset_threshold], s[P::onset_ratio],
-                     s[P::onset_history_ms], s[P::onset_min_interval_ms], s[P::onset_high_weight]});
-    high_band_.prepare(sample_rate_hz_,
-                       std::max(1, static_cast<int>(std::lround(
-                                       ms_to_samples(s[P::onset_window_ms], analysis_rate) /
-                                       static_cast<double>(hop_)))));
+    onsets_.prepare(analysis, hop_, onset_settings(s));
+    const int band_window_frames = std::max(
+        1, static_cast<int>(std::lround(ms_to_samples(s[P::onset_window_ms], analysis_rate) /
+                                        static_cast<double>(hop_))));
+    low_band_.prepare(BandPower::Band::low, sample_rate_hz_, band_window_frames);
+    high_band_.prepare(BandPower::Band::high, sample_rate_hz_, band_window_frames);
     hits_.prepare({onsets_.frame().bins(), onsets_.frame().bin_hz()},
                   {stft_.bins(), stft_.bin_hz()}, analysis_rate, hop_, onsets_.span_samples(),
                   hit_settings(s));
@@ -78,14 +77,23 @@ void Analyzer::prepare(const ProcessSpec& spec, const Settings& s) {
     reset();
 }
 
+OnsetSettings Analyzer::onset_settings(const Settings& s) {
+    return {.window_ms = s[P::onset_window_ms],
+            .threshold = s[P::onset_threshold],
+            .ratio = s[P::onset_ratio],
+            .history_ms = s[P::onset_history_ms],
+            .min_interval_ms = s[P::onset_min_interval_ms],
+            .low_weight = s[P::onset_low_weight],
+            .high_weight = s[P::onset_high_weight]};
+}
+
 HitSettings Analyzer::hit_settings(const Settings& s) {
     return {.brightness_max_hz = s[P::brightness_max_hz], .settle_ms = s[P::parts_settle_ms]};
 }
 
 void Analyzer::set_live(const Settings& s) noexcept {
     hits_.set_live(hit_settings(s));
-    onsets_.set_thresholds(s[P::onset_threshold], s[P::onset_ratio], s[P::onset_min_interval_ms],
-                           s[P::onset_high_weight]);
+    onsets_.set_thresholds(onset_settings(s));
     pitch_.set_threshold(s[P::pitch_threshold]);
     brightness_.set_max_hz(s[P::brightness_max_hz]);
 }
@@ -96,6 +104,7 @@ void Analyzer::reset() noexcept {
     loudness_.reset();
     dc_blocker_.reset();
     onsets_.reset();
+    low_band_.reset();
     high_band_.reset();
     hits_.reset();
     features_ = {};
@@ -112,6 +121,7 @@ bool Analyzer::process(const float* samples, const float* power, int count) noex
         else
             loudness_.process(clean_.data(), count);
     }
+    low_band_.process(clean_.data(), count);
     high_band_.process(clean_.data(), count);
     inputs_ += count;
     const int analysed = resampler_.process(clean_.data(), count, analysed_.data());
@@ -135,12 +145,16 @@ const Features& Analyzer::analyse() noexcept {
         f.pitch_hz = pitch.f0_hz;
         f.pitch_confidence = pitch.confidence;
     }
-    const HighBand::Power high_band = high_band_.frame();
-    const OnsetDecision onset = onsets_.analyse(history_, high_band.mean);
+    const BandPower::Power low_band = low_band_.frame(), high_band = high_band_.frame();
+    const OnsetDecision onset = onsets_.analyse(history_, {low_band.mean, high_band.mean});
     f.onset_odf = onset.odf;
     f.onset = onset.onset;
     if (computed_.spectrum) {
-        hits_.analyse(onsets_.frame().powers(), stft_.powers(), high_band.hann,
+        hits_.analyse({.loudness_mean_square = loudness_.mean_square(),
+                       .fast = onsets_.frame().powers(),
+                       .fine = stft_.powers(),
+                       .low_band_power = low_band.hann,
+                       .high_band_power = high_band.hann},
                       history_.written(), onset.onset ? onset.onset_sample : -1);
         f.hit_db = hits_.level_db();
         f.hit_brightness_hz = hits_.brightness_hz();

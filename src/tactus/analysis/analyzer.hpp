@@ -19,7 +19,7 @@
 #include "tactus/analysis/brightness.hpp"
 #include "tactus/analysis/dc_blocker.hpp"
 #include "tactus/analysis/features.hpp"
-#include "tactus/analysis/high_band.hpp"
+#include "tactus/analysis/band_power.hpp"
 #include "tactus/analysis/hit_analysis.hpp"
 #include "tactus/analysis/loudness.hpp"
 #include "tactus/analysis/noisiness.hpp"
@@ -79,6 +79,7 @@ class Analyzer {
 
   private:
     static int hop_for(const Settings& settings, double analysis_rate_hz);
+    static OnsetSettings onset_settings(const Settings& settings);
     static HitSettings hit_settings(const Settings& settings);
 
     Resampler resampler_;
@@ -91,7 +92,7 @@ class Analyzer {
     PitchYin pitch_;
     OnsetDetector onsets_;
     HitAnalysis hits_;
-    HighBand high_band_;  // input rate
+    BandPower low_band_, high_band_;  // input rate
     Features features_;
     std::vector<float> clean_;     // sanitised input, one hop
     std::vector<float> analysed_;  // clean_ at the analysis rate

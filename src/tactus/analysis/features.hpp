@@ -19,7 +19,7 @@ struct Features {
     bool onset = false;            // an onset was decided at frame_end_sample
     int64_t onset_sample = 0;      // its estimated start (valid when onset)
     // What the latest hit added above what was sounding before it (analysis/hit_analysis.hpp).
-    double hit_db = -120;          // its level now, dB re full scale
+    double hit_db = -120;          // its loudness now, dB LKFS scale
     double hit_brightness_hz = 0;  // its brightness
     DrumPart part = DrumPart::other;  // the latest hit's part (decided settle_ms after its onset)
     bool part_decided = false;        // ... on this frame
@@ -50,7 +50,7 @@ constexpr FeatureSet group_of(FeatureSource source) {
         case FeatureSource::tonality:
         case FeatureSource::hit_db:
         case FeatureSource::hit_brightness_hz:
-            set.spectrum = true;
+            set.spectrum = set.loudness = true;
             break;
         case FeatureSource::pitch_hz:
         case FeatureSource::pitch_confidence:

@@ -3,17 +3,16 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tactus/analysis/loudness.hpp"
 #include "tactus/core/fast_math.hpp"
 
 namespace tactus {
 namespace {
 // A Hann-windowed sine of amplitude 1 centred on a bin reads power 1 there and 1/4 in each
 // neighbour (stft_frame.hpp): 1.5 in all, for a mean power of 1/2. The high band is a mean
-// power: times 3 it counts as the spectra's bins do.
-constexpr double kSinePowerSum = 1.5;
-constexpr double kBinsPerMeanPower = 2 * kSinePowerSum;
-constexpr double kFullScaleSineDb = -3.0103;
-constexpr double kSilentDb = -120;
+// power: times 3 it counts as the spectrum's bins do.
+constexpr double kBinsPerMeanPower = 2 * 1.5;
+constexpr double kSilentDb = Loudness::kFloorDb;
 // Where a drum's added power lies (Sonic Pi and General MIDI kits; eval/results.md): a kick's
 // body below 150 Hz, a snare's shell at 150 Hz-1 kHz and its wires above, a hat's above 6 kHz.
 constexpr double kLowEdgeHz = 150, kMidEdgeHz = 1000;
@@ -23,17 +22,14 @@ constexpr double kHatAboveShare = 0.2, kHatLowShare = 0.2;
 constexpr double kKickLowPerMid = 1.0, kKickLowShare = 0.2;
 constexpr double kDrumAboveShare = 0.01;
 
-double power_db(double power_sum) {
-    return power_sum > 0 ? std::max(kSilentDb, 10 * std::log10(power_sum / kSinePowerSum) +
-                                                   kFullScaleSineDb)
-                         : kSilentDb;
-}
 }  // namespace
 
 void HitAnalysis::prepare(SpectrumShape fast, SpectrumShape fine, double sample_rate_hz,
                           int hop_samples, int longest_wait_samples,
                           const HitSettings& settings) {
     sample_rate_hz_ = sample_rate_hz;
+    for (AddedSpectrum* one : {&loudness_, &low_, &high_})
+        one->prepare(1, hop_samples, longest_wait_samples);
     fast_.prepare(fast.bins, hop_samples, longest_wait_samples);
     fine_.prepare(fine.bins, hop_samples, longest_wait_samples);
     fine_magnitude_.assign(static_cast<size_t>(fine.bins), 0.0f);
@@ -53,8 +49,7 @@ void HitAnalysis::set_live(const HitSettings& settings) noexcept {
 }
 
 void HitAnalysis::reset() noexcept {
-    fast_.reset();
-    fine_.reset();
+    for (AddedSpectrum* each : {&loudness_, &low_, &high_, &fast_, &fine_}) each->reset();
     hit_start_ = -1;
     level_db_ = peak_db_ = kSilentDb;
     brightness_hz_ = 0;
@@ -62,16 +57,22 @@ void HitAnalysis::reset() noexcept {
     part_decided_ = deciding_ = false;
 }
 
-void HitAnalysis::analyse(std::span<const float> fast, std::span<const float> fine,
-                          double high_band_power, int64_t now, int64_t onset_start) noexcept {
-    fast_.analyse(fast, high_band_power, now, onset_start);
-    fine_.analyse(fine, high_band_power, now, onset_start);
+void HitAnalysis::analyse(const Frame& frame, int64_t now, int64_t onset_start) noexcept {
+    const auto one = [&](AddedSpectrum& added, double value) {
+        const auto bin = static_cast<float>(value);
+        added.analyse({&bin, 1}, now, onset_start);
+    };
+    one(loudness_, frame.loudness_mean_square);
+    one(low_, frame.low_band_power);
+    one(high_, frame.high_band_power);
+    fast_.analyse(frame.fast, now, onset_start);
+    fine_.analyse(frame.fine, now, onset_start);
     if (onset_start >= 0) {
         hit_start_ = onset_start;
         peak_db_ = kSilentDb;
         deciding_ = true;
     }
-    level_db_ = power_db(fast_.added_sum() + kBinsPerMeanPower * fast_.added_extra());
+    level_db_ = Loudness::db_of(loudness_.added_sum());
     peak_db_ = std::max(peak_db_, level_db_);
     const auto& added = fine_.added();
     for (size_t k = 0; k < added.size(); ++k) fine_magnitude_[k] = std::sqrt(added[k]);
@@ -84,7 +85,7 @@ void HitAnalysis::analyse(std::span<const float> fast, std::span<const float> fi
     }
 }
 
-// The shares of the fast added spectrum's power (its 10 ms window and the high band's, weighted
+// The shares of the added power (the fast spectrum's 10 ms window and the bands', weighted
 // alike) below 150 Hz, at 150 Hz-1 kHz and above 6 kHz decide: a hat adds a fifth or more above
 // 6 kHz and little below 150 Hz; a kick adds at least as much below 150 Hz as at 150 Hz-1 kHz;
 // what adds next to nothing above 6 kHz is no drum (a bass note, a chord, a voice: pitched sounds
@@ -92,10 +93,10 @@ void HitAnalysis::analyse(std::span<const float> fast, std::span<const float> fi
 DrumPart HitAnalysis::classify() const noexcept {
     const auto& added = fast_.added();
     const int bins = static_cast<int>(added.size());
-    const double low = sum_of(added.data() + 1, low_bins_ - 1);
+    const double low = kBinsPerMeanPower * low_.added_sum();
     const double mid = sum_of(added.data() + low_bins_, mid_bins_ - low_bins_);
     const double upper = sum_of(added.data() + mid_bins_, bins - mid_bins_);
-    const double above = kBinsPerMeanPower * fast_.added_extra();
+    const double above = kBinsPerMeanPower * high_.added_sum();
     const double total = low + mid + upper + above;
     if (total <= 0) return DrumPart::other;
     if (above > kHatAboveShare * total && low < kHatLowShare * total) return DrumPart::hat;

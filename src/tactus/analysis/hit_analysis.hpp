@@ -1,14 +1,14 @@
 // What each hit adds to the sound, and which drum part it is: the drum parts inside music
 // (paper §6: brightness "used for drum part separation", read here on what the hit added instead
 // of on the whole mix, so bass, chords and a voice neither brighten a kick nor darken a snare).
-// Two added spectra (analysis/added_spectrum.hpp), both with the input's high band
-// (analysis/high_band.hpp) as one more value:
-//   fast: the onset detector's 10 ms spectrum, for the level, which then rises as fast as the
-//         loudness does;
-//   fine: the 23 ms analysis spectrum, for the brightness (its bins resolve a kick's body).
+// What was sounding is subtracted (analysis/added_spectrum.hpp) from these readings:
+//   the K-weighted loudness's power (10 ms, a rectangular window: as fast as the loudness);
+//   the onset detector's 10 ms spectrum and the input's power below 150 Hz and above 6 kHz
+//   (analysis/band_power.hpp, Hann-weighted as that spectrum is), for the part;
+//   the 23 ms analysis spectrum, for the brightness (its bins resolve a kick's body).
 // Read from them, every frame until the next onset:
-//   level_db       the power the hit added, dB re full scale (a full-scale 1 kHz sine added reads
-//                  -3.01, as BS.1770 reads it), so a soft hit over a loud chord reads soft;
+//   level_db       the loudness the hit added, dB LKFS scale, so a soft hit over a loud chord
+//                  reads soft;
 //   brightness_hz  its log-frequency centroid up to brightness.max_hz (analysis/brightness.hpp);
 // and once, settle_ms after the onset, its part, from where the added power lies (classify()).
 // Audio thread: analyse(); prepare() allocates.
@@ -43,10 +43,15 @@ class HitAnalysis {
     void reset() noexcept;
     void set_live(const HitSettings& settings) noexcept;  // audio thread
 
-    // One frame ending at analysis sample `now`: both spectra, the mean power of the input's
-    // high band, and the start of an onset this frame decided (< 0: none).
-    void analyse(std::span<const float> fast, std::span<const float> fine,
-                 double high_band_power, int64_t now, int64_t onset_start) noexcept;
+    // The readings of one frame.
+    struct Frame {
+        double loudness_mean_square = 0;
+        std::span<const float> fast, fine;  // power spectra
+        double low_band_power = 0, high_band_power = 0;
+    };
+    // One frame ending at analysis sample `now`, and the start of an onset this frame decided
+    // (< 0: none).
+    void analyse(const Frame& frame, int64_t now, int64_t onset_start) noexcept;
 
     double level_db() const { return level_db_; }
     double brightness_hz() const { return brightness_hz_; }
@@ -60,6 +65,7 @@ class HitAnalysis {
     DrumPart classify() const noexcept;
 
     AddedSpectrum fast_, fine_;
+    AddedSpectrum loudness_, low_, high_;  // each a spectrum of one bin
     Brightness brightness_;
     std::vector<float> fine_magnitude_;
     int low_bins_ = 0, mid_bins_ = 0;  // band edges in fast bins (classify())

@@ -57,8 +57,11 @@ void Loudness::process_power(const float* power, int count) noexcept {
     add(count, [&](int i) { return static_cast<double>(power[i]); });
 }
 
-double Loudness::loudness_db() const noexcept {
-    const double mean_square = std::max(0.0, sum_) / static_cast<double>(squares_.size());
+double Loudness::mean_square() const noexcept {
+    return std::max(0.0, sum_) / static_cast<double>(squares_.size());
+}
+
+double Loudness::db_of(double mean_square) noexcept {
     if (mean_square <= 1e-12) return kFloorDb;
     return std::max(kFloorDb, kLkfsOffsetDb + power_to_db(mean_square));
 }

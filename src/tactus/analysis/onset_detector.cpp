@@ -22,7 +22,7 @@ void OnsetDetector::prepare(const ProcessSpec& spec, int hop_samples, const Onse
     lag_frames_ =
         std::max(1, static_cast<int>(std::lround(kLagMs * 1e-3 * sample_rate_hz / hop_samples)));
     past_log_.assign(static_cast<size_t>(past_frames()) * static_cast<size_t>(bins_), 0.0f);
-    past_high_.assign(static_cast<size_t>(past_frames()), 0.0f);
+    for (auto& band : past_band_) band.assign(static_cast<size_t>(past_frames()), 0.0f);
     rise_.assign(static_cast<size_t>(stft_.bins()), 0.0f);
     const auto history_frames =
         std::max<int64_t>(1, std::llround(s.history_ms * 1e-3 * sample_rate_hz / hop_samples));
@@ -36,18 +36,18 @@ void OnsetDetector::prepare(const ProcessSpec& spec, int hop_samples, const Onse
     reset();
 }
 
-void OnsetDetector::set_thresholds(double threshold, double ratio, double min_interval_ms,
-                                   double high_weight) noexcept {
-    settings_.high_weight = high_weight;
-    settings_.threshold = threshold;
-    settings_.ratio = ratio;
-    settings_.min_interval_ms = min_interval_ms;
-    min_interval_samples_ = ms_to_samples(min_interval_ms, sample_rate_hz_);
+void OnsetDetector::set_thresholds(const OnsetSettings& s) noexcept {
+    settings_.threshold = s.threshold;
+    settings_.ratio = s.ratio;
+    settings_.min_interval_ms = s.min_interval_ms;
+    settings_.low_weight = s.low_weight;
+    settings_.high_weight = s.high_weight;
+    min_interval_samples_ = ms_to_samples(s.min_interval_ms, sample_rate_hz_);
 }
 
 void OnsetDetector::reset() noexcept {
     std::fill(past_log_.begin(), past_log_.end(), 0.0f);
-    std::fill(past_high_.begin(), past_high_.end(), 0.0f);
+    for (auto& band : past_band_) std::fill(band.begin(), band.end(), 0.0f);
     past_position_ = 0;
     std::fill(flux_history_.begin(), flux_history_.end(), 0.0);
     history_position_ = 0;
@@ -56,7 +56,7 @@ void OnsetDetector::reset() noexcept {
 }
 
 OnsetDecision OnsetDetector::analyse(const SampleHistory& history,
-                                     double high_band_power) noexcept {
+                                     std::array<double, 2> band_power) noexcept {
     stft_.analyse(history);
     const auto& magnitudes = stft_.magnitudes();
     // Rise over the louder of the frames one and two lags back (SuperFlux's temporal maximum,
@@ -76,16 +76,20 @@ OnsetDecision OnsetDetector::analyse(const SampleHistory& history,
         rise_[k] = std::max(0.0f, log_magnitude - std::max(one_lag[k], two_lags[k]));
         two_lags[k] = log_magnitude;
     }
-    // The high band as one more bin, its power read as a sine's amplitude sqrt(2 P).
+    // Each band as `weight` more bins, its power read as a sine's amplitude sqrt(2 P).
     const int one_lag_slot = (past_position_ + frames - lag_frames_) % frames;
-    const float high_log = fast_log(
-        1.0f + static_cast<float>(kLogCompression * std::sqrt(2.0 * high_band_power)));
-    const float high_rise = std::max(
-        0.0f, high_log - std::max(past_high_[one_lag_slot], past_high_[past_position_]));
-    past_high_[past_position_] = high_log;
+    const double weights[2] = {settings_.low_weight, settings_.high_weight};
+    double bands_rise = 0;
+    for (size_t b = 0; b < past_band_.size(); ++b) {
+        auto& past = past_band_[b];
+        const float log_power = fast_log(
+            1.0f + static_cast<float>(kLogCompression * std::sqrt(2.0 * band_power[b])));
+        bands_rise += weights[b] * std::max(0.0f, log_power - std::max(past[one_lag_slot],
+                                                                       past[past_position_]));
+        past[past_position_] = log_power;
+    }
     past_position_ = (past_position_ + 1) % frames;
-    const double flux = (sum_of(rise_.data(), bins_) + settings_.high_weight * high_rise) *
-                        100.0 / bins_;  // per 100 bins
+    const double flux = (sum_of(rise_.data(), bins_) + bands_rise) * 100.0 / bins_;  // per 100 bins
 
     // Median of the recent flux: the background level, not raised by the hits themselves.
     std::copy(flux_history_.begin(), flux_history_.end(), scratch_.begin());

@@ -8,9 +8,9 @@
 // recent flux, at least min_interval after the previous onset; it re-arms when the flux falls back
 // below the threshold. The onset time is then refined in the time domain to the sub-millisecond
 // block with the largest energy rise in the newest window.
-// Above the analysis band, the input's high band (analysis/high_band.hpp) adds its own rise, of
-// its log-compressed power over the same lags, weighted as high_weight bins of the spectrum: the
-// hats a 16 kHz analysis cannot see.
+// The input's power below 150 Hz and above 6 kHz (analysis/band_power.hpp) each add their own
+// rise, of their log-compressed power over the same lags, weighted as low_weight and high_weight
+// bins of the spectrum: a sub kick that lights one bin, the hats a 16 kHz analysis cannot see.
 #pragma once
 
 #include <array>
@@ -29,6 +29,7 @@ struct OnsetSettings {
     double ratio = 1.25;
     double history_ms = 60;
     double min_interval_ms = 50;
+    double low_weight = 5;
     double high_weight = 30;
 };
 
@@ -46,11 +47,11 @@ class OnsetDetector {
     void prepare(const ProcessSpec& spec, int hop_samples, const OnsetSettings& settings);
     void reset() noexcept;
     // Live (audio thread): threshold, ratio and minimum interval; the windows stay as prepared.
-    void set_thresholds(double threshold, double ratio, double min_interval_ms,
-                        double high_weight) noexcept;
-    // Analyses the frame ending at the newest sample of `history`, with the high band's mean
-    // power over the same window (0 without one).
-    OnsetDecision analyse(const SampleHistory& history, double high_band_power) noexcept;
+    void set_thresholds(const OnsetSettings& settings) noexcept;
+    // Analyses the frame ending at the newest sample of `history`, with the bands' mean power
+    // over the same window ({low, high}; 0 without one).
+    OnsetDecision analyse(const SampleHistory& history,
+                          std::array<double, 2> band_power) noexcept;
     int span_samples() const { return stft_.window_samples() + hop_samples_; }
     // The power spectrum of the frame analyse() last read.
     const StftFrame& frame() const { return stft_; }
@@ -63,7 +64,7 @@ class OnsetDetector {
     StftFrame stft_;
     std::vector<float> rise_, segment_;  // rise_: per bin, this frame
     std::vector<float> past_log_;        // the last past_frames() frames, bins_ each, a ring
-    std::vector<float> past_high_;       // the high band's, the same frames
+    std::array<std::vector<float>, 2> past_band_;  // the bands', the same frames
     int past_frames() const { return 2 * lag_frames_; }
     int lag_frames_ = 1, past_position_ = 0;
     std::vector<double> flux_history_, scratch_, block_energy_;

@@ -212,6 +212,9 @@ constexpr ParamSpec kTable[] = {
     {P::onset_high_weight, 80, "onset.high_weight", "", real, 0, 200, 30, lin, live, 0,
      "weight, in spectrum bins, of the rise of the input above 6 kHz in the onset detection "
      "function (hats; 0 = the analysis band alone)"},
+    {P::onset_low_weight, 81, "onset.low_weight", "", real, 0, 200, 5, lin, live, 0,
+     "weight, in spectrum bins, of the rise of the input below 150 Hz in the onset detection "
+     "function (kicks; 0 = the spectrum's own bins alone)"},
 };
 // clang-format on
 

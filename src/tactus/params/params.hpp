@@ -113,6 +113,7 @@ enum class P : int {
     brightness_max_hz,
     parts_settle_ms,
     onset_high_weight,
+    onset_low_weight,
     count
 };
 

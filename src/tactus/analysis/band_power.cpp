@@ -1,4 +1,4 @@
-#include "tactus/analysis/high_band.hpp"
+#include "tactus/analysis/band_power.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,11 +7,13 @@
 
 namespace tactus {
 
-void HighBand::prepare(double sample_rate_hz, int window_frames) {
-    active_ = sample_rate_hz / 2 >= kEdgeHz + kMinWidthHz;
+void BandPower::prepare(Band band, double sample_rate_hz, int window_frames) {
+    active_ = band == Band::low || sample_rate_hz / 2 >= kHighEdgeHz + kMinWidthHz;
     for (int s = 0; s < 2; ++s)
-        sections_[s].set(
-            BiquadCoefficients::highpass(kEdgeHz, butterworth_q(4, s), sample_rate_hz));
+        sections_[s].set(band == Band::low ? BiquadCoefficients::lowpass(
+                                                 kLowEdgeHz, butterworth_q(4, s), sample_rate_hz)
+                                           : BiquadCoefficients::highpass(
+                                                 kHighEdgeHz, butterworth_q(4, s), sample_rate_hz));
     energy_.assign(static_cast<size_t>(std::max(1, window_frames)), 0.0);
     samples_.assign(energy_.size(), 0);
     // Frame j back (0: the newest) spans (j, j + 1) of the window's window_frames: its Hann weight
@@ -25,14 +27,14 @@ void HighBand::prepare(double sample_rate_hz, int window_frames) {
     reset();
 }
 
-void HighBand::reset() noexcept {
+void BandPower::reset() noexcept {
     for (auto& section : sections_) section.reset();
     std::fill(energy_.begin(), energy_.end(), 0.0);
     std::fill(samples_.begin(), samples_.end(), 0);
     position_ = 0;
 }
 
-void HighBand::process(const float* samples, int count) noexcept {
+void BandPower::process(const float* samples, int count) noexcept {
     if (!active_) return;
     double energy = 0;
     for (int i = 0; i < count; ++i) {
@@ -43,7 +45,7 @@ void HighBand::process(const float* samples, int count) noexcept {
     samples_[position_] += count;
 }
 
-HighBand::Power HighBand::frame() noexcept {
+BandPower::Power BandPower::frame() noexcept {
     const int frames = static_cast<int>(energy_.size());
     double energy = 0, samples = 0, weighted_energy = 0, weighted_samples = 0;
     for (int j = 0; j < frames; ++j) {

@@ -1,0 +1,49 @@
+// The power of the input in a band at either end of the spectrum, for the onset detection
+// function and the drum parts (band-wise onset functions, as real-time drum transcription uses):
+//   high: above 6 kHz, outside the 16 kHz analysis (analyzer.hpp), where a closed hi-hat keeps
+//         84 % of its first 50 ms (Sonic Pi's drum_cymbal_closed) and bass, chords and most of a
+//         voice have little energy, so hats stay audible inside a mix;
+//   low:  below 150 Hz, a kick's body: a sub kick lights one or two of the analysis spectrum's
+//         bins, which a busy bed's flux outweighs.
+// A 4th-order Butterworth high- or low-pass at the input rate, squared, read at each analysis
+// frame as the mean power over the last window_frames frames: as it is (for the onset detection
+// function, which decides sooner on it) and weighted by a Hann window as the onset detector's
+// spectrum is (stft_frame.hpp), so that the two read a hit's shares alike. A high band the input
+// rate cannot hold (its Nyquist below kHighEdgeHz + kMinWidthHz) stays 0.
+// Audio thread: process(), frame(); prepare() allocates.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "tactus/dsp/biquad.hpp"
+
+namespace tactus {
+
+class BandPower {
+  public:
+    enum class Band { low, high };
+    static constexpr double kLowEdgeHz = 150;
+    static constexpr double kHighEdgeHz = 6000;
+    static constexpr double kMinWidthHz = 2000;
+
+    void prepare(Band band, double sample_rate_hz, int window_frames);
+    void reset() noexcept;
+    void process(const float* samples, int count) noexcept;
+
+    struct Power {
+        double mean = 0, hann = 0;  // mean power over the window, plain and Hann-weighted
+    };
+    // Closes one analysis frame: the power over the newest window of frames.
+    Power frame() noexcept;
+
+  private:
+    std::array<Biquad, 2> sections_;
+    std::vector<double> energy_;  // energy of each of the last frames, a ring
+    std::vector<int> samples_;    // and their sample counts
+    std::vector<double> weight_;  // Hann weight of each frame back
+    int position_ = 0;
+    bool active_ = false;
+};
+
+}  // namespace tactus
