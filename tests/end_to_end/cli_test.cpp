@@ -101,7 +101,8 @@ TEST_F(Cli, AnalyzeCsvAndJson) {
                            "preset=tfd; actuator=voice-coil\n"),
               std::string::npos)
         << csv.out.substr(0, 400);
-    // Every row names its part; the parts decided are those `tactus onsets` prints, in order.
+    // Every row names its part; the parts decided are those `tactus onsets` prints, in order
+    // (which ends with one more when the input ends before the last onset's part is decided).
     std::istringstream lines(csv.out);
     std::string header, line, decided;
     std::getline(lines, header);
@@ -122,7 +123,10 @@ TEST_F(Cli, AnalyzeCsvAndJson) {
     std::string printed;
     std::istringstream onset_lines(onsets.out);
     for (std::string l; std::getline(onset_lines, l);) printed += l.substr(l.rfind(' ') + 1) + " ";
-    EXPECT_EQ(decided, printed);
+    EXPECT_TRUE(printed.starts_with(decided)) << decided << "\n" << printed;
+    EXPECT_LE(std::count(printed.begin(), printed.end(), ' ') -
+                  std::count(decided.begin(), decided.end(), ' '),
+              1);
     const auto rows = std::count(csv.out.begin(), csv.out.end(), '\n') - 2;
     const double seconds = static_cast<double>(info_of(kAmen).frames) / info_of(kAmen).samplerate;
     const double hop_s = tactus::Settings{}[tactus::P::analysis_hop_ms] * 1e-3;

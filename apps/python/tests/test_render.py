@@ -71,7 +71,9 @@ def test_analyze_equals_the_command_lines_json(cli, amen, tmp_path):
     assert columns["onset"].sum() > 40
     assert tactus.drum_parts == ("kick", "snare", "hat", "other")
     decided = columns["part"][columns["part_decided"] == 1]
-    assert len(decided) == columns["onset"].sum() and len(set(decided)) >= 2
+    # Each onset's part decided once (the last, near the end, may not be before the input ends).
+    assert columns["onset"].sum() - 1 <= len(decided) <= columns["onset"].sum()
+    assert len(set(decided)) >= 2
 
 
 def test_analyze_csv_reads_by_column_name_in_numpy_and_pandas(cli, amen, tmp_path):

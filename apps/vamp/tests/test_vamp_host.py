@@ -13,6 +13,9 @@ import pytest
 HOST = os.environ.get("VAMP_SIMPLE_HOST", "vamp-simple-host")
 CLI = os.environ.get("TACTUS_CLI")
 AMEN = pathlib.Path("/usr/share/sonic-pi/samples/loop_amen_full.flac")
+# An onset's part is decided parts.settle_ms (8 ms in tfd) after it, on the next frame (a hop
+# later at most): with margin.
+DECIDING_S = 0.02
 OUTPUTS = ["onsets", "loudness", "brightness", "noisiness", "pitch", "vibration_frequency",
            "vibration_amplitude", "sensation"]
 
@@ -68,6 +71,8 @@ def test_onsets_equal_tactus_onsets(audio):
         want_onset, want_decided, want_strength = map(float, want[:3])
         assert abs(onset - want_onset) <= 5.01e-7, (onset, want_onset)  # printed to 6 decimals
         assert decided == pytest.approx(want_decided, abs=1e-5)  # the host: 6 digits
+        if want_onset > duration - DECIDING_S:
+            continue  # the command line stops before its part is decided, the host's padding not
         assert strength == pytest.approx(want_strength, abs=0.0051)  # printed to 0.01 dB
         assert part == want[3], onset
     assert len({part for _, _, part in within}) >= 2
