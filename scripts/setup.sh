@@ -11,7 +11,7 @@ packages=(
   python3 python3-numpy python3-scipy python3-soundfile python3-mir-eval
   fluidsynth fluid-soundfont-gm musescore-general-soundfont-small timgm6mb-soundfont espeak-ng
   dpf-source liblilv-dev lv2-dev lilv-utils sordi jackd2 ardour
-  python3-dev pybind11-dev python3-pytest python3-matplotlib python3-distributed
+  python3-dev pybind11-dev python3-pytest python3-matplotlib python3-distributed python3-pandas
   vamp-plugin-sdk vamp-examples
   libjs-dygraphs chromium python3-pil
   librtaudio-dev liblo-dev libjack-jackd2-dev

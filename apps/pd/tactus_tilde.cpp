@@ -3,8 +3,9 @@
 //
 // Inlet: the music (signal) and messages. Outlets, left to right: N actuator signals (default 1),
 // with -thru the music delayed by the engine's latency (so sound and vibration stay aligned),
-// with -features loudness_db, brightness_hz, noisiness and pitch_hz per analysis frame and the
-// onset strength at each onset.
+// with -features loudness_db, brightness_hz, noisiness and pitch_hz per analysis frame and, at
+// each onset once its part is decided (parts.settle_ms after it), the message `PART STRENGTH_DB`
+// (`kick -12.5`; parts kick, snare, hat, other: [route kick snare hat other] splits them).
 //
 // Messages are the parameter table's keys (`envelope.decay_ms 120`, `mapping.frequency.curve
 // log`), `preset NAME|FILE`, `actuator [OUTLET] NAME|FILE|none`, `gain OUTLET DB`, `trigger
@@ -19,6 +20,7 @@
 #include <m_pd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -31,6 +33,7 @@
 
 #include "tactus/actuator/warnings.hpp"
 #include "tactus/engine/engine.hpp"
+#include "tactus/engine/onset_decisions.hpp"
 #include "tactus/io/actuator_file.hpp"
 #include "tactus/io/preset.hpp"
 #include "tactus/io/text_output.hpp"
@@ -93,6 +96,8 @@ class Object {
     size_t thru_at_ = 0;
 
     std::vector<t_outlet*> feature_outlets_;  // loudness, brightness, noisiness, pitch, onset
+    OnsetDecisions decisions_;                // an onset waits there for its part
+    std::array<t_symbol*, kDrumParts> part_symbols_{};  // the onset messages' selectors
 };
 
 struct PdObject {
@@ -117,7 +122,10 @@ Object::Object(t_object* owner, const Options& options)
     for (int i = 0; i < options.actuators + options.thru; ++i) outlet_new(owner, &s_signal);
     if (options.features) {
         for (int i = 0; i < 4; ++i) feature_outlets_.push_back(outlet_new(owner, &s_float));
-        feature_outlets_.push_back(outlet_new(owner, &s_float));
+        feature_outlets_.push_back(outlet_new(owner, nullptr));  // PART STRENGTH_DB messages
+        for (int i = 0; i < kDrumParts; ++i)
+            part_symbols_[static_cast<size_t>(i)] =
+                gensym(kDrumPartNames[static_cast<size_t>(i)].data());  // literals
     }
     if (!options.preset.empty()) load_preset(options.preset);
 }
@@ -133,6 +141,7 @@ void Object::prepare(double sample_rate_hz, int block) {
     if (options_.features) engine->enable_frame_queue();
     engine->prepare({.sample_rate_hz = sample_rate_hz, .max_block = block, .channels = 1});
     engine_ = std::move(engine);
+    decisions_.reset();
     sample_rate_hz_ = sample_rate_hz;
     block_ = block;
     thru_ring_.assign(static_cast<size_t>(engine_->latency()) + 1, 0.0f);
@@ -186,10 +195,16 @@ void Object::perform(int count) noexcept {
 // Feature outlets, right to left as Pd orders them, for every frame the engine produced.
 void Object::flush_frames() {
     if (!engine_) return;
+    const auto send_onset = [this](const DecidedOnset& onset) {
+        t_atom strength;
+        SETFLOAT(&strength, static_cast<t_float>(onset.strength_db));
+        outlet_anything(feature_outlets_[4], part_symbols_[static_cast<size_t>(onset.part)], 1,
+                        &strength);
+    };
     AnalysisFrame frame;
     while (engine_->pop_frame(frame)) {
         const Features& f = frame.features;
-        if (f.onset) outlet_float(feature_outlets_[4], static_cast<t_float>(f.onset_odf));
+        decisions_.add(f, send_onset);
         outlet_float(feature_outlets_[3], static_cast<t_float>(f.pitch_hz));
         outlet_float(feature_outlets_[2], static_cast<t_float>(f.noisiness));
         outlet_float(feature_outlets_[1], static_cast<t_float>(f.brightness_hz));

@@ -9,6 +9,7 @@
 #include <mutex>
 
 #include "audio_view.hpp"
+#include "parts.hpp"
 #include "settings.hpp"
 #include "tactus/engine/analysis_rows.hpp"
 #include "tactus/io/run_file.hpp"
@@ -85,6 +86,7 @@ class PyEngine {
             for (size_t k = 0; k < kColumns; ++k) columns[k].mutable_data()[r] = row[k];
         }
         frames_.clear();
+        out["part"] = part_names(out["part"]);
         return out;
     }
 

@@ -11,10 +11,12 @@
 #include <optional>
 
 #include "audio_view.hpp"
+#include "parts.hpp"
 #include "settings.hpp"
 #include "tactus/actuator/drive_meter.hpp"
 #include "tactus/dsp/downmix.hpp"
 #include "tactus/engine/analysis_rows.hpp"
+#include "tactus/engine/onset_decisions.hpp"
 #include "tactus/io/actuator_file.hpp"
 #include "tactus/io/audio_reader.hpp"
 #include "tactus/io/audio_writer.hpp"
@@ -125,7 +127,9 @@ py::dict analyze(const py::handle& x, double sample_rate_hz, const std::string& 
         }
         table.finish();
     }
-    return columns(AnalysisRows::kColumns, rows);
+    py::dict out = columns(AnalysisRows::kColumns, rows);
+    out["part"] = part_names(out["part"]);
+    return out;
 }
 
 py::dict onsets(const py::handle& x, double sample_rate_hz, const std::string& preset,
@@ -135,28 +139,34 @@ py::dict onsets(const py::handle& x, double sample_rate_hz, const std::string& p
     const ProcessSpec spec = spec_for(sample_rate_hz, in);
     Analyzer analyzer;
     try {
-        prepare_analysis(analyzer, spec, settings, FeatureSet::none());
+        prepare_analysis(analyzer, spec, settings, OnsetDecisions::reads());
     } catch (const std::invalid_argument& e) {
         throw py::value_error(e.what());
     }
-    std::vector<std::array<double, 3>> rows;
+    std::vector<std::array<double, 4>> rows;  // the part as its index
     {
         const py::gil_scoped_release unlocked;
+        OnsetDecisions decisions;
+        const auto add = [&](const DecidedOnset& o) {
+            rows.push_back({static_cast<double>(o.onset_sample) / sample_rate_hz,
+                            static_cast<double>(o.decided_sample) / sample_rate_hz, o.strength_db,
+                            static_cast<double>(o.part)});
+        };
         std::vector<float> mono(kBlock);
         std::vector<const float*> block(in.pointers.size());
         for (int done = 0; done < in.frames; done += kBlock) {
             const int count = std::min(kBlock, in.frames - done);
             for (size_t c = 0; c < block.size(); ++c) block[c] = in.pointers[c] + done;
-            analyse_block(
-                analyzer, block.data(), in.channels, count, mono.data(), [&](const Features& f) {
-                    if (f.onset)
-                        rows.push_back({f.onset_sample / sample_rate_hz,
-                                        f.frame_end_sample / sample_rate_hz, f.onset_odf});
-                });
+            analyse_block(analyzer, block.data(), in.channels, count, mono.data(),
+                          [&](const Features& f) { decisions.add(f, add); });
         }
+        decisions.finish(add);
     }
-    constexpr std::array<std::string_view, 3> kNames = {"onset_s", "decided_s", "strength"};
-    return columns(kNames, rows);
+    constexpr std::array<std::string_view, 4> kNames = {"onset_s", "decided_s", "strength_db",
+                                                        "part"};
+    py::dict out = columns(kNames, rows);
+    out["part"] = part_names(out["part"]);
+    return out;
 }
 
 py::dict meter(const py::handle& vibration, double sample_rate_hz, const std::string& actuator_name,
@@ -301,14 +311,18 @@ Returns float32 (frames, actuators). Raises ValueError with the command line's m
           arg("actuator") = py::none(), arg("settings") = py::none(),
           R"(Every analysis frame's features, vibration program and sensation levels, the
 columns of `tactus analyze` (the same values), as a dict of float64 arrays: time_s, loudness_db,
-brightness_hz, noisiness, pitch_hz, pitch_confidence, onset_odf, onset, onset_time_s,
-frequency_hz, amplitude, square_mix, trigger, attack_ms, decay_ms, sustain, flutter_hz,
+brightness_hz, noisiness, pitch_hz, pitch_confidence, onset_odf, onset, onset_time_s, hit_db,
+hit_brightness_hz, part (the latest hit's drum part: an array of names, tactus.drum_parts),
+part_decided, hit_strength_db, frequency_hz, amplitude, square_mix, trigger, attack_ms, decay_ms, sustain, flutter_hz,
 flutter_amplitude, pressure, P_sl_db, NPI_sl_db, NPII_sl_db, NPIII_sl_db, combined_sl_db.
 The sensation levels are metered through `actuator` (default: voice-coil). Arguments as render().)");
     m.def("onsets", &onsets, arg("x"), arg("sample_rate"), arg("preset") = "tfd",
           arg("settings") = py::none(),
           R"(The onsets `tactus onsets` prints (the ones render() triggers pulses on), as a dict
-of float64 arrays: onset_s (estimated start), decided_s (when it was decided), strength.)");
+of arrays: onset_s (estimated start), decided_s (when it was decided), strength_db (what the hit
+added above what was sounding) and part (its drum part's name, tactus.drum_parts), both read
+parts.settle_ms after the onset.)");
+    m.attr("drum_parts") = drum_part_names();
     m.def("meter", &meter, arg("vibration"), arg("sample_rate"), arg("actuator") = "voice-coil",
           arg("contact_area_cm2") = Settings()[P::perception_contact_area_cm2],
           R"(The sensation-level meter over time, as `tactus meter -o` writes it: a dict of

@@ -30,8 +30,10 @@ struct AnalyzeOptions {
     PipelineOptions pipeline;
 };
 
-// Writes AnalysisRows as CSV or JSON. How the frames were made heads the output: a comment line
-// atop the CSV, the "tactus" field of the JSON object (its rows in "frames").
+// Writes AnalysisRows as CSV or JSON, the part column as the part's name. How the frames were
+// made follows the CSV's header as a comment line (after it, so numpy.genfromtxt(names=True)
+// takes the header's names; pandas.read_csv(comment="#") skips it too), and is the JSON object's
+// "tactus" field (its rows in "frames").
 class RowWriter {
   public:
     RowWriter(std::ostream& out, bool json, const RenderInfo& how) : out_(out), json_(json) {
@@ -43,21 +45,31 @@ class RowWriter {
                                                  {"actuator", how.actuator}};
             out_ << "{\"tactus\": " << info.dump() << ",\n\"frames\": [\n";
         } else {
-            out_ << "# " << how.comment() << '\n';
             for (size_t i = 0; i < AnalysisRows::kColumns.size(); ++i)
                 out_ << (i ? "," : "") << AnalysisRows::kColumns[i];
-            out_ << '\n';
+            out_ << "\n# " << how.comment() << '\n';
         }
     }
     void write(const AnalysisRows::Row& values) {
+        const std::string_view part = name_of(AnalysisRows::part_of(values));
         if (json_) {
             nlohmann::ordered_json row;
-            for (size_t i = 0; i < values.size(); ++i)
-                row[std::string(AnalysisRows::kColumns[i])] = values[i];
+            for (size_t i = 0; i < values.size(); ++i) {
+                const std::string name(AnalysisRows::kColumns[i]);
+                if (i == AnalysisRows::kPartColumn)
+                    row[name] = part;
+                else
+                    row[name] = values[i];
+            }
             out_ << (rows_ ? ",\n" : "") << row.dump();
         } else {
-            for (size_t i = 0; i < values.size(); ++i)
-                out_ << (i ? "," : "") << fmt::format("{:.6g}", values[i]);
+            for (size_t i = 0; i < values.size(); ++i) {
+                if (i) out_ << ',';
+                if (i == AnalysisRows::kPartColumn)
+                    out_ << part;
+                else
+                    out_ << fmt::format("{:.6g}", values[i]);
+            }
             out_ << '\n';
         }
         ++rows_;

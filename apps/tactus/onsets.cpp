@@ -5,12 +5,11 @@
 // (analysis/hit_analysis.hpp).
 #include <fmt/format.h>
 
-#include <optional>
-
 #include "batch_plan.hpp"
 #include "commands.hpp"
 #include "common.hpp"
 #include "pipeline_options.hpp"
+#include "tactus/engine/onset_decisions.hpp"
 #include "tactus/io/text_output.hpp"
 
 namespace tactus::cli {
@@ -33,29 +32,18 @@ void onsets(const OnsetsOptions& o) {
     Analyzer analyzer;
     double sample_rate_hz = 0;
     Progress progress("onsets");
-    std::optional<Features> pending;  // an onset whose part is not decided yet
-    const auto print = [&](const Features& onset, const Features& decided) {
+    OnsetDecisions decisions;
+    const auto print = [&](const DecidedOnset& onset) {
         out << fmt::format("{:.6f} {:.6f} {:.2f} {}\n", onset.onset_sample / sample_rate_hz,
-                           onset.frame_end_sample / sample_rate_hz, decided.hit_strength_db,
-                           name_of(decided.part));
+                           onset.decided_sample / sample_rate_hz, onset.strength_db,
+                           name_of(onset.part));
     };
-    FeatureSet spectrum = FeatureSet::none();
-    spectrum.spectrum = true;
     analyse_file(
-        o.input, analyzer, settings, spectrum,
-        [&](const Features& f) {
-            if (f.onset) {
-                if (pending) print(*pending, *pending);  // the next onset came first
-                pending = f;
-            }
-            if (f.part_decided && pending) {
-                print(*pending, f);
-                pending.reset();
-            }
-        },
+        o.input, analyzer, settings, OnsetDecisions::reads(),
+        [&](const Features& f) { decisions.add(f, print); },
         with_progress(progress,
                       {.on_start = [&](double rate_hz, int) { sample_rate_hz = rate_hz; }}));
-    if (pending) print(*pending, *pending);  // the input ended first
+    decisions.finish(print);
     output.commit();
 }
 
@@ -63,8 +51,8 @@ void onsets(const OnsetsOptions& o) {
 
 void add_onsets(CLI::App& app) {
     auto options = std::make_shared<OnsetsOptions>();
-    CLI::App* command =
-        app.add_subcommand("onsets", "print one onset per line: onset_s decided_s strength_db part");
+    CLI::App* command = app.add_subcommand(
+        "onsets", "print one onset per line: onset_s decided_s strength_db part");
     options->batch.add_to(*command, "file to write, one input (default: stdout)", ".onsets.txt");
     options->pipeline.add_to(*command);
     command->callback([options] { for_each_input(*options, ".onsets.txt", "onsets", onsets); });

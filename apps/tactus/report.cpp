@@ -148,7 +148,7 @@ void report(const ReportOptions& o) {
         data.summary.emplace_back(fmt::format("{} ({})", c.name, c.sensation),
                                   channel_text(summary.channels[static_cast<int>(c.channel)]));
     data.summary.emplace_back("combined", channel_text(summary.combined));
-    for (const auto& onset : track.onsets) data.onsets_s.push_back(onset.time_s);
+    for (const auto& onset : track.onsets) data.onsets.push_back({onset.time_s, onset.part});
 
     std::vector<std::vector<double>> felt;
     for (size_t i = 0; i < track.intensity.size(); ++i)

@@ -21,8 +21,6 @@ struct FrameOutput {
     std::vector<std::string_view> columns;
 };
 
-constexpr std::string_view kOnsetColumn = "onset";
-
 const std::vector<FrameOutput>& frame_outputs() {
     static const std::vector<FrameOutput> outputs = {
         {"loudness", "Loudness (K-weighted, short window)", "dB", {"loudness_db"}},
@@ -40,8 +38,7 @@ const std::vector<FrameOutput>& frame_outputs() {
 }
 
 Column column(std::string_view name) {
-    const auto& columns = AnalysisRows::kColumns;
-    return static_cast<Column>(std::find(columns.begin(), columns.end(), name) - columns.begin());
+    return AnalysisRows::column(name);
 }
 
 const ParamSpec* spec_named(const std::string& identifier) {
@@ -132,10 +129,11 @@ Vamp::Plugin::OutputList TactusPlugin::getOutputDescriptors() const {
     onsets.name = "Onsets";
     onsets.description =
         "Onsets as `tactus onsets` prints them: at the estimated start, with the time it was "
-        "decided (s) and the onset detection function's value";
+        "decided (s) and the hit's strength (dB), labelled with its drum part (kick, snare, hat, "
+        "other)";
     onsets.hasFixedBinCount = true;
     onsets.binCount = 2;
-    onsets.binNames = {"decided_s", "strength"};
+    onsets.binNames = {"decided_s", "strength_db"};
     onsets.sampleType = OutputDescriptor::VariableSampleRate;
     onsets.sampleRate = static_cast<float>(m_inputSampleRate / hop);
     list.push_back(onsets);
@@ -176,9 +174,10 @@ void TactusPlugin::start() {
     engine_ = std::make_unique<Engine>(settings_);
     engine_->set_actuator(std::nullopt);
     engine_->enable_frame_queue();
-    rows_ =
-        std::make_unique<AnalysisRows>(*engine_, load_actuator(resolve_actuator(kDefaultActuator)),
-                                       [this](const AnalysisRows::Row& row) { add_row(row); });
+    rows_ = std::make_unique<AnalysisRows>(
+        *engine_, load_actuator(resolve_actuator(kDefaultActuator)),
+        [this](const AnalysisRows::Row& row) { add_row(row); },
+        [this](const DecidedOnset& onset) { add_onset(onset); });
     // Blocks of up to kMaxBlock: the frame queue holds every frame of one.
     const int max_block = static_cast<int>(std::min<size_t>(block_size_, Engine::kMaxBlock));
     engine_->prepare({.sample_rate_hz = m_inputSampleRate,
@@ -192,16 +191,19 @@ void TactusPlugin::reset() {
     if (engine_) start();
 }
 
+// An onset at its estimated start, labelled with its part, as `tactus onsets` prints it.
+void TactusPlugin::add_onset(const DecidedOnset& onset) {
+    Feature f;
+    f.hasTimestamp = true;
+    f.timestamp = at_seconds(static_cast<double>(onset.onset_sample) / m_inputSampleRate);
+    f.values = {static_cast<float>(static_cast<double>(onset.decided_sample) / m_inputSampleRate),
+                static_cast<float>(onset.strength_db)};
+    f.label = std::string(name_of(onset.part));
+    pending_[0].push_back(f);
+}
+
 void TactusPlugin::add_row(const AnalysisRows::Row& row) {
     const Vamp::RealTime time = at_seconds(row[column("time_s")]);
-    if (row[column(kOnsetColumn)] != 0) {
-        Feature onset;
-        onset.hasTimestamp = true;
-        onset.timestamp = at_seconds(row[column("onset_time_s")]);
-        onset.values = {static_cast<float>(row[column("time_s")]),
-                        static_cast<float>(row[column("onset_odf")])};
-        pending_[0].push_back(onset);
-    }
     int output = 1;
     for (const FrameOutput& o : frame_outputs()) {
         Feature f;

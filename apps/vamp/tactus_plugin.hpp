@@ -53,6 +53,7 @@ class TactusPlugin : public Vamp::Plugin {
     static constexpr size_t kMaxChannels = 64;
     void start();  // a new engine for the settings, prepared
     void add_row(const AnalysisRows::Row& row);
+    void add_onset(const DecidedOnset& onset);
 
     Settings settings_;
     std::string program_;

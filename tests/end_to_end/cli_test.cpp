@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -89,13 +90,43 @@ TEST_F(Cli, RenderWritesFloatWavWithChannelsAtInputRate) {
 TEST_F(Cli, AnalyzeCsvAndJson) {
     const Result csv = run("analyze " + kAmen);
     ASSERT_EQ(csv.exit_code, 0) << csv.err;
-    // How it was made, as a comment line, then the header.
-    EXPECT_EQ(
-        csv.out.rfind("# tactus=" TACTUS_VERSION "; source=loop_amen_full.flac; preset=tfd; "
-                      "actuator=voice-coil\ntime_s,loudness_db,brightness_hz,noisiness,pitch_hz",
-                      0),
-        0u)
+    // The header, then how it was made as a comment line (so numpy.genfromtxt(names=True)
+    // reads the header: apps/python/tests/test_render.py).
+    EXPECT_EQ(csv.out.rfind("time_s,loudness_db,brightness_hz,noisiness,pitch_hz,", 0), 0u)
         << csv.out.substr(0, 200);
+    EXPECT_NE(csv.out.find(",onset_time_s,hit_db,hit_brightness_hz,part,part_decided,"
+                           "hit_strength_db,frequency_hz,"),
+              std::string::npos);
+    EXPECT_NE(csv.out.find("\n# tactus=" TACTUS_VERSION "; source=loop_amen_full.flac; "
+                           "preset=tfd; actuator=voice-coil\n"),
+              std::string::npos)
+        << csv.out.substr(0, 400);
+    // Every row names its part; the parts decided are those `tactus onsets` prints, in order
+    // (which ends with one more when the input ends before the last onset's part is decided).
+    std::istringstream lines(csv.out);
+    std::string header, line, decided;
+    std::getline(lines, header);
+    const size_t part = tactus::test::csv_column(header, "part");
+    const size_t part_decided = tactus::test::csv_column(header, "part_decided");
+    while (std::getline(lines, line)) {
+        if (line.starts_with("#")) continue;
+        std::vector<std::string> cells;
+        std::istringstream s(line);
+        for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
+        ASSERT_GT(cells.size(), part_decided);
+        EXPECT_TRUE(cells[part] == "kick" || cells[part] == "snare" || cells[part] == "hat" ||
+                    cells[part] == "other")
+            << line;
+        if (cells[part_decided] == "1") decided += cells[part] + " ";
+    }
+    const Result onsets = run("onsets " + kAmen);
+    std::string printed;
+    std::istringstream onset_lines(onsets.out);
+    for (std::string l; std::getline(onset_lines, l);) printed += l.substr(l.rfind(' ') + 1) + " ";
+    EXPECT_TRUE(printed.starts_with(decided)) << decided << "\n" << printed;
+    EXPECT_LE(std::count(printed.begin(), printed.end(), ' ') -
+                  std::count(decided.begin(), decided.end(), ' '),
+              1);
     const auto rows = std::count(csv.out.begin(), csv.out.end(), '\n') - 2;
     const double seconds = static_cast<double>(info_of(kAmen).frames) / info_of(kAmen).samplerate;
     const double hop_s = tactus::Settings{}[tactus::P::analysis_hop_ms] * 1e-3;
@@ -112,23 +143,33 @@ TEST_F(Cli, AnalyzeCsvAndJson) {
         << text.substr(0, 200);
     EXPECT_NE(text.find("\"frames\": [\n{\"time_s\""), std::string::npos);
     EXPECT_NE(text.find("\"frequency_hz\""), std::string::npos);
+    EXPECT_NE(text.find("\"part\":\"hat\""), std::string::npos);  // the part by name
     EXPECT_EQ(text.substr(text.size() - 3), "]}\n");
 }
 
-TEST_F(Cli, OnsetsAreAscendingTriples) {
+TEST_F(Cli, OnsetsAreAscendingWithTheirPart) {
     const Result r = run("onsets " + kAmen);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     std::istringstream lines(r.out);
     double onset, decided, strength, previous = -1;
+    std::string part;
+    std::set<std::string> parts;
     int count = 0;
-    while (lines >> onset >> decided >> strength) {
+    while (lines >> onset >> decided >> strength >> part) {
         EXPECT_GE(onset, previous);
         EXPECT_GE(decided, onset);
         EXPECT_LT(decided - onset, 0.05);
+        EXPECT_LT(strength, 0.0);
+        EXPECT_GT(strength, -80.0);
+        parts.insert(part);
         previous = onset;
         ++count;
     }
+    EXPECT_TRUE(lines.eof()) << "every line: onset_s decided_s strength_db part";
     EXPECT_GT(count, 20);
+    EXPECT_GE(parts.size(), 2u);
+    for (const auto& p : parts)
+        EXPECT_TRUE(p == "kick" || p == "snare" || p == "hat" || p == "other") << p;
 }
 
 TEST_F(Cli, BadInputFailsCleanlyAndWritesNothing) {
@@ -468,8 +509,8 @@ TEST_F(Cli, AnalyzeSensationColumnsAgreeWithTheMeter) {
     ASSERT_EQ(csv.exit_code, 0) << csv.err;
     std::istringstream rows(csv.out);
     std::string comment, header, line;
-    std::getline(rows, comment);
     std::getline(rows, header);
+    std::getline(rows, comment);
     EXPECT_NE(header.find(",P_sl_db,NPI_sl_db,NPII_sl_db,NPIII_sl_db,combined_sl_db"),
               std::string::npos)
         << header;

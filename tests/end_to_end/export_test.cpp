@@ -2,7 +2,9 @@
 // against its format's specification (structure and limits) and for fidelity: the envelope it
 // plays correlates >= 0.95 with the engine's felt envelope (run here in process, through
 // run_file and its tail), and every onset the engine found is a transient or an emphasis
-// within 5 ms.
+// within 5 ms, with the sharpness of the carrier when its part was decided; each onset's drum
+// part and strength are those `tactus onsets` prints (AHAP: in its Metadata; Android: beside
+// the onsets).
 #include <gtest/gtest.h>
 #include <sndfile.h>
 
@@ -11,8 +13,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <numeric>
+#include <sstream>
 
 #include "support/run_cli.hpp"
+#include "tactus/engine/onset_decisions.hpp"
 #include "tactus/export/felt_envelope.hpp"
 #include "tactus/export/haptic_formats.hpp"
 #include "tactus/io/audio_reader.hpp"
@@ -43,9 +47,27 @@ const Sound kSounds[] = {{"amen", "/usr/share/sonic-pi/samples/loop_amen_full.fl
 struct EngineRun {
     std::vector<double> felt;
     std::vector<double> onsets_s;
+    std::vector<double> sharpness;              // per onset: its carrier when its part was decided
+    std::vector<double> onset_frame_sharpness;  // ... and on its own frame
     std::vector<float> vibration;
     double sample_rate_hz = 0;
 };
+
+// `tactus onsets`' lines: onset_s decided_s strength_db part. `decided`: false when the input
+// ended before the part could be decided (then printed as it stood on the onset's frame).
+struct PrintedOnset {
+    double onset_s = 0, strength_db = 0;
+    std::string part;
+    bool decided = true;
+};
+std::vector<PrintedOnset> printed_onsets(const std::string& text) {
+    std::vector<PrintedOnset> onsets;
+    std::istringstream lines(text);
+    double decided_s = 0;
+    for (PrintedOnset o; lines >> o.onset_s >> decided_s >> o.strength_db >> o.part;)
+        onsets.push_back(o);
+    return onsets;
+}
 
 EngineRun run_engine(const fs::path& input) {
     tactus::Settings settings;
@@ -55,11 +77,18 @@ EngineRun run_engine(const fs::path& input) {
     std::vector<std::pair<int64_t, double>> carrier;
     EngineRun run;
     std::vector<float> drive;
+    tactus::OnsetDecisions decisions;
     const auto on_output = [&](const float* const* v, int n) {
         for (tactus::AnalysisFrame f; engine.pop_frame(f);) {
             carrier.emplace_back(f.control.sample, f.control.frequency_hz);
-            if (f.features.onset)
+            if (f.features.onset) {
                 run.onsets_s.push_back(static_cast<double>(f.features.onset_sample));
+                run.onset_frame_sharpness.push_back(tactus::sharpness_of(f.control.frequency_hz));
+            }
+            decisions.add(f.features, [&](const tactus::DecidedOnset& o) {
+                EXPECT_TRUE(o.part_decided);
+                run.sharpness.push_back(tactus::sharpness_of(f.control.frequency_hz));
+            });
         }
         drive.insert(drive.end(), v[0], v[0] + n);
     };
@@ -127,14 +156,46 @@ class Export : public Cli, public ::testing::WithParamInterface<Sound> {
         EXPECT_EQ(r.exit_code, 0) << r.err;
         return out;
     }
+    std::vector<PrintedOnset> onsets() {
+        const auto r = run("onsets " + std::string(GetParam().path));
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        std::vector<PrintedOnset> printed = printed_onsets(r.out);
+        tactus::AudioReader reader{fs::path(GetParam().path)};
+        const double end_s = static_cast<double>(reader.frames()) / reader.sample_rate_hz();
+        tactus::Settings settings;
+        tactus::apply_preset_file(settings, tactus::resolve_preset("tfd"));
+        const double wait_s =
+            1e-3 * (settings[tactus::P::parts_settle_ms] + settings[tactus::P::analysis_hop_ms]);
+        for (PrintedOnset& o : printed) o.decided = o.onset_s + wait_s <= end_s;
+        return printed;
+    }
 };
+
+// Each exported onset's part and strength are the printed onset's at the same time. The export
+// rings the vibration out after the input, and the silence there can decide one more onset near
+// the end that `tactus onsets`, stopping at the last sample, never decides.
+void expect_parts_as_printed(const std::vector<double>& times_s,
+                             const std::vector<std::string>& parts,
+                             const std::vector<double>& strengths_db,
+                             const std::vector<PrintedOnset>& printed, const char* what) {
+    ASSERT_GE(times_s.size(), printed.size()) << what;
+    ASSERT_LE(times_s.size(), printed.size() + 1) << what;
+    ASSERT_EQ(parts.size(), times_s.size()) << what;
+    ASSERT_EQ(strengths_db.size(), times_s.size()) << what;
+    for (size_t i = 0; i < printed.size(); ++i) {
+        EXPECT_NEAR(times_s[i], printed[i].onset_s, 1e-4) << what << " onset " << i;
+        if (!printed[i].decided) continue;  // the export's tail decides it
+        EXPECT_EQ(parts[i], printed[i].part) << what << " onset " << i;
+        EXPECT_NEAR(strengths_db[i], printed[i].strength_db, 0.011) << what << " onset " << i;
+    }
+}
 
 TEST_P(Export, AhapFollowsAppleSpecAndTheFeltEnvelope) {
     const EngineRun engine = run_engine(GetParam().path);
     const Json ahap = read_json(exported(".ahap"));
     EXPECT_EQ(ahap.at("Version").get<double>(), 1.0);
     ASSERT_TRUE(ahap.at("Pattern").is_array());
-    std::vector<double> intensity(engine.felt.size(), 0.0), transients;
+    std::vector<double> intensity(engine.felt.size(), 0.0), transients, sharpness;
     std::vector<std::pair<double, double>> continuous;  // [begin, end]
     int curves = 0;
     for (const Json& item : ahap["Pattern"]) {
@@ -152,6 +213,7 @@ TEST_P(Export, AhapFollowsAppleSpecAndTheFeltEnvelope) {
             const std::string type = e.at("EventType");
             if (type == "HapticTransient") {
                 transients.push_back(t);
+                sharpness.push_back(e.at("EventParameters").at(1).at("ParameterValue"));
             } else {
                 ASSERT_EQ(type, "HapticContinuous");
                 const double d = e.at("EventDuration").get<double>();
@@ -203,6 +265,26 @@ TEST_P(Export, AhapFollowsAppleSpecAndTheFeltEnvelope) {
               << " onsets, correlation with the felt envelope " << r << '\n';
     EXPECT_GE(r, kMinCorrelation);
     expect_every_onset_in(engine.onsets_s, transients, "HapticTransient");
+    // A transient's sharpness: the carrier when its hit's part was decided, not on the onset's
+    // own frame (where the carrier may still glide).
+    ASSERT_EQ(sharpness.size(), engine.sharpness.size());
+    int moved = 0;
+    for (size_t i = 0; i < sharpness.size(); ++i) {
+        EXPECT_NEAR(sharpness[i], engine.sharpness[i], 0.00051) << "transient " << i;
+        moved += std::abs(engine.sharpness[i] - engine.onset_frame_sharpness[i]) > 0.001;
+    }
+    std::cout << GetParam().name << ".ahap: " << moved << " of " << sharpness.size()
+              << " transients sharper or duller than on their onset's frame\n";
+    // Each onset's part and strength, in the Metadata (an event has no field for them).
+    std::vector<double> times, strengths;
+    std::vector<std::string> parts;
+    for (const Json& o : ahap.at("Metadata").at("Onsets")) {
+        times.push_back(o.at("Time"));
+        parts.push_back(o.at("Part"));
+        strengths.push_back(o.at("StrengthDB"));
+    }
+    EXPECT_EQ(times, transients);
+    expect_parts_as_printed(times, parts, strengths, onsets(), "AHAP Metadata");
 }
 
 TEST_P(Export, HapticFollowsMetaSpecAndTheFeltEnvelope) {
@@ -214,7 +296,7 @@ TEST_P(Export, HapticFollowsMetaSpecAndTheFeltEnvelope) {
     const Json& amplitude = envelopes.at("amplitude");
     ASSERT_GE(amplitude.size(), 2u);
     std::vector<std::pair<double, double>> points;
-    std::vector<double> emphases;
+    std::vector<double> emphases, emphasis_frequency;
     double last = 0;
     for (const Json& p : amplitude) {
         const double t = p.at("time").get<double>(), a = p.at("amplitude").get<double>();
@@ -231,6 +313,7 @@ TEST_P(Export, HapticFollowsMetaSpecAndTheFeltEnvelope) {
             EXPECT_GE(ef, 0.0);
             EXPECT_LE(ef, 1.0);
             emphases.push_back(t);
+            emphasis_frequency.push_back(ef);
         }
     }
     const Json& frequency = envelopes.at("frequency");
@@ -250,6 +333,10 @@ TEST_P(Export, HapticFollowsMetaSpecAndTheFeltEnvelope) {
               << emphases.size() << " emphases, correlation " << r << '\n';
     EXPECT_GE(r, kMinCorrelation);
     expect_every_onset_in(engine.onsets_s, emphases, "emphasis");
+    // Its frequency: the carrier when the hit's part was decided (one emphasis per onset here).
+    ASSERT_EQ(emphases.size(), engine.sharpness.size());
+    for (size_t i = 0; i < emphases.size(); ++i)
+        EXPECT_NEAR(emphasis_frequency[i], engine.sharpness[i], 0.00051) << "emphasis " << i;
 }
 
 TEST_P(Export, AndroidWaveformIsReadyForCreateWaveform) {
@@ -272,6 +359,12 @@ TEST_P(Export, AndroidWaveformIsReadyForCreateWaveform) {
     std::cout << GetParam().name << ".android.json: " << timings.size() << " steps, correlation "
               << r << '\n';
     EXPECT_GE(r, kMinCorrelation);
+    std::vector<double> onsets_s;
+    for (const double ms : w.at("onsets_ms").get<std::vector<double>>())
+        onsets_s.push_back(ms / 1e3);
+    expect_parts_as_printed(onsets_s, w.at("onset_parts").get<std::vector<std::string>>(),
+                            w.at("onset_strengths_db").get<std::vector<double>>(), onsets(),
+                            "Android");
 }
 
 // The comments of an Ogg Vorbis file, read from its comment header as the Vorbis I spec lays

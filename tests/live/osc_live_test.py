@@ -2,7 +2,7 @@
 sent with liblo while the file plays changes the actuator output exactly as the same --set does
 offline (`tactus render --set`) from that point on, after its glide and the limiter's release; the
 output up to that point is the render without it. A listener receives the features, the
-vibration program and the onsets at --osc-rate. Bad messages get one line on stderr each and
+vibration program at --osc-rate and each onset once, with its drum part and strength. Bad messages get one line on stderr each and
 change nothing.
 
 usage: osc_live_test.py TACTUS LIVE_TEST_CLIENT SOURCE_DIR"""
@@ -116,4 +116,16 @@ check(np.max(loudness) > -30 and np.min(loudness) < np.max(loudness) - 3,
       "the loudness follows the drums")
 check(len(vibration) == len(features) and all(len(v) == 3 for v in vibration),
       "vibration frequency_hz amplitude with each")
-check(len(onsets) >= 10 and all(len(o) == 2 for o in onsets), "onsets with their strength")
+check(len(onsets) >= 10 and all(len(o) == 3 for o in onsets), "onsets: part strength_db")
+parts = [o[1] for o in onsets]
+check(all(p in ("kick", "snare", "hat", "other") for p in parts), f"drum parts by name: {set(parts)}")
+check(all(-90 < float(o[2]) < 0 for o in onsets), "strengths in dB re full scale")
+# One message per onset, with the parts `tactus onsets` prints for the file (live, the analysis
+# hop grid starts before the file does: a part may differ here and there).
+printed = jack.run([tactus, "onsets", AMEN])
+expected = [line.split()[3] for line in printed.stdout.splitlines()]
+print(f"parts sent    {' '.join(parts)}\nparts printed {' '.join(expected)}")
+check(abs(len(parts) - len(expected)) <= 1, "one message per onset")
+for part in set(parts) | set(expected):
+    check(abs(parts.count(part) - expected.count(part)) <= max(2, 0.1 * expected.count(part)),
+          f"{part}: {parts.count(part)} sent, {expected.count(part)} printed")

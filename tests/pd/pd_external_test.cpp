@@ -9,6 +9,7 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -172,19 +173,41 @@ TEST_F(PdExternal, AMessageMidFileActsAsTheEnginesSetFromItsBlock) {
     EXPECT_FALSE(std::equal(pd[0].begin() + split, pd[0].end(), unchanged.begin() + split));
 }
 
-TEST_F(PdExternal, TheOnsetOutletBangsAtEveryOnsetOfTactusOnsets) {
+// The onset outlet sends `PART STRENGTH_DB` for every onset `tactus onsets` prints, with its part
+// and strength ("onset_s decided_s strength_db part").
+TEST_F(PdExternal, TheOnsetOutletSendsEveryOnsetOfTactusOnsetsWithItsPart) {
     run_pd({});
     const CliResult onsets = run("onsets " + (dir_ / "in.wav").string());
     ASSERT_EQ(onsets.exit_code, 0) << onsets.err;
-    const auto lines = [](const std::string& text, const std::string& prefix) {
-        int count = 0;
-        std::istringstream s(text);
-        for (std::string line; std::getline(s, line);) count += line.starts_with(prefix);
-        return count;
+    struct Onset {
+        std::string part;
+        double strength_db;
     };
-    const int expected = lines(onsets.out, "");
-    EXPECT_GT(expected, 5);
-    EXPECT_EQ(lines(pd_log_, "tactus-onset:"), expected) << pd_log_;
+    std::vector<Onset> expected, sent;
+    std::istringstream printed(onsets.out), log(pd_log_);
+    for (std::string line; std::getline(printed, line);) {
+        std::istringstream fields(line);
+        double onset_s = 0, decided_s = 0;
+        Onset o;
+        fields >> onset_s >> decided_s >> o.strength_db >> o.part;
+        expected.push_back(o);
+    }
+    for (std::string line; std::getline(log, line);) {
+        if (!line.starts_with("tactus-onset: ")) continue;
+        std::istringstream fields(line.substr(14));  // [print]: "tactus-onset: kick -12.5"
+        Onset o;
+        fields >> o.part >> o.strength_db;
+        sent.push_back(o);
+    }
+    EXPECT_GT(expected.size(), 5u);
+    ASSERT_EQ(sent.size(), expected.size()) << pd_log_;
+    std::set<std::string> parts;
+    for (size_t i = 0; i < sent.size(); ++i) {
+        EXPECT_EQ(sent[i].part, expected[i].part) << "onset " << i;
+        EXPECT_NEAR(sent[i].strength_db, expected[i].strength_db, 0.006) << "onset " << i;
+        parts.insert(sent[i].part);
+    }
+    EXPECT_GE(parts.size(), 2u) << "the Amen break's kick and snare at least";
 }
 
 TEST_F(PdExternal, GainTrimsOneOutlet) {

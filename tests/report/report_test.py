@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """tactus report in a real browser: headless Chromium loads the page of the Amen break and of a
 19 ms tick with no script error, the page says it has drawn every plot, and a screenshot shows
-drawn pixels (the series' colours) in each plot area that has values. The page is one file with
+drawn pixels (the series' colours) in each plot area that has values. The onsets are drawn in
+their drum part's colour, with a legend naming the four parts, and the waveform shows every onset
+(the Amen break's in two parts at least). The page is one file with
 nothing fetched: no external script, style, link or image; the sound and the vibration are WAV
 data URIs.
 
@@ -40,12 +42,23 @@ def chromium(profile, *arguments):
     return subprocess.run(command, capture_output=True, text=True, timeout=120)
 
 
-def coloured(pixel):
-    """A series' colour: saturated, and not the onset lines' red drawn under the series."""
+def onset_line(pixel, colours):
+    """A pixel of an onset line: one of the parts' colours blended with the white under it."""
+    q = [255 - v for v in pixel[:3]]
+    for colour in colours:
+        d = [255 - int(colour[i:i + 2], 16) for i in (1, 3, 5)]
+        t = sum(a * b for a, b in zip(q, d)) / max(1, sum(b * b for b in d))
+        if 0 < t <= 1.2 and all(abs(a - t * b) <= 20 for a, b in zip(q, d)):
+            return True
+    return False
+
+
+def coloured(pixel, colours):
+    """A series' colour: saturated, and not an onset line drawn under the series."""
     r, g, b = pixel[:3]
     if max(r, g, b) - min(r, g, b) < 60:
         return False  # white, greys, black: background, grid, axes, text
-    return not (r > g + 50 and r > b + 50)
+    return not onset_line(pixel, colours)
 
 
 with tempfile.TemporaryDirectory(prefix="tactus-report-") as work:
@@ -63,6 +76,13 @@ with tempfile.TemporaryDirectory(prefix="tactus-report-") as work:
             check(wav[:4] == b"RIFF" and wav[8:12] == b"WAVE" and len(wav) > 1000,
                   f"{name}: the {label} player holds no WAV")
         check(text.count("<audio controls") == 2, f"{name}: two players expected")
+        legend = re.findall(r'<span class="onset-part" data-part="(\w+)" data-colour="(#[0-9a-f]{6})"',
+                            text)
+        check([part for part, _ in legend] == ["kick", "snare", "hat", "other"],
+              f"{name}: the onset legend names the four drum parts: {legend}")
+        colours = [colour for _, colour in legend]
+        onsets = re.search(r"<tr><th>onsets</th><td>(\d+)</td></tr>", text)
+        check(onsets is not None, f"{name}: no onset count in the summary")
 
         profile = os.path.join(work, "profile-" + name)
         dom = chromium(profile, "--dump-dom", "file://" + page)
@@ -71,12 +91,23 @@ with tempfile.TemporaryDirectory(prefix="tactus-report-") as work:
         errors = re.search(r'<div id="errors">(.*?)</div>', dom.stdout, re.S)
         check(errors is not None and errors.group(1).strip() == "",
               f"{name}: script errors: {errors.group(1) if errors else 'no #errors element'}")
-        status = re.search(r'<div id="status" data-plots="([^"]*)">drawn (\d+) plots</div>', dom.stdout)
+        status = re.search(r'<div id="status" data-plots="([^"]*)"[^>]*>drawn (\d+) plots</div>',
+                           dom.stdout)
         check(status is not None, f"{name}: no drawn status")
         if status is None:
             continue
         areas = json.loads(html.unescape(status.group(1)))
         check(len(areas) == 9 == int(status.group(2)), f"{name}: {len(areas)} plots drawn, 9 expected")
+        shown = re.search(r'data-onsets="([^"]*)"', dom.stdout)
+        check(shown is not None, f"{name}: no onset lines counted")
+        if shown and onsets:
+            per_part = json.loads(html.unescape(shown.group(1)))
+            print(f"{name}: onset lines in the waveform by part: {per_part}")
+            check(sum(per_part.values()) == int(onsets.group(1)) > 0,
+                  f"{name}: the waveform shows {per_part}, the summary {onsets.group(1)} onsets")
+            if name == "amen":
+                check(sum(1 for n in per_part.values() if n > 0) >= 2,
+                      f"{name}: the Amen break's onsets in one part only: {per_part}")
 
         shutil.rmtree(profile, ignore_errors=True)
         shot = os.path.join(work, name + ".png")
@@ -91,7 +122,7 @@ with tempfile.TemporaryDirectory(prefix="tactus-report-") as work:
             x, y, w, h = area["x"], area["y"], area["w"], area["h"]
             check(y + h <= image.height, f"{name}: plot {area['id']} is below the screenshot")
             box = image.crop((x, y, x + w, y + h))
-            drawn = sum(1 for p in box.getdata() if coloured(p))
+            drawn = sum(1 for p in box.getdata() if coloured(p, colours))
             print(f"{name}: {area['id']:<11} {area['values']:>5} values, {drawn:>6} drawn pixels "
                   f"in {w}x{h}")
             if area["values"] > 0:

@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -44,12 +46,26 @@ class Cli : public TempDirTest {
 };
 
 // The cells of one CSV line (analyze's or meter's output, all numeric) as numbers.
+// A CSV line's cells as numbers; a text cell (analyze's part) is NaN.
 inline std::vector<double> csv_numbers(const std::string& line) {
     std::vector<double> v;
     std::istringstream s(line);
     std::string cell;
-    while (std::getline(s, cell, ',')) v.push_back(std::stod(cell));
+    while (std::getline(s, cell, ',')) {
+        char* end = nullptr;
+        const double x = std::strtod(cell.c_str(), &end);
+        v.push_back(end != cell.c_str() && *end == '\0' ? x : std::nan(""));
+    }
     return v;
+}
+
+// A CSV header's column index by name (the header's cell count: none).
+inline size_t csv_column(const std::string& header, const std::string& name) {
+    std::istringstream s(header);
+    size_t i = 0;
+    for (std::string cell; std::getline(s, cell, ','); ++i)
+        if (cell == name) return i;
+    return i;
 }
 
 }  // namespace tactus::test

@@ -15,9 +15,9 @@ underscores, as keyword arguments and Engine attributes (envelope_decay_ms=120).
 """
 
 from ._tactus import (Engine, __version__, analyze, channels, combined_sensation_db,
-                      detecting_channel, detection_threshold_db, meter, onsets, params,
+                      detecting_channel, detection_threshold_db, drum_parts, meter, onsets, params,
                       presets, read, render, sensation_level_db, threshold_db, write)
 
 __all__ = ["Engine", "analyze", "channels", "combined_sensation_db", "detecting_channel",
-           "detection_threshold_db", "meter", "onsets", "params", "presets", "read", "render",
-           "sensation_level_db", "threshold_db", "write", "__version__"]
+           "detection_threshold_db", "drum_parts", "meter", "onsets", "params", "presets", "read",
+           "render", "sensation_level_db", "threshold_db", "write", "__version__"]

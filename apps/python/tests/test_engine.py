@@ -129,9 +129,10 @@ def test_frames_are_analyzes_columns(amen_audio):
     in_blocks(engine, x, [512])
     frames = engine.frames()
     columns = tactus.analyze(x, rate)
-    assert len(frames) == 19
+    assert len(frames) == 24
     for name, values in frames.items():
         assert np.array_equal(values, columns[name]), name
+    assert set(frames["part"]) <= set(tactus.drum_parts)
     assert len(engine.frames()["time_s"]) == 0, "each frame once"
 
 

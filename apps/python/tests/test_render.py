@@ -66,9 +66,36 @@ def test_analyze_equals_the_command_lines_json(cli, amen, tmp_path):
     assert list(columns) == list(rows[0])
     assert len(columns["time_s"]) == len(rows) > 2000
     for name, values in columns.items():
-        assert values.dtype == np.float64
+        assert values.dtype == (np.dtype("<U5") if name == "part" else np.float64), name
         assert np.array_equal(values, [row[name] for row in rows]), name
     assert columns["onset"].sum() > 40
+    assert tactus.drum_parts == ("kick", "snare", "hat", "other")
+    decided = columns["part"][columns["part_decided"] == 1]
+    # Each onset's part decided once (the last, near the end, may not be before the input ends).
+    assert columns["onset"].sum() - 1 <= len(decided) <= columns["onset"].sum()
+    assert len(set(decided)) >= 2
+
+
+def test_analyze_csv_reads_by_column_name_in_numpy_and_pandas(cli, amen, tmp_path):
+    """The CSV mixes numbers with one text column (part): both readers take it by name, with
+    the values tactus.analyze() gives (printed to 6 significant digits)."""
+    import pandas
+    x, rate = tactus.read(amen)
+    columns = tactus.analyze(x, rate)
+    run(cli, "analyze", amen, "-o", tmp_path / "a.csv")
+    table = np.genfromtxt(tmp_path / "a.csv", names=True, dtype=None, encoding=None,
+                          comments="#", delimiter=",")
+    frame = pandas.read_csv(tmp_path / "a.csv", comment="#")
+    assert list(table.dtype.names) == list(frame.columns) == list(columns)
+    assert len(table) == len(frame) == len(columns["time_s"])
+    for name, values in columns.items():
+        for read in (table[name], frame[name].to_numpy()):
+            if name == "part":
+                assert np.array_equal(read, values), name
+            else:
+                assert np.issubdtype(read.dtype, np.number), name  # int where all are whole
+                assert np.allclose(read, values, rtol=1e-5, atol=1e-9), name
+    assert frame["part"].isin(tactus.drum_parts).all()
     assert columns["P_sl_db"].max() > 10 and columns["NPI_sl_db"].max() > 3
 
 
@@ -77,10 +104,13 @@ def test_onsets_equal_the_command_line(cli, amen, stereo_48k):
         x, rate = tactus.read(path)
         found = tactus.onsets(x, rate)
         printed = run(cli, "onsets", path).splitlines()
+        assert list(found) == ["onset_s", "decided_s", "strength_db", "part"]
         assert len(printed) == len(found["onset_s"]) > 40
-        for line, onset, decided, strength in zip(printed, found["onset_s"], found["decided_s"],
-                                                  found["strength"]):
-            assert line == f"{onset:.6f} {decided:.6f} {float(f'{strength:.4g}'):.4g}"
+        for line, onset, decided, strength, part in zip(
+                printed, found["onset_s"], found["decided_s"], found["strength_db"],
+                found["part"]):
+            assert line == f"{onset:.6f} {decided:.6f} {strength:.2f} {part}"
+        assert len(set(found["part"])) >= 2
 
 
 def test_meter_equals_the_command_line(cli, amen, tmp_path):

@@ -24,13 +24,14 @@ void FrameMonitor::run() {
     auto next_send = Clock::now();
     AnalysisFrame frame, latest;
     bool fresh = false;
+    OnsetDecisions decisions;  // an onset is sent once its part is decided
+    const auto send_onset = [this](const DecidedOnset& onset) { sender_->send_onset(onset); };
     while (!stop_) {
         while (engine_.pop_frame(frame)) {
             latest = frame;
             fresh = true;
-            if (!frame.features.onset) continue;
-            onsets_.fetch_add(1, std::memory_order_relaxed);
-            if (sender_) sender_->send_onset(frame);
+            if (frame.features.onset) onsets_.fetch_add(1, std::memory_order_relaxed);
+            if (sender_) decisions.add(frame.features, send_onset);
         }
         if (sender_ && fresh && Clock::now() >= next_send) {
             sender_->send_state(latest);

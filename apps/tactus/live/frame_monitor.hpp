@@ -1,6 +1,6 @@
 // The engine's one frame reader in `tactus live`: a thread that takes every analysis frame off
 // the engine's queue (Engine::pop_frame), counts onsets for the status line and sends features,
-// onsets and the vibration program over OSC at their rate.
+// onsets (each with its drum part, once decided) and the vibration program over OSC at their rate.
 #pragma once
 
 #include <atomic>

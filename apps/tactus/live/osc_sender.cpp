@@ -25,8 +25,10 @@ void OscSender::send_state(const AnalysisFrame& frame) {
             static_cast<float>(frame.control.amplitude));
 }
 
-void OscSender::send_onset(const AnalysisFrame& frame) {
-    lo_send(address_, "/tactus/onset", "f", static_cast<float>(frame.features.onset_odf));
+// The part's name is a constant, null-terminated literal (kDrumPartNames): nothing is built.
+void OscSender::send_onset(const DecidedOnset& onset) {
+    lo_send(address_, "/tactus/onset", "sf", name_of(onset.part).data(),
+            static_cast<float>(onset.strength_db));
 }
 
 }  // namespace tactus::live

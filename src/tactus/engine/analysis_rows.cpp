@@ -7,6 +7,7 @@
 namespace tactus {
 static_assert(AnalysisRows::kColumns.size() - AnalysisRows::kFrameColumns ==
               perception::kChannels.size() + 1);  // and the combined level
+static_assert(AnalysisRows::kPartColumn < AnalysisRows::kFrameColumns);
 
 AnalysisRows::Row AnalysisRows::row_of(const AnalysisFrame& frame, double sample_rate_hz) {
     const Features& f = frame.features;
@@ -20,6 +21,11 @@ AnalysisRows::Row AnalysisRows::row_of(const AnalysisFrame& frame, double sample
             f.onset_odf,
             f.onset ? 1.0 : 0.0,
             f.onset ? f.onset_sample / sample_rate_hz : 0.0,
+            f.hit_db,
+            f.hit_brightness_hz,
+            static_cast<double>(f.part),
+            f.part_decided ? 1.0 : 0.0,
+            f.hit_strength_db,
             c.frequency_hz,
             c.amplitude,
             c.square_mix,
@@ -33,17 +39,23 @@ AnalysisRows::Row AnalysisRows::row_of(const AnalysisFrame& frame, double sample
 }
 
 AnalysisRows::AnalysisRows(const Engine& engine, ActuatorProfile actuator,
-                           std::function<void(const Row&)> on_row)
-    : engine_(engine), actuator_(std::move(actuator)), on_row_(std::move(on_row)) {}
+                           std::function<void(const Row&)> on_row,
+                           std::function<void(const DecidedOnset&)> on_onset)
+    : engine_(engine),
+      actuator_(std::move(actuator)),
+      on_row_(std::move(on_row)),
+      on_onset_(std::move(on_onset)) {}
 
 void AnalysisRows::start(double sample_rate_hz) {
     meter_.prepare(sample_rate_hz, actuator_, engine_.settings()[P::perception_contact_area_cm2]);
+    decisions_.reset();
 }
 
 void AnalysisRows::take_frames(Engine& engine) {
     for (AnalysisFrame frame; engine.pop_frame(frame);) {
         pending_.push_back(row_of(frame, engine_.sample_rate_hz()));
         onsets_ += frame.features.onset;
+        if (on_onset_) decisions_.add(frame.features, on_onset_);
     }
 }
 
@@ -61,6 +73,7 @@ void AnalysisRows::finish() {
     const std::vector<float> silence(static_cast<size_t>(step), 0.0f);
     if (!pending_.empty()) vibration(silence.data(), step);
     write_rows(true);
+    if (on_onset_) decisions_.finish(on_onset_);
 }
 
 // Each row carries the sensation levels at its own time, interpolated between the 10 ms readings

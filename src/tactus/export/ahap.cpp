@@ -77,11 +77,19 @@ std::string ahap_text(const HapticTrack& track) {
         add_curves(pattern, "HapticIntensityControl", window(intensity, begin, end));
         add_curves(pattern, "HapticSharpnessControl", window(sharpness, begin, end));
     }
+    // An event has no field of its own for what the hit was: each onset's drum part and strength
+    // go in the Metadata (which Core Haptics does not read), at its transient's time.
+    Json parts = Json::array();
+    for (const HapticOnset& onset : track.onsets)
+        parts.push_back({{"Time", time_value(onset.time_s)},
+                         {"Part", name_of(onset.part)},
+                         {"StrengthDB", decibels(onset.strength_db)}});
     const Json ahap = {{"Version", 1.0},
                        {"Metadata",
                         {{"Project", track.info.source},
                          {"Created", "tactus " + track.info.version},
-                         {"Description", track.info.describe()}}},
+                         {"Description", track.info.describe()},
+                         {"Onsets", parts}}},
                        {"Pattern", pattern}};
     return ahap.dump(1) + "\n";
 }

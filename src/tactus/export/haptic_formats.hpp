@@ -1,7 +1,9 @@
 // Writers of the haptic file formats the platforms play, each from a HapticTrack, each after
 // its published specification:
 //   .ahap          Apple Core Haptics, "Representing haptic patterns in AHAP files": Version,
-//                  Metadata, Pattern of HapticTransient events at the onsets and HapticContinuous
+//                  Metadata (with each onset's part and strength: Onsets, a list; Core Haptics
+//                  ignores keys it does not know), Pattern of HapticTransient events at the
+//                  onsets and HapticContinuous
 //                  events (at most kAhapMaxEventS each) whose HapticIntensityControl and
 //                  HapticSharpnessControl ParameterCurves (at most kAhapMaxCurvePoints points
 //                  each: longer curves fail on devices) follow the felt envelope.
@@ -11,7 +13,8 @@
 //                  non-decreasing, at least two breakpoints, the frequency envelope ending with
 //                  the amplitude's.
 //   .android.json  Android VibrationEffect.createWaveform(long[] timings, int[] amplitudes,
-//                  int repeat) (API 26): steps in ms, amplitudes 0 (off) or 1-255.
+//                  int repeat) (API 26): steps in ms, amplitudes 0 (off) or 1-255; the onsets
+//                  with their parts and strengths beside them.
 // Values are rounded to what a device resolves (0.1 ms, 1e-3 of full scale).
 #pragma once
 

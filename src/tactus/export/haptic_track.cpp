@@ -58,7 +58,10 @@ HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engi
     engine.enable_frame_queue();
     std::optional<FeltEnvelope> envelope;
     CarrierTrack carrier;
-    std::vector<std::pair<int64_t, double>> onsets;  // input sample, carrier
+    // Each onset with the carrier when its part was decided (or, undecided, on its own frame).
+    std::vector<std::pair<DecidedOnset, double>> onsets;
+    OnsetDecisions decisions;
+    double onset_carrier_hz = 0;  // the carrier on the frame of the onset waiting for its part
     int audio_channels = 0;
     int64_t latency = 0, skipped = 0, aligned = 0;
     std::deque<float> audio;  // interleaved input frames the vibration has not reached yet
@@ -68,8 +71,11 @@ HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engi
         for (AnalysisFrame frame; engine.pop_frame(frame);) {
             if (frames) frames(frame);
             carrier.add(frame.control.sample, frame.control.frequency_hz);
-            if (frame.features.onset)
-                onsets.emplace_back(frame.features.onset_sample, frame.control.frequency_hz);
+            decisions.add(frame.features, [&](const DecidedOnset& onset) {
+                onsets.emplace_back(
+                    onset, onset.part_decided ? frame.control.frequency_hz : onset_carrier_hz);
+            });
+            if (frame.features.onset) onset_carrier_hz = frame.control.frequency_hz;
         }
     };
     // Vibration sample k (after the latency) lines up with input sample k.
@@ -122,6 +128,8 @@ HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engi
         callbacks);
     summary.tail_frames = run_tail(engine, audio_channels, on_output);
     take_frames();
+    decisions.finish(
+        [&](const DecidedOnset& onset) { onsets.emplace_back(onset, onset_carrier_hz); });
 
     HapticTrack track;
     const std::vector<double> felt = envelope->felt();
@@ -132,15 +140,19 @@ HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engi
         track.intensity[i] = track.felt_peak > 0 ? felt[i] / track.felt_peak : 0.0;
         track.sharpness[i] = sharpness_of(envelope->carrier_hz()[i]);
     }
-    for (const auto& [sample, frequency_hz] : onsets) {
-        const double time_s = static_cast<double>(sample) / summary.sample_rate_hz;
+    for (const auto& [onset, frequency_hz] : onsets) {
+        const double time_s = static_cast<double>(onset.onset_sample) / summary.sample_rate_hz;
         const auto first = static_cast<size_t>(std::max(0.0, time_s / HapticTrack::kStepS));
         const size_t last =
             std::min(track.intensity.size(),
                      first + static_cast<size_t>(kOnsetPeakWindowS / HapticTrack::kStepS));
         double peak = 0;
         for (size_t i = first; i < last; ++i) peak = std::max(peak, track.intensity[i]);
-        track.onsets.push_back({time_s, peak, sharpness_of(frequency_hz)});
+        track.onsets.push_back({.time_s = time_s,
+                                .intensity = peak,
+                                .sharpness = sharpness_of(frequency_hz),
+                                .part = onset.part,
+                                .strength_db = onset.strength_db});
     }
     return track;
 }

@@ -1,8 +1,9 @@
 // A rendered vibration as the haptic formats describe one: a felt intensity and a sharpness
 // envelope on a 1 ms grid, and the onsets (transients), all in the input's time (the engine's
 // latency taken out, so the vibration lines up with the sound). Drawn from the vibration
-// program (the onsets and carrier of the engine's ControlFrames) and the rendered vibration
-// (its felt envelope): design.md, "the vibration program is the seam ... file exports".
+// program (the onsets, each with its drum part, and the carrier of the engine's ControlFrames)
+// and the rendered vibration (its felt envelope): design.md, "the vibration program is the seam ...
+// file exports".
 #pragma once
 
 #include <filesystem>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "tactus/engine/engine.hpp"
+#include "tactus/engine/onset_decisions.hpp"
 #include "tactus/io/render_info.hpp"
 #include "tactus/io/run_file.hpp"
 
@@ -19,7 +21,10 @@ namespace tactus {
 struct HapticOnset {
     double time_s = 0;
     double intensity = 0;  // 0 ... 1: the felt peak of its pulse, on the envelope's scale
-    double sharpness = 0;  // 0 ... 1: its carrier frequency (sharpness_of)
+    double sharpness = 0;  // 0 ... 1: its carrier frequency (sharpness_of) when its part was
+                           // decided (the carrier may still glide on the onset's own frame)
+    DrumPart part = DrumPart::other;  // its drum part and strength (engine/onset_decisions.hpp)
+    double strength_db = -120;
 };
 
 struct HapticTrack {

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -18,6 +19,11 @@ namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
 constexpr const char* kDygraphsDir = "/usr/share/javascript/dygraphs";  // libjs-dygraphs
+
+// Each drum part's onset colour, in kDrumPartNames' order: hues apart from one another and from
+// the series' (dygraphs' own, half-bright hues), so neither hides the other.
+constexpr std::array<const char*, kDrumParts> kPartColours = {"#d62728", "#2864ff", "#e6aa00",
+                                                              "#787878"};
 
 std::string read_text(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
@@ -77,7 +83,7 @@ window.onerror = function (message, source, line) {
 (function () {
   var plots = JSON.parse(document.getElementById('plot-data').textContent);
   var onsets = JSON.parse(document.getElementById('onset-data').textContent);
-  var graphs = [];
+  var graphs = [], shown = {};  // shown: onset lines per part in the waveform, as last drawn
   // Every plot shows the same time span from the start (the synchronizer keeps it so on zoom).
   var end = 0;
   plots.forEach(function (p) { if (p.rows.length) end = Math.max(end, p.rows[p.rows.length - 1][0]); });
@@ -96,13 +102,20 @@ window.onerror = function (message, source, line) {
     };
     if (p.right && p.right.length) options.y2label = p.right.join(', ');
     if (p.onsets) options.underlayCallback = function (ctx, area, g) {
-      ctx.strokeStyle = 'rgba(200, 30, 30, 0.6)';
+      var counts = {};
+      onsets.names.forEach(function (name) { counts[name] = 0; });
+      ctx.save();
+      ctx.globalAlpha = 0.7;
       ctx.lineWidth = 1;
-      onsets.forEach(function (t) {
-        var x = g.toDomXCoord(t);
+      onsets.times.forEach(function (t, i) {
+        var x = g.toDomXCoord(t), part = onsets.parts[i];
         if (x < area.x || x > area.x + area.w) return;
+        ctx.strokeStyle = onsets.colours[part];
         ctx.beginPath(); ctx.moveTo(x, area.y); ctx.lineTo(x, area.y + area.h); ctx.stroke();
+        ++counts[onsets.names[part]];
       });
+      ctx.restore();
+      if (p.id === 'waveform') shown = counts;
     };
     graphs.push(new Dygraph(document.getElementById(p.id), data, options));
   });
@@ -118,6 +131,7 @@ window.onerror = function (message, source, line) {
   });
   var status = document.getElementById('status');
   status.setAttribute('data-plots', JSON.stringify(areas));
+  status.setAttribute('data-onsets', JSON.stringify(shown));
   status.textContent = 'drawn ' + graphs.length + ' plots';
   document.title = 'tactus report: drawn';
 })();
@@ -204,8 +218,27 @@ std::string report_html(const ReportData& data, const Dygraphs& dygraphs) {
             "<div class=\"plot\" id=\"{0}\"></div>\n",
             p.id);
     }
-    Json onsets = Json::array();
-    for (const double t : data.onsets_s) onsets.push_back(number(t));
+    // Onsets as parallel arrays (time, part's index), and a legend: each part's colour and count.
+    Json times = Json::array(), parts = Json::array();
+    std::array<int, kDrumParts> count{};
+    for (const ReportOnset& o : data.onsets) {
+        times.push_back(number(o.time_s));
+        parts.push_back(static_cast<int>(o.part));
+        ++count[static_cast<size_t>(o.part)];
+    }
+    Json names = Json::array(), colours = Json::array();
+    for (size_t i = 0; i < kDrumPartNames.size(); ++i) {
+        names.push_back(std::string(kDrumPartNames[i]));
+        colours.push_back(kPartColours[i]);
+    }
+    const Json onsets = {
+        {"times", times}, {"parts", parts}, {"names", names}, {"colours", colours}};
+    std::string legend;
+    for (size_t i = 0; i < kDrumPartNames.size(); ++i)
+        legend += fmt::format(
+            " <span class=\"onset-part\" data-part=\"{0}\" data-colour=\"{1}\" "
+            "style=\"color: {1}\">&#9475; {0}</span> ({2})",
+            kDrumPartNames[i], kPartColours[i], count[i]);
     std::string summary;
     for (const auto& [what, value] : data.summary)
         summary += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", escaped(what), escaped(value));
@@ -236,9 +269,8 @@ audio { vertical-align: middle; margin-left: 8px; width: 480px; }
     page += fmt::format("<h1>{}</h1>\n<table>\n{}</table>\n", escaped(data.title), summary);
     page += player("sound", data.sound_wav) + player("vibration", data.vibration_wav);
     if (!data.note.empty()) page += fmt::format("<p><small>{}</small></p>\n", escaped(data.note));
-    page +=
-        "<p><small>Drag to zoom (every plot follows), double-click to zoom out; red lines: "
-        "onsets.</small></p>\n";
+    page += "<p><small>Drag to zoom (every plot follows), double-click to zoom out.</small></p>\n";
+    page += "<p id=\"onset-legend\"><small>Onsets by drum part:" + legend + "</small></p>\n";
     page += "<div id=\"status\">not drawn</div><div id=\"errors\"></div>\n";
     page += divs;
     page += "<script type=\"application/json\" id=\"plot-data\">" +

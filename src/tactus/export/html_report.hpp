@@ -3,13 +3,17 @@
 // dygraph.min.js, dygraph.min.css and the synchronizer extra), a summary table, and the sound
 // and the vibration playable from data URIs. The page records that it has drawn: its title
 // becomes "tactus report: drawn" and #status carries each plot area's rectangle and how many
-// values it has (for tests in a headless browser); script errors are written into #errors.
+// values it has, and how many onset lines of each drum part the waveform shows (for tests in a
+// headless browser); script errors are written into #errors. Onsets are drawn in their part's
+// colour, named in a legend (#onset-legend).
 #pragma once
 
 #include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "tactus/analysis/drum_part.hpp"
 
 namespace tactus {
 
@@ -24,11 +28,16 @@ struct ReportPlot {
     std::vector<std::string> right_axis;  // series drawn against a second y axis
 };
 
+struct ReportOnset {
+    double time_s = 0;
+    DrumPart part = DrumPart::other;
+};
+
 struct ReportData {
     std::string title;
     std::vector<std::pair<std::string, std::string>> summary;  // (what, value) rows
     std::vector<ReportPlot> plots;
-    std::vector<double> onsets_s;
+    std::vector<ReportOnset> onsets;
     std::string sound_wav, vibration_wav;  // file bytes (may be empty)
     std::string note;                      // a line under the players (e.g. what was cut)
 };

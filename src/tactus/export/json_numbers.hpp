@@ -15,6 +15,10 @@ inline double rounded(double x, double per_unit) {
 inline double time_value(double t) {
     return rounded(t, 1e4);
 }
+// Decibels to 0.01 dB (as `tactus onsets` prints them).
+inline double decibels(double db) {
+    return rounded(db, 1e2);
+}
 // A 0 ... 1 level to 0.001.
 inline double level(double v) {
     return rounded(std::clamp(v, 0.0, 1.0), 1e3);

@@ -93,8 +93,12 @@ std::string android_waveform_text(const HapticTrack& track) {
         total_ms += ms;
         first = end;
     }
-    Json onsets = Json::array();
-    for (const HapticOnset& onset : track.onsets) onsets.push_back(time_value(onset.time_s * 1e3));
+    Json onsets = Json::array(), parts = Json::array(), strengths = Json::array();
+    for (const HapticOnset& onset : track.onsets) {
+        onsets.push_back(time_value(onset.time_s * 1e3));
+        parts.push_back(name_of(onset.part));
+        strengths.push_back(decibels(onset.strength_db));
+    }
     const Json waveform = {
         {"api_level", kAndroidWaveformApiLevel},
         {"call", "VibrationEffect.createWaveform(timings, amplitudes, repeat)"},
@@ -105,6 +109,8 @@ std::string android_waveform_text(const HapticTrack& track) {
         {"timings", timings},
         {"amplitudes", amplitudes},
         {"onsets_ms", onsets},
+        {"onset_parts", parts},
+        {"onset_strengths_db", strengths},
         {"metadata", {{"description", track.info.describe()}}}};
     return waveform.dump(1) + "\n";
 }
