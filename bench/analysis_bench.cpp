@@ -136,10 +136,10 @@ void OnsetDetectorAnalyse(benchmark::State& state) {
     const Settings s;
     OnsetDetector onsets;
     onsets.prepare({.sample_rate_hz = kAnalysisRateHz}, analysis_hop_samples(),
-                   {s[P::onset_window_ms], s[P::onset_threshold], s[P::onset_ratio],
-                    s[P::onset_history_ms], s[P::onset_min_interval_ms]});
-    per_frame(state, onsets.span_samples(),
-              [&](const SampleHistory& h) { benchmark::DoNotOptimize(onsets.analyse(h)); });
+                   Analyzer::onset_settings(s));
+    per_frame(state, onsets.span_samples(), [&](const SampleHistory& h) {
+        benchmark::DoNotOptimize(onsets.analyse(h, {0.0, 0.0}));
+    });
 }
 BENCHMARK(OnsetDetectorAnalyse);
 

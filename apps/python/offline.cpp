@@ -138,8 +138,9 @@ py::dict onsets(const py::handle& x, double sample_rate_hz, const std::string& p
     const AudioView in = audio_view(x);
     const ProcessSpec spec = spec_for(sample_rate_hz, in);
     Analyzer analyzer;
+    BlockAnalysis analysis(analyzer);
     try {
-        prepare_analysis(analyzer, spec, settings, OnsetDecisions::reads());
+        analysis.prepare(spec, settings, OnsetDecisions::reads());
     } catch (const std::invalid_argument& e) {
         throw py::value_error(e.what());
     }
@@ -152,14 +153,14 @@ py::dict onsets(const py::handle& x, double sample_rate_hz, const std::string& p
                             static_cast<double>(o.decided_sample) / sample_rate_hz, o.strength_db,
                             static_cast<double>(o.part)});
         };
-        std::vector<float> mono(kBlock);
         std::vector<const float*> block(in.pointers.size());
+        const auto on_frame = [&](const Features& f) { decisions.add(f, add); };
         for (int done = 0; done < in.frames; done += kBlock) {
             const int count = std::min(kBlock, in.frames - done);
             for (size_t c = 0; c < block.size(); ++c) block[c] = in.pointers[c] + done;
-            analyse_block(analyzer, block.data(), in.channels, count, mono.data(),
-                          [&](const Features& f) { decisions.add(f, add); });
+            analysis.process(block.data(), count, on_frame);
         }
+        analysis.finish(on_frame);
         decisions.finish(add);
     }
     constexpr std::array<std::string_view, 4> kNames = {"onset_s", "decided_s", "strength_db",

@@ -76,10 +76,11 @@ class Analyzer {
     int latency() const { return static_cast<int>(std::ceil(hop_samples())); }
     // Analyses the frame ending at the newest sample. Call when process() returned true.
     const Features& analyse() noexcept;
+    // The onset detector's settings among `settings`.
+    static OnsetSettings onset_settings(const Settings& settings);
 
   private:
     static int hop_for(const Settings& settings, double analysis_rate_hz);
-    static OnsetSettings onset_settings(const Settings& settings);
     static HitSettings hit_settings(const Settings& settings);
 
     Resampler resampler_;

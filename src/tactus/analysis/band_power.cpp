@@ -8,12 +8,17 @@
 namespace tactus {
 
 void BandPower::prepare(Band band, double sample_rate_hz, int window_frames) {
-    active_ = band == Band::low || sample_rate_hz / 2 >= kHighEdgeHz + kMinWidthHz;
-    for (int s = 0; s < 2; ++s)
-        sections_[s].set(band == Band::low ? BiquadCoefficients::lowpass(
-                                                 kLowEdgeHz, butterworth_q(4, s), sample_rate_hz)
-                                           : BiquadCoefficients::highpass(
-                                                 kHighEdgeHz, butterworth_q(4, s), sample_rate_hz));
+    active_ = band == Band::low || sample_rate_hz / 2 >= kHighTopHz * kTopMargin;
+    section_count_ = band == Band::low ? 2 : 4;
+    for (int s = 0; s < 2; ++s) {
+        const double q = butterworth_q(4, s);
+        if (band == Band::low) {
+            sections_[s].set(BiquadCoefficients::lowpass(kLowEdgeHz, q, sample_rate_hz));
+        } else if (active_) {
+            sections_[s].set(BiquadCoefficients::highpass(kHighEdgeHz, q, sample_rate_hz));
+            sections_[s + 2].set(BiquadCoefficients::lowpass(kHighTopHz, q, sample_rate_hz));
+        }
+    }
     energy_.assign(static_cast<size_t>(std::max(1, window_frames)), 0.0);
     samples_.assign(energy_.size(), 0);
     // Frame j back (0: the newest) spans (j, j + 1) of the window's window_frames: its Hann weight
@@ -36,12 +41,14 @@ void BandPower::reset() noexcept {
 
 void BandPower::process(const float* samples, int count) noexcept {
     if (!active_) return;
-    double energy = 0;
+    // Summed sample by sample into the frame's total: the same order for any block split.
+    double energy = energy_[position_];
     for (int i = 0; i < count; ++i) {
-        const double y = sections_[1].process(sections_[0].process(samples[i]));
+        double y = samples[i];
+        for (int s = 0; s < section_count_; ++s) y = sections_[s].process(y);
         energy += y * y;
     }
-    energy_[position_] += energy;
+    energy_[position_] = energy;
     samples_[position_] += count;
 }
 

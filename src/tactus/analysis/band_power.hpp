@@ -1,15 +1,17 @@
 // The power of the input in a band at either end of the spectrum, for the onset detection
 // function and the drum parts (band-wise onset functions, as real-time drum transcription uses):
-//   high: above 6 kHz, outside the 16 kHz analysis (analyzer.hpp), where a closed hi-hat keeps
+//   high: 6-10 kHz, above the 16 kHz analysis (analyzer.hpp), where a closed hi-hat keeps
 //         84 % of its first 50 ms (Sonic Pi's drum_cymbal_closed) and bass, chords and most of a
 //         voice have little energy, so hats stay audible inside a mix;
 //   low:  below 150 Hz, a kick's body: a sub kick lights one or two of the analysis spectrum's
 //         bins, which a busy bed's flux outweighs.
-// A 4th-order Butterworth high- or low-pass at the input rate, squared, read at each analysis
+// 4th-order Butterworth filters at the input rate (the high band's top edge keeps it the same
+// band at every rate from 32 kHz up), squared, read at each analysis
 // frame as the mean power over the last window_frames frames: as it is (for the onset detection
 // function, which decides sooner on it) and weighted by a Hann window as the onset detector's
-// spectrum is (stft_frame.hpp), so that the two read a hit's shares alike. A high band the input
-// rate cannot hold (its Nyquist below kHighEdgeHz + kMinWidthHz) stays 0.
+// spectrum is (stft_frame.hpp), so that the two read a hit's shares alike. An input rate whose
+// Nyquist frequency is below kHighTopHz * kTopMargin has no high band: its power stays 0 (below
+// 32 kHz the filters' warping near Nyquist would make it another band at each rate).
 // Audio thread: process(), frame(); prepare() allocates.
 #pragma once
 
@@ -24,8 +26,7 @@ class BandPower {
   public:
     enum class Band { low, high };
     static constexpr double kLowEdgeHz = 150;
-    static constexpr double kHighEdgeHz = 6000;
-    static constexpr double kMinWidthHz = 2000;
+    static constexpr double kHighEdgeHz = 6000, kHighTopHz = 10000, kTopMargin = 1.5;
 
     void prepare(Band band, double sample_rate_hz, int window_frames);
     void reset() noexcept;
@@ -38,7 +39,8 @@ class BandPower {
     Power frame() noexcept;
 
   private:
-    std::array<Biquad, 2> sections_;
+    std::array<Biquad, 4> sections_;
+    int section_count_ = 2;
     std::vector<double> energy_;  // energy of each of the last frames, a ring
     std::vector<int> samples_;    // and their sample counts
     std::vector<double> weight_;  // Hann weight of each frame back

@@ -72,7 +72,10 @@ void HitAnalysis::analyse(const Frame& frame, int64_t now, int64_t onset_start) 
         peak_db_ = kSilentDb;
         deciding_ = true;
     }
-    level_db_ = Loudness::db_of(loudness_.added_sum());
+    // The loudness's rise, or where the mix's loudness fell under a hit (a hat on a snare's decay)
+    // what the fast spectrum and the bands added bin by bin, as a mean square.
+    const double spectral = fast_.added_sum() / kBinsPerMeanPower + high_.added_sum();
+    level_db_ = Loudness::db_of(std::max(loudness_.added_sum(), spectral));
     peak_db_ = std::max(peak_db_, level_db_);
     const auto& added = fine_.added();
     for (size_t k = 0; k < added.size(); ++k) fine_magnitude_[k] = std::sqrt(added[k]);

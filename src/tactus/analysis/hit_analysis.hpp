@@ -7,8 +7,9 @@
 //   (analysis/band_power.hpp, Hann-weighted as that spectrum is), for the part;
 //   the 23 ms analysis spectrum, for the brightness (its bins resolve a kick's body).
 // Read from them, every frame until the next onset:
-//   level_db       the loudness the hit added, dB LKFS scale, so a soft hit over a loud chord
-//                  reads soft;
+//   level_db       the loudness the hit added, dB LKFS scale (or, where the mix's loudness
+//                  fell under it, the power it added bin by bin), so a soft hit over a loud
+//                  chord reads soft;
 //   brightness_hz  its log-frequency centroid up to brightness.max_hz (analysis/brightness.hpp);
 // and once, settle_ms after the onset, its part, from where the added power lies (classify()).
 // Audio thread: analyse(); prepare() allocates.

@@ -10,6 +10,15 @@ namespace tactus {
 namespace {
 constexpr double kLogCompression = 1000.0;  // gamma: magnitudes 60 dB below full scale count
 constexpr double kSubBlockMs = 0.5;         // time resolution of the onset-time refinement
+// A band below -50 dB counts as silent: a tone fading in from silence leaks a little power
+// below 150 Hz whose rise from nothing would read as a hit.
+const double kBandFloorAmplitude = std::pow(10.0, -50.0 / 20);
+
+// A band's power read as a sine's amplitude sqrt(2 P), floored, log-compressed as the bins are.
+float band_log(double power) noexcept {
+    const double amplitude = std::max(std::sqrt(2.0 * power), kBandFloorAmplitude);
+    return fast_log(1.0f + static_cast<float>(kLogCompression * amplitude));
+}
 }  // namespace
 
 void OnsetDetector::prepare(const ProcessSpec& spec, int hop_samples, const OnsetSettings& s) {
@@ -22,7 +31,12 @@ void OnsetDetector::prepare(const ProcessSpec& spec, int hop_samples, const Onse
     lag_frames_ =
         std::max(1, static_cast<int>(std::lround(kLagMs * 1e-3 * sample_rate_hz / hop_samples)));
     past_log_.assign(static_cast<size_t>(past_frames()) * static_cast<size_t>(bins_), 0.0f);
-    for (auto& band : past_band_) band.assign(static_cast<size_t>(past_frames()), 0.0f);
+    const double band_lags_ms[2] = {kLowBandLagMs, kLagMs};
+    for (size_t b = 0; b < bands_.size(); ++b) {
+        bands_[b].lag_frames = std::max(
+            1, static_cast<int>(std::lround(band_lags_ms[b] * 1e-3 * sample_rate_hz / hop_samples)));
+        bands_[b].past.assign(static_cast<size_t>(2 * bands_[b].lag_frames), 0.0f);
+    }
     rise_.assign(static_cast<size_t>(stft_.bins()), 0.0f);
     const auto history_frames =
         std::max<int64_t>(1, std::llround(s.history_ms * 1e-3 * sample_rate_hz / hop_samples));
@@ -47,7 +61,10 @@ void OnsetDetector::set_thresholds(const OnsetSettings& s) noexcept {
 
 void OnsetDetector::reset() noexcept {
     std::fill(past_log_.begin(), past_log_.end(), 0.0f);
-    for (auto& band : past_band_) std::fill(band.begin(), band.end(), 0.0f);
+    for (auto& band : bands_) {  // silence before the stream: at the floor
+        std::fill(band.past.begin(), band.past.end(), band_log(0.0));
+        band.position = 0;
+    }
     past_position_ = 0;
     std::fill(flux_history_.begin(), flux_history_.end(), 0.0);
     history_position_ = 0;
@@ -76,19 +93,12 @@ OnsetDecision OnsetDetector::analyse(const SampleHistory& history,
         rise_[k] = std::max(0.0f, log_magnitude - std::max(one_lag[k], two_lags[k]));
         two_lags[k] = log_magnitude;
     }
+    past_position_ = (past_position_ + 1) % frames;
     // Each band as `weight` more bins, its power read as a sine's amplitude sqrt(2 P).
-    const int one_lag_slot = (past_position_ + frames - lag_frames_) % frames;
     const double weights[2] = {settings_.low_weight, settings_.high_weight};
     double bands_rise = 0;
-    for (size_t b = 0; b < past_band_.size(); ++b) {
-        auto& past = past_band_[b];
-        const float log_power = fast_log(
-            1.0f + static_cast<float>(kLogCompression * std::sqrt(2.0 * band_power[b])));
-        bands_rise += weights[b] * std::max(0.0f, log_power - std::max(past[one_lag_slot],
-                                                                       past[past_position_]));
-        past[past_position_] = log_power;
-    }
-    past_position_ = (past_position_ + 1) % frames;
+    for (size_t b = 0; b < bands_.size(); ++b)
+        bands_rise += weights[b] * bands_[b].rise(band_log(band_power[b]));
     const double flux = (sum_of(rise_.data(), bins_) + bands_rise) * 100.0 / bins_;  // per 100 bins
 
     // Median of the recent flux: the background level, not raised by the hits themselves.
@@ -110,6 +120,16 @@ OnsetDecision OnsetDetector::analyse(const SampleHistory& history,
         decision.onset_sample = refine_onset_sample(history);
     }
     return decision;
+}
+
+float OnsetDetector::BandRing::rise(float log_power) noexcept {
+    const int frames = static_cast<int>(past.size());  // the slot at position: two lags back
+    const float louder =
+        std::max(past[static_cast<size_t>((position + frames - lag_frames) % frames)],
+                 past[static_cast<size_t>(position)]);
+    past[static_cast<size_t>(position)] = log_power;
+    position = (position + 1) % frames;
+    return std::max(0.0f, log_power - louder);
 }
 
 // The sub-block with the largest energy rise over its predecessor, within the newest window and

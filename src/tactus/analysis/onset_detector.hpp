@@ -43,6 +43,8 @@ class OnsetDetector {
   public:
     // Two default hops (1.45 ms), where the thresholds were tuned.
     static constexpr double kLagMs = 2.9;
+    // The low band's: a kick's body takes a quarter period or so to rise (16 ms at 60 Hz).
+    static constexpr double kLowBandLagMs = 8.7;
 
     void prepare(const ProcessSpec& spec, int hop_samples, const OnsetSettings& settings);
     void reset() noexcept;
@@ -64,7 +66,13 @@ class OnsetDetector {
     StftFrame stft_;
     std::vector<float> rise_, segment_;  // rise_: per bin, this frame
     std::vector<float> past_log_;        // the last past_frames() frames, bins_ each, a ring
-    std::array<std::vector<float>, 2> past_band_;  // the bands', the same frames
+    // The bands' log power over their own lags (BandRing::lag_frames and twice it), a ring each.
+    struct BandRing {
+        std::vector<float> past;
+        int lag_frames = 1, position = 0;
+        float rise(float log_power) noexcept;  // over the louder of the two lags; stores it
+    };
+    std::array<BandRing, 2> bands_;  // low, high
     int past_frames() const { return 2 * lag_frames_; }
     int lag_frames_ = 1, past_position_ = 0;
     std::vector<double> flux_history_, scratch_, block_energy_;

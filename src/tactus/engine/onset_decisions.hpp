@@ -25,12 +25,9 @@ struct DecidedOnset {
 
 class OnsetDecisions {
   public:
-    // What the analysis must compute besides the onsets: the spectrum, parts are read from it.
-    static constexpr FeatureSet reads() {
-        FeatureSet set = FeatureSet::none();
-        set.spectrum = true;
-        return set;
-    }
+    // What the analysis must compute besides the onsets: the spectrum, parts are read from it,
+    // and the loudness, strengths are.
+    static constexpr FeatureSet reads() { return group_of(FeatureSource::hit_db); }
 
     // Every analysis frame, in order. Calls on_onset(const DecidedOnset&) for each onset this
     // frame completes: at most two (an undecided earlier one, and one detected and decided here).

@@ -91,24 +91,44 @@ RunSummary run_file(const std::filesystem::path& input, Engine& engine,
     return summary;
 }
 
-void prepare_analysis(Analyzer& analyzer, const ProcessSpec& spec, const Settings& settings,
-                      FeatureSet features) {
+void BlockAnalysis::prepare(const ProcessSpec& spec, const Settings& settings,
+                            FeatureSet features) {
     Engine::check_sample_rate(spec.sample_rate_hz);
-    analyzer.prepare(spec, settings);
-    analyzer.set_features(features);
+    analyzer_.prepare(spec, settings);
+    analyzer_.set_features(features);
+    channels_ = spec.channels;
+    max_block_ = spec.max_block;
+    mono_.assign(static_cast<size_t>(max_block_), 0.0f);
+    power_.assign(channels_ > 1 ? mono_.size() : 0, 0.0f);
+    if (channels_ > 1) channel_power_.prepare(spec);
+    finish_frames_ = ms_to_samples(settings[P::parts_settle_ms], spec.sample_rate_hz) +
+                     static_cast<int64_t>(std::ceil(analyzer_.hop_samples()));
 }
 
-void analyse_block(Analyzer& analyzer, const float* const* channels, int input_channels, int frames,
-                   float* mono, const std::function<void(const Features&)>& on_frame) {
+void BlockAnalysis::process(const float* const* channels, int frames, const OnFrame& on_frame) {
     const ScopedFlushDenormals no_denormals;  // as in Engine::process
-    const float* in = channels[0];
-    if (input_channels > 1) {  // the engine's default downmix
-        downmix_mean(channels, input_channels, 0, mono, frames);
-        in = mono;
+    if (channels_ == 1) return analyse(channels[0], nullptr, frames, on_frame);
+    downmix_mean(channels, channels_, 0, mono_.data(), frames);  // the engine's default downmix
+    channel_power_.process(channels, 0, frames, power_.data());
+    analyse(mono_.data(), power_.data(), frames, on_frame);
+}
+
+void BlockAnalysis::finish(const OnFrame& on_frame) {
+    std::vector<float> silence(static_cast<size_t>(max_block_), 0.0f);
+    std::vector<const float*> channels(static_cast<size_t>(channels_), silence.data());
+    for (int64_t left = finish_frames_; left > 0;) {
+        const int frames = static_cast<int>(std::min<int64_t>(left, max_block_));
+        process(channels.data(), frames, on_frame);
+        left -= frames;
     }
+}
+
+void BlockAnalysis::analyse(const float* mono, const float* power, int frames,
+                            const OnFrame& on_frame) {
     for (int done = 0; done < frames;) {
-        const int chunk = std::min(frames - done, analyzer.samples_to_next_frame());
-        if (analyzer.process(in + done, chunk)) on_frame(analyzer.analyse());
+        const int chunk = std::min(frames - done, analyzer_.samples_to_next_frame());
+        if (analyzer_.process(mono + done, power ? power + done : nullptr, chunk))
+            on_frame(analyzer_.analyse());
         done += chunk;
     }
 }
@@ -117,18 +137,15 @@ RunSummary analyse_file(const std::filesystem::path& input, Analyzer& analyzer,
                         const Settings& settings, FeatureSet features,
                         const std::function<void(const Features&)>& on_frame,
                         const RunCallbacks& callbacks) {
-    std::vector<float> mono(kBlock);
-    int input_channels = 1;
-    return stream_file(
-        input,
-        [&](const ProcessSpec& spec) {
-            prepare_analysis(analyzer, spec, settings, features);
-            input_channels = spec.channels;
-        },
+    BlockAnalysis analysis(analyzer);
+    const RunSummary summary = stream_file(
+        input, [&](const ProcessSpec& spec) { analysis.prepare(spec, settings, features); },
         [&](const float* const* channels, int frames) {
-            analyse_block(analyzer, channels, input_channels, frames, mono.data(), on_frame);
+            analysis.process(channels, frames, on_frame);
         },
         callbacks);
+    analysis.finish(on_frame);
+    return summary;
 }
 
 }  // namespace tactus

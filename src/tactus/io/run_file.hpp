@@ -7,6 +7,7 @@
 #include <functional>
 
 #include "tactus/dsp/process_spec.hpp"
+#include "tactus/engine/channel_power.hpp"
 #include "tactus/engine/engine.hpp"
 
 namespace tactus {
@@ -71,12 +72,28 @@ RunSummary analyse_file(const std::filesystem::path& input, Analyzer& analyzer,
                         const std::function<void(const Features&)>& on_frame,
                         const RunCallbacks& callbacks = {});
 
-// analyse_file's work on audio already in memory (the Python module's onsets()): prepare_analysis
-// once (std::invalid_argument for a bad rate or setting), then analyse_block for each block of at
-// most spec.max_block frames; `mono` holds spec.max_block samples (the channels' mean).
-void prepare_analysis(Analyzer& analyzer, const ProcessSpec& spec, const Settings& settings,
-                      FeatureSet features);
-void analyse_block(Analyzer& analyzer, const float* const* channels, int input_channels, int frames,
-                   float* mono, const std::function<void(const Features&)>& on_frame);
+// analyse_file's work on blocks of audio (also the Python module's onsets(), on audio in
+// memory): the channels read as the engine reads them, their mean analysed and their loudness
+// summed as BS.1770 sums it (engine/channel_power.hpp). prepare() allocates and throws
+// std::invalid_argument for a bad rate or setting; process() takes up to spec.max_block frames;
+// finish() feeds silence for parts.settle_ms and one hop, so that the last onset's part and
+// strength are decided, as a render's tail decides them.
+class BlockAnalysis {
+  public:
+    using OnFrame = std::function<void(const Features&)>;
+    explicit BlockAnalysis(Analyzer& analyzer) : analyzer_(analyzer) {}
+    void prepare(const ProcessSpec& spec, const Settings& settings, FeatureSet features);
+    void process(const float* const* channels, int frames, const OnFrame& on_frame);
+    void finish(const OnFrame& on_frame);
+
+  private:
+    void analyse(const float* mono, const float* power, int frames, const OnFrame& on_frame);
+
+    Analyzer& analyzer_;
+    ChannelPower channel_power_;
+    std::vector<float> mono_, power_;
+    int channels_ = 1, max_block_ = 1;
+    int64_t finish_frames_ = 0;
+};
 
 }  // namespace tactus
