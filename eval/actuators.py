@@ -140,7 +140,7 @@ def section(results):
     return lines
 
 
-def evaluate(build_dir, corpus, work, preset="tfd", render_tactus=None):
+def evaluate(build_dir, corpus, work, preset="music", render_tactus=None):
     tactus = build_dir / "bin/tactus"
     args = argparse.Namespace(preset=preset)
     actuators_dir = pathlib.Path(__file__).resolve().parent.parent / "actuators"
@@ -154,7 +154,7 @@ def main():
     parser.add_argument("build_dir", type=pathlib.Path)
     parser.add_argument("corpus", type=pathlib.Path)
     parser.add_argument("--work", type=pathlib.Path, default=None)
-    parser.add_argument("--preset", default="tfd")
+    parser.add_argument("--preset", default="music")
     parser.add_argument("--render", type=pathlib.Path, default=None,
                         help="the tactus that renders (default: BUILD_DIR's)")
     args = parser.parse_args()

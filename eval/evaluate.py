@@ -252,7 +252,7 @@ def main():
     parser.add_argument("build_dir", type=pathlib.Path)
     parser.add_argument("--out", type=pathlib.Path, default=None)
     parser.add_argument("--work", type=pathlib.Path, default=None)
-    parser.add_argument("--preset", default="tfd")
+    parser.add_argument("--preset", default="music")
     parser.add_argument("--seed", type=int, default=1, help="corpus seed (1 is the tuning set)")
     parser.add_argument("--held-out", choices=("gm", "none"), default="gm",
                         help="also measure the General MIDI kits tactus was not tuned on")

@@ -36,7 +36,7 @@ def onsets_s(tactus, wav, preset):
     return np.array([float(line.split()[0]) for line in text.splitlines() if line.strip()])
 
 
-def measure(build_dir, work, preset="tfd"):
+def measure(build_dir, work, preset="music"):
     """Per rate: onsets, matched, pulses, worst frequency deviation %, worst peak deviation dB,
     output peak dBFS."""
     tactus = str(build_dir / "bin/tactus")
@@ -96,7 +96,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("build_dir", type=pathlib.Path)
     parser.add_argument("--work", type=pathlib.Path, default=None)
-    parser.add_argument("--preset", default="tfd")
+    parser.add_argument("--preset", default="music")
     args = parser.parse_args()
     work = args.work or pathlib.Path(tempfile.mkdtemp(prefix="tactus-rates-"))
     print("\n".join(section(measure(args.build_dir, work, args.preset))))

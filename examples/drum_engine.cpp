@@ -4,14 +4,13 @@
 // control thread turns the envelope's decay and the drive, as a knob or an OSC message would,
 // and a reader thread takes the analysis frames off the engine's queue. Prints what it found;
 // exits 1 if the kicks did not become vibration.
-#include <tactus/engine/engine.hpp>
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <tactus/engine/engine.hpp>
 #include <thread>
 #include <vector>
 
@@ -25,11 +24,11 @@ int main() {
     for (size_t i = 0; i < music.size(); ++i) {
         const double t = std::fmod(static_cast<double>(i) / kRateHz, 0.5);
         const double hz = 60 + 90 * std::exp(-t / 0.03);
-        music[i] = static_cast<float>(0.8 * std::exp(-t / 0.12) *
-                                      std::sin(2 * std::numbers::pi * hz * t));
+        music[i] =
+            static_cast<float>(0.8 * std::exp(-t / 0.12) * std::sin(2 * std::numbers::pi * hz * t));
     }
 
-    tactus::Engine engine;  // the default settings: the paper's section 6 mapping
+    tactus::Engine engine;  // the default settings: the paper's section 6 mapping on each hit
     engine.set_actuators({{}, {.profile = {}, .gain_db = -6, .delay_ms = 5}});
     engine.enable_frame_queue();
     engine.prepare({.sample_rate_hz = kRateHz, .max_block = kBlock});
@@ -76,5 +75,6 @@ int main() {
     }
     std::printf("latency %.1f ms; %d analysis frames, %d onsets (8 kicks); peaks %.3f and %.3f\n",
                 1000.0 * engine.latency() / kRateHz, frames, onsets, peak[0], peak[1]);
-    return onsets >= 7 && peak[0] > 0.1f && peak[1] > 0.1f && peak[1] < peak[0] ? 0 : 1;
+    // The second output is 6 dB down: half the first's peak.
+    return onsets >= 7 && peak[0] > 0.1f && peak[1] > 0.05f && peak[1] < peak[0] ? 0 : 1;
 }

@@ -12,6 +12,7 @@
 #include "parts.hpp"
 #include "settings.hpp"
 #include "tactus/engine/analysis_rows.hpp"
+#include "tactus/io/preset.hpp"
 #include "tactus/io/run_file.hpp"
 
 namespace py = pybind11;
@@ -164,7 +165,7 @@ void add_engine(py::module_& m) {
     py::class_<PyEngine> engine(m, "Engine",
                                 R"(The tactus engine, block by block, as a host runs it.
 
-Engine(sample_rate, preset="tfd", actuator=None, channels=1, actuators=1, keep_frames=False,
+Engine(sample_rate, preset="music", actuator=None, channels=1, actuators=1, keep_frames=False,
        settings=None, **params)
 
 process(block) takes any number of frames, (frames,) or (frames, channels), and returns the
@@ -176,7 +177,7 @@ attribute named by its key with dots as underscores (engine.envelope_decay_ms).)
     engine
         .def(py::init<double, const std::string&, const py::object&, int, int, bool,
                       const py::object&, const py::kwargs&>(),
-             arg("sample_rate"), arg("preset") = "tfd", arg("actuator") = py::none(),
+             arg("sample_rate"), arg("preset") = kDefaultPreset, arg("actuator") = py::none(),
              arg("channels") = 1, arg("actuators") = 1, arg("keep_frames") = false,
              arg("settings") = py::none())
         .def("process", &PyEngine::process, arg("block"),

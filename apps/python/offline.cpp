@@ -20,6 +20,7 @@
 #include "tactus/io/actuator_file.hpp"
 #include "tactus/io/audio_reader.hpp"
 #include "tactus/io/audio_writer.hpp"
+#include "tactus/io/preset.hpp"
 #include "tactus/io/run_file.hpp"
 #include "tactus/perception/meter.hpp"
 
@@ -294,7 +295,7 @@ void write(const std::filesystem::path& path, const py::handle& x, double sample
 
 void add_offline(py::module_& m) {
     using py::arg;
-    m.def("render", &render, arg("x"), arg("sample_rate"), arg("preset") = "tfd",
+    m.def("render", &render, arg("x"), arg("sample_rate"), arg("preset") = kDefaultPreset,
           arg("actuator") = py::none(), arg("actuators") = 1, arg("settings") = py::none(),
           R"(The vibration for audio x, as `tactus render` writes it (bit for bit).
 
@@ -308,7 +309,7 @@ actuators: identical actuator channels (--channels).
 settings: {"envelope.decay_ms": 120, ...}, and/or keyword arguments by Python name
    (envelope_decay_ms=120): --set. Choices take their names ("log", "on").
 Returns float32 (frames, actuators). Raises ValueError with the command line's messages.)");
-    m.def("analyze", &analyze, arg("x"), arg("sample_rate"), arg("preset") = "tfd",
+    m.def("analyze", &analyze, arg("x"), arg("sample_rate"), arg("preset") = kDefaultPreset,
           arg("actuator") = py::none(), arg("settings") = py::none(),
           R"(Every analysis frame's features, vibration program and sensation levels, the
 columns of `tactus analyze` (the same values), as a dict of float64 arrays: time_s, loudness_db,
@@ -317,7 +318,7 @@ hit_brightness_hz, part (the latest hit's drum part: an array of names, tactus.d
 part_decided, hit_strength_db, frequency_hz, amplitude, square_mix, trigger, attack_ms, decay_ms, sustain, flutter_hz,
 flutter_amplitude, pressure, P_sl_db, NPI_sl_db, NPII_sl_db, NPIII_sl_db, combined_sl_db.
 The sensation levels are metered through `actuator` (default: voice-coil). Arguments as render().)");
-    m.def("onsets", &onsets, arg("x"), arg("sample_rate"), arg("preset") = "tfd",
+    m.def("onsets", &onsets, arg("x"), arg("sample_rate"), arg("preset") = kDefaultPreset,
           arg("settings") = py::none(),
           R"(The onsets `tactus onsets` prints (the ones render() triggers pulses on), as a dict
 of arrays: onset_s (estimated start), decided_s (when it was decided), strength_db (what the hit

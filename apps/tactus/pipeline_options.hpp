@@ -6,13 +6,14 @@
 #include <string>
 #include <vector>
 
+#include "tactus/io/preset.hpp"
 #include "tactus/io/render_info.hpp"
 #include "tactus/params/params.hpp"
 
 namespace tactus::cli {
 
 struct PipelineOptions {
-    std::string preset = "tfd";
+    std::string preset = kDefaultPreset;
     std::vector<std::string> assignments;
 
     void add_to(CLI::App& command);

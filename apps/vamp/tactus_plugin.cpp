@@ -54,7 +54,7 @@ Vamp::RealTime at_seconds(double seconds) {
 }  // namespace
 
 TactusPlugin::TactusPlugin(float input_sample_rate) : Plugin(input_sample_rate) {
-    selectProgram("tfd");
+    selectProgram(kDefaultPreset);
 }
 
 TactusPlugin::~TactusPlugin() = default;

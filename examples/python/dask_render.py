@@ -75,7 +75,7 @@ def main():
     parser.add_argument("-O", "--output-dir", type=pathlib.Path, required=True)
     parser.add_argument("--scheduler", help="a Dask scheduler's address (default: a LocalCluster)")
     parser.add_argument("--workers", type=int, default=2, help="LocalCluster worker processes")
-    parser.add_argument("--preset", default="tfd")
+    parser.add_argument("--preset", default="music")
     parser.add_argument("--actuator")
     parser.add_argument("--set", dest="assignments", nargs="+", default=[], metavar="KEY=VALUE")
     parser.add_argument("--channels", type=int, default=1, help="identical actuator channels")

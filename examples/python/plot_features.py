@@ -25,7 +25,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("input", help="audio file (anything libsndfile reads)")
     parser.add_argument("-o", "--output", required=True, help="PNG to write")
-    parser.add_argument("--preset", default="tfd")
+    parser.add_argument("--preset", default="music")
     parser.add_argument("--actuator", default="voice-coil")
     args = parser.parse_args()
 

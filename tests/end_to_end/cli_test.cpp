@@ -98,7 +98,7 @@ TEST_F(Cli, AnalyzeCsvAndJson) {
                            "hit_strength_db,frequency_hz,"),
               std::string::npos);
     EXPECT_NE(csv.out.find("\n# tactus=" TACTUS_VERSION "; source=loop_amen_full.flac; "
-                           "preset=tfd; actuator=voice-coil\n"),
+                           "preset=music; actuator=voice-coil\n"),
               std::string::npos)
         << csv.out.substr(0, 400);
     // Every row names its part; the parts decided are those `tactus onsets` prints, in order
@@ -137,7 +137,7 @@ TEST_F(Cli, AnalyzeCsvAndJson) {
     std::ifstream f(json);
     std::string text((std::istreambuf_iterator<char>(f)), {});
     EXPECT_EQ(text.rfind("{\"tactus\": {\"version\":\"" TACTUS_VERSION "\",\"source\":"
-                         "\"loop_amen_full.flac\",\"preset\":\"tfd\",\"set\":[],",
+                         "\"loop_amen_full.flac\",\"preset\":\"music\",\"set\":[],",
                          0),
               0u)
         << text.substr(0, 200);

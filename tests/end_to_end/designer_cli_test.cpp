@@ -210,7 +210,7 @@ TEST_F(Cli, RenderCarriesHowItWasMadeAndMeterReadsTheActuator) {
     ASSERT_EQ(run("render " + kAmen + " -o " + lra.string() + " -a lra-175" + keep).exit_code, 0);
     EXPECT_EQ(comment_of(lra, SF_STR_SOFTWARE).rfind("tactus " TACTUS_VERSION, 0), 0u);
     EXPECT_EQ(comment_of(lra), "tactus=" TACTUS_VERSION
-                               "; source=loop_amen_full.flac; preset=tfd; "
+                               "; source=loop_amen_full.flac; preset=music; "
                                "set=mapping.frequency.out_min=160 mapping.frequency.out_max=220; "
                                "actuator=lra-175");
     const Result read = run("meter " + lra.string());

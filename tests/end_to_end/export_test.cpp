@@ -42,8 +42,8 @@ void PrintTo(const Sound& sound, std::ostream* out) {
 const Sound kSounds[] = {{"amen", "/usr/share/sonic-pi/samples/loop_amen_full.flac"},
                          {"tick", "/usr/share/sonic-pi/samples/elec_tick.flac"}};
 
-// What the engine renders for `input` under tfd: its felt envelope on the 1 ms grid and its
-// onsets, in the input's time, and the vibration itself, lined up with the input.
+// What the engine renders for `input` under the default preset: its felt envelope on the 1 ms grid
+// and its onsets, in the input's time, and the vibration itself, lined up with the input.
 struct EngineRun {
     std::vector<double> felt;
     std::vector<double> onsets_s;
@@ -71,7 +71,7 @@ std::vector<PrintedOnset> printed_onsets(const std::string& text) {
 
 EngineRun run_engine(const fs::path& input) {
     tactus::Settings settings;
-    tactus::apply_preset_file(settings, tactus::resolve_preset("tfd"));
+    tactus::apply_preset_file(settings, tactus::resolve_preset(tactus::kDefaultPreset));
     tactus::Engine engine(settings);
     engine.enable_frame_queue();
     std::vector<std::pair<int64_t, double>> carrier;
@@ -163,7 +163,7 @@ class Export : public Cli, public ::testing::WithParamInterface<Sound> {
         tactus::AudioReader reader{fs::path(GetParam().path)};
         const double end_s = static_cast<double>(reader.frames()) / reader.sample_rate_hz();
         tactus::Settings settings;
-        tactus::apply_preset_file(settings, tactus::resolve_preset("tfd"));
+        tactus::apply_preset_file(settings, tactus::resolve_preset(tactus::kDefaultPreset));
         const double wait_s =
             1e-3 * (settings[tactus::P::parts_settle_ms] + settings[tactus::P::analysis_hop_ms]);
         for (PrintedOnset& o : printed) o.decided = o.onset_s + wait_s <= end_s;

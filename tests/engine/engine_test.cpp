@@ -24,10 +24,10 @@
 #include "support/engine_blocks.hpp"
 #include "support/signals.hpp"
 #include "support/watchdog.hpp"
-#include "tactus/io/actuator_file.hpp"
-#include "tactus/io/preset.hpp"
 #include "tactus/core/units.hpp"
+#include "tactus/io/actuator_file.hpp"
 #include "tactus/io/audio_reader.hpp"
+#include "tactus/io/preset.hpp"
 
 namespace tactus {
 namespace {
@@ -324,7 +324,10 @@ TEST(Engine, ComponentsThatAreOffLeaveTheOutputBitIdentical) {
                  P::post_flatten_range_db, P::post_drive_db, P::post_limiter_threshold_db,
                  P::post_ceiling_db})
         EXPECT_EQ(off[id], tfd[id]) << spec(id).key << ": the comparison needs the same P chain";
-    const std::vector<float> reference = render(drums.audio, fs, {512});
+    // The four-channel preset's P carrier is the paper's (presets/tfd.toml): on the whole mix.
+    tfd.set(P::amplitude_source, static_cast<double>(FeatureSource::loudness_db));
+    tfd.set(P::frequency_source, static_cast<double>(FeatureSource::brightness_hz));
+    const std::vector<float> reference = render(drums.audio, fs, {512}, tfd);
     ASSERT_GT(test::peak(reference), 0.05);
     EXPECT_EQ(first_difference(render(drums.audio, fs, {512}, off), reference), -1);
     // And switched on, they do change it.

@@ -260,5 +260,35 @@ TEST(Mapper, WithoutHoldTheFrequencyIsSmoothedThroughOnsets) {
     EXPECT_GT(mapper.map(frame(21, -20, 4000, 0.5, false)).frequency_hz, onset_hz);
 }
 
+// By drum part: nothing changes until the pulse's part is decided; from then the part's gain,
+// brightness (through the frequency mapping) and decay shape it, and a new onset forgets them.
+TEST(Mapper, APartShapesItsPulseOnceDecided) {
+    Settings s = immediate_settings();
+    s.set(P::parts_kick_gain_db, -6);
+    s.set(P::parts_kick_brightness_hz, 150);  // the frequency mapping's in_min: out_min
+    s.set(P::parts_kick_decay_ms, 400);
+    s.set(P::parts_other_gain_db, -60);  // off
+    Mapper m;
+    m.prepare(s, 100.0);
+    Features onset = frame(100, -10, 3000, 0.5, true);
+    const ControlFrame at_onset = m.map(onset);
+    Features decided = frame(200, -10, 3000, 0.5, false);
+    decided.part = DrumPart::kick;
+    decided.part_decided = true;
+    const ControlFrame kick = m.map(decided);
+    EXPECT_NEAR(kick.amplitude, at_onset.amplitude * std::pow(10.0, -6.0 / 20), 1e-9);
+    EXPECT_NEAR(kick.frequency_hz, 50.0, 1e-9);
+    EXPECT_EQ(kick.decay_ms, 400.0);
+    EXPECT_NEAR(m.map(frame(300, -10, 3000, 0.5, false)).frequency_hz, 50.0, 1e-9);  // kept
+
+    const ControlFrame next = m.map(frame(400, -10, 3000, 0.5, true));  // a new pulse
+    EXPECT_NEAR(next.amplitude, at_onset.amplitude, 1e-9);
+    EXPECT_EQ(next.decay_ms, 300.0);
+    Features other = frame(500, -10, 3000, 0.5, false);
+    other.part = DrumPart::other;
+    other.part_decided = true;
+    EXPECT_EQ(m.map(other).amplitude, 0.0);  // -60 dB: off
+}
+
 }  // namespace
 }  // namespace tactus

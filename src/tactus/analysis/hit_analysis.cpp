@@ -25,8 +25,7 @@ constexpr double kDrumAboveShare = 0.01;
 }  // namespace
 
 void HitAnalysis::prepare(SpectrumShape fast, SpectrumShape fine, double sample_rate_hz,
-                          int hop_samples, int longest_wait_samples,
-                          const HitSettings& settings) {
+                          int hop_samples, int longest_wait_samples, const HitSettings& settings) {
     sample_rate_hz_ = sample_rate_hz;
     for (AddedSpectrum* one : {&loudness_, &low_, &high_})
         one->prepare(1, hop_samples, longest_wait_samples);
@@ -73,9 +72,12 @@ void HitAnalysis::analyse(const Frame& frame, int64_t now, int64_t onset_start) 
         deciding_ = true;
     }
     // The loudness's rise, or where the mix's loudness fell under a hit (a hat on a snare's decay)
-    // what the fast spectrum and the bands added bin by bin, as a mean square.
-    const double spectral = fast_.added_sum() / kBinsPerMeanPower + high_.added_sum();
-    level_db_ = Loudness::db_of(std::max(loudness_.added_sum(), spectral));
+    // what the fast spectrum and the high band added bin by bin, as a mean square (bin by bin a
+    // noise's own fluctuations add too, about 3 dB over a bed: only where the loudness says
+    // nothing).
+    const double rise = loudness_.added_sum();
+    level_db_ = Loudness::db_of(
+        rise > 0 ? rise : fast_.added_sum() / kBinsPerMeanPower + high_.added_sum());
     peak_db_ = std::max(peak_db_, level_db_);
     const auto& added = fine_.added();
     for (size_t k = 0; k < added.size(); ++k) fine_magnitude_[k] = std::sqrt(added[k]);

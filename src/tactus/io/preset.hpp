@@ -43,6 +43,10 @@ struct PresetInfo {
 std::vector<std::filesystem::path> preset_search_path();
 std::vector<PresetInfo> list_presets();
 
+// The preset every front end starts from: the parameter table's defaults, restated in
+// presets/music.toml (the paper's own mapping is presets/tfd.toml).
+inline constexpr const char* kDefaultPreset = "music";
+
 // A name ("tfd") or a path to a .toml file.
 std::filesystem::path resolve_preset(std::string_view name_or_path);
 

@@ -9,6 +9,13 @@
 
 namespace tactus {
 namespace {
+// The first of a part's parameters (gain_db, brightness_hz, decay_ms follow it in the table).
+P part_first(DrumPart part) {
+    return static_cast<P>(static_cast<int>(P::parts_kick_gain_db) + 3 * static_cast<int>(part));
+}
+P next(P first, int by) {
+    return static_cast<P>(static_cast<int>(first) + by);
+}
 using perception::Channel;
 // Innervation density P / NPI, human fingerpad (paper Table 1).
 constexpr double kFlutterEqualizeGain = perception::info(Channel::P).innervation_per_cm2 /
@@ -44,6 +51,13 @@ void Mapper::set_live(const Settings& s, double output_ceiling) noexcept {
     pressure_steps_ = static_cast<int>(std::lround(s[P::pressure_steps]));
     pressure_step_ = std::min(pressure_step_, pressure_steps_);
     hold_frequency_ = s[P::frequency_hold] != 0.0;
+    for (int part = 0; part < kDrumParts; ++part) {
+        const P first = part_first(static_cast<DrumPart>(part));
+        const double gain_db = s[first];
+        parts_[part] = {.gain = gain_db <= spec(first).min ? 0.0 : db_to_gain(gain_db),
+                        .brightness_hz = s[next(first, 1)],
+                        .decay_ms = s[next(first, 2)]};
+    }
     settle_frames_ = s[P::frequency_settle_ms] * 1e-3 * fps;
 }
 
@@ -56,6 +70,7 @@ void Mapper::reset() noexcept {
     pressure_level_.reset(0.0);
     pressure_step_ = 0;
     pulse_frames_ = -1;
+    part_known_ = false;
 }
 
 double Mapper::pressure_of(const Features& f) noexcept {
@@ -82,6 +97,17 @@ double Mapper::frequency_of(const Features& f) noexcept {
     return frequency_.jump(f);
 }
 
+// A pulse's part is unknown from its onset until its decision; from then on its part shapes it.
+void Mapper::apply_part(const Features& f, ControlFrame& frame) noexcept {
+    if (f.onset) part_known_ = false;
+    if (f.part_decided) part_known_ = true, pulse_part_ = f.part;
+    if (!part_known_) return;
+    const PartShape& shape = parts_[static_cast<size_t>(pulse_part_)];
+    frame.amplitude *= shape.gain;
+    if (shape.brightness_hz > 0) frame.frequency_hz = frequency_.shape(shape.brightness_hz);
+    if (shape.decay_ms > 0) frame.decay_ms = shape.decay_ms;
+}
+
 ControlFrame Mapper::map(const Features& f) noexcept {
     ControlFrame frame = envelope_;
     frame.sample = f.frame_end_sample;
@@ -103,6 +129,7 @@ ControlFrame Mapper::map(const Features& f) noexcept {
         frame.square_mix = square_mix_.current();
         frame.flutter_hz = flutter_rate_.current();
     }
+    apply_part(f, frame);
     return frame;
 }
 

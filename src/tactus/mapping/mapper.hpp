@@ -17,7 +17,14 @@
 // follows the mapping, unsmoothed, for mapping.frequency.settle_ms (a hit's first frames mix it
 // with what came before and its click), then keeps that frequency until the next onset, however
 // the brightness of its decay wanders. Off, the frequency is smoothed throughout.
+// By drum part (parts.*): once a pulse's part is decided (parts.settle_ms after its onset;
+// analysis/hit_analysis.hpp) the pulse takes its part's gain, its part's brightness through the
+// frequency mapping (so an actuator's fit of that mapping fits it too) and its part's decay, each
+// where set: a kick low and long, a snare high, hats short and light, the rest of a mix off
+// ("drums only"). Before the decision, and with nothing set, the pulse is the mapping's.
 #pragma once
+
+#include <array>
 
 #include "tactus/analysis/features.hpp"
 #include "tactus/core/units.hpp"
@@ -48,6 +55,11 @@ class Mapper {
     ControlFrame map(const Features& features) noexcept;
 
   private:
+    // What a part sets of its pulses (parts.<part>.*): 0 where it leaves the mapping's.
+    struct PartShape {
+        double gain = 1, brightness_hz = 0, decay_ms = 0;
+    };
+    void apply_part(const Features& features, ControlFrame& frame) noexcept;
     double pressure_of(const Features& features) noexcept;
     double frequency_of(const Features& features) noexcept;
 
@@ -60,6 +72,9 @@ class Mapper {
     int pulse_frames_ = -1;     // frames since the last onset's frame; -1: no pulse yet
     double gate_db_ = -70, frames_per_second_ = 1;
     ControlFrame envelope_;  // attack, decay, sustain from settings
+    std::array<PartShape, kDrumParts> parts_{};
+    bool part_known_ = false;  // the sounding pulse's part is decided: pulse_part_
+    DrumPart pulse_part_ = DrumPart::other;
 };
 
 }  // namespace tactus

@@ -24,6 +24,11 @@ constexpr std::span<const std::string_view> kCurves{kCurveNames};
 constexpr std::span<const std::string_view> kSwitch{kSwitchNames};
 
 constexpr double kLastSource = kFeatureSourceNames.size() - 1;
+// The default mapping reads what each hit added above what was sounding (its loudness and its
+// brightness; analysis/hit_analysis.hpp), so a mix's bed neither strengthens nor brightens it;
+// presets/tfd.toml is the paper's, on the whole mix.
+constexpr double kHitDb = static_cast<double>(FeatureSource::hit_db);
+constexpr double kHitBrightness = static_cast<double>(FeatureSource::hit_brightness_hz);
 constexpr double kLastCurve = kCurveNames.size() - 1;
 
 // Channel bands (paper Table 1) that bound the flutter and pressure settings.
@@ -58,7 +63,7 @@ constexpr ParamSpec kTable[] = {
     // Mapping (paper §6): features -> the vibration program.
     {P::mapping_gate_db, 12, "mapping.gate_db", "dB", real, -120, 0, -70, lin, live, 20,
      "below this loudness the vibration is silent and mapped parameters hold"},
-    {P::amplitude_source, 13, "mapping.amplitude.source", "", choice, 0, kLastSource, 0, lin, live, 0,
+    {P::amplitude_source, 13, "mapping.amplitude.source", "", choice, 0, kLastSource, kHitDb, lin, live, 0,
      "feature mapped to vibration amplitude", kSources},
     {P::amplitude_in_min, 14, "mapping.amplitude.in_min", "", real, -1e6, 1e6, -60, lin, live, 20,
      "source value mapped to out_min"},
@@ -72,7 +77,7 @@ constexpr ParamSpec kTable[] = {
      "lin, log (ratio to ratio) or exp (dB to amplitude)", kCurves},
     {P::amplitude_smoothing_ms, 19, "mapping.amplitude.smoothing_ms", "ms", real, 0, 1000, 0, lin, live, 0,
      "one-pole time constant applied to the mapped amplitude"},
-    {P::frequency_source, 20, "mapping.frequency.source", "", choice, 0, kLastSource, 1, lin, live, 0,
+    {P::frequency_source, 20, "mapping.frequency.source", "", choice, 0, kLastSource, kHitBrightness, lin, live, 0,
      "feature mapped to vibration frequency", kSources},
     {P::frequency_in_min, 21, "mapping.frequency.in_min", "", real, -1e6, 1e6, 100, lin, live, 20,
      "source value mapped to out_min"},
@@ -215,6 +220,32 @@ constexpr ParamSpec kTable[] = {
     {P::onset_low_weight, 81, "onset.low_weight", "", real, 0, 200, 5, lin, live, 0,
      "weight, in spectrum bins, of the rise of the input below 150 Hz in the onset detection "
      "function (kicks; 0 = the spectrum's own bins alone)"},
+    // Mapping by drum part (analysis/hit_analysis.hpp, mapping/mapper.hpp): each part's pulse
+    // its own strength, pitch and length once its part is decided.
+    {P::parts_kick_gain_db, 82, "parts.kick.gain_db", "dB", real, -60, 12, 0, lin, live, 20,
+     "gain of a kick's pulse once its part is decided (-60 = off)"},
+    {P::parts_kick_brightness_hz, 83, "parts.kick.brightness_hz", "Hz", real, 0, 8000, 0, lin, live, 0,
+     "brightness a kick's pulse is mapped from once its part is decided, through the frequency mapping (0 = its own)"},
+    {P::parts_kick_decay_ms, 84, "parts.kick.decay_ms", "ms", real, 0, 5000, 0, lin, live, 0,
+     "decay of a kick's pulse once its part is decided (0 = envelope.decay_ms)"},
+    {P::parts_snare_gain_db, 85, "parts.snare.gain_db", "dB", real, -60, 12, 0, lin, live, 20,
+     "gain of a snare's pulse once its part is decided (-60 = off)"},
+    {P::parts_snare_brightness_hz, 86, "parts.snare.brightness_hz", "Hz", real, 0, 8000, 0, lin, live, 0,
+     "brightness a snare's pulse is mapped from once its part is decided, through the frequency mapping (0 = its own)"},
+    {P::parts_snare_decay_ms, 87, "parts.snare.decay_ms", "ms", real, 0, 5000, 0, lin, live, 0,
+     "decay of a snare's pulse once its part is decided (0 = envelope.decay_ms)"},
+    {P::parts_hat_gain_db, 88, "parts.hat.gain_db", "dB", real, -60, 12, 0, lin, live, 20,
+     "gain of a hi-hat or cymbal's pulse once its part is decided (-60 = off)"},
+    {P::parts_hat_brightness_hz, 89, "parts.hat.brightness_hz", "Hz", real, 0, 8000, 0, lin, live, 0,
+     "brightness a hi-hat or cymbal's pulse is mapped from once its part is decided, through the frequency mapping (0 = its own)"},
+    {P::parts_hat_decay_ms, 90, "parts.hat.decay_ms", "ms", real, 0, 5000, 0, lin, live, 0,
+     "decay of a hi-hat or cymbal's pulse once its part is decided (0 = envelope.decay_ms)"},
+    {P::parts_other_gain_db, 91, "parts.other.gain_db", "dB", real, -60, 12, 0, lin, live, 20,
+     "gain of any other onset (bass, chords, voice)'s pulse once its part is decided (-60 = off)"},
+    {P::parts_other_brightness_hz, 92, "parts.other.brightness_hz", "Hz", real, 0, 8000, 0, lin, live, 0,
+     "brightness any other onset (bass, chords, voice)'s pulse is mapped from once its part is decided, through the frequency mapping (0 = its own)"},
+    {P::parts_other_decay_ms, 93, "parts.other.decay_ms", "ms", real, 0, 5000, 0, lin, live, 0,
+     "decay of any other onset (bass, chords, voice)'s pulse once its part is decided (0 = envelope.decay_ms)"},
 };
 // clang-format on
 

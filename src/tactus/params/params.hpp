@@ -40,8 +40,8 @@ struct ParamSpec {
 
 // Features a mapping can read (analysis outputs), in the order of FeatureSource.
 inline constexpr std::array<std::string_view, 9> kFeatureSourceNames = {
-    "loudness_db", "brightness_hz",    "noisiness", "tonality",         "pitch_hz",
-    "pitch_confidence", "onset_odf", "hit_db", "hit_brightness_hz"};
+    "loudness_db",      "brightness_hz", "noisiness", "tonality",         "pitch_hz",
+    "pitch_confidence", "onset_odf",     "hit_db",    "hit_brightness_hz"};
 enum class FeatureSource {
     loudness_db,
     brightness_hz,
@@ -114,6 +114,13 @@ enum class P : int {
     parts_settle_ms,
     onset_high_weight,
     onset_low_weight,
+#define TACTUS_PART_IDS(part) \
+    parts_##part##_gain_db, parts_##part##_brightness_hz, parts_##part##_decay_ms
+    TACTUS_PART_IDS(kick),
+    TACTUS_PART_IDS(snare),
+    TACTUS_PART_IDS(hat),
+    TACTUS_PART_IDS(other),
+#undef TACTUS_PART_IDS
     count
 };
 

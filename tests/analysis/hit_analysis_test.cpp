@@ -1,0 +1,119 @@
+// What a hit adds (analysis/hit_analysis.hpp) through the whole analysis: a hit over a steady
+// bed reads its own level, not the bed's; a low sine burst is a kick, a burst of noise above
+// 6 kHz a hat, a burst of mid noise with little below 150 Hz a snare, a tone with nothing above
+// 6 kHz is none of them; and the band powers (analysis/band_power.hpp) hold their bands.
+#include "tactus/analysis/hit_analysis.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "support/signals.hpp"
+#include "tactus/analysis/analyzer.hpp"
+#include "tactus/analysis/band_power.hpp"
+
+namespace tactus {
+namespace {
+
+constexpr double kRateHz = 48000;
+
+// The part and strength of the first onset the analysis decides in `x` after 0.4 s (the bursts
+// come at 0.5 s; a bed's own start is an onset too).
+struct Heard {
+    bool decided = false;
+    DrumPart part = DrumPart::other;
+    double strength_db = -120;
+};
+Heard first_hit(const std::vector<float>& x) {
+    Analyzer analyzer;
+    analyzer.prepare({.sample_rate_hz = kRateHz, .max_block = 256}, Settings{});
+    Heard heard;
+    bool after_start = false;
+    for (size_t done = 0; done < x.size() && !heard.decided;) {
+        const int chunk =
+            std::min(static_cast<int>(x.size() - done), analyzer.samples_to_next_frame());
+        if (analyzer.process(x.data() + done, chunk)) {
+            const Features& f = analyzer.analyse();
+            if (f.onset) after_start = f.onset_sample >= static_cast<int64_t>(0.4 * kRateHz);
+            if (f.part_decided && after_start) heard = {true, f.part, f.hit_strength_db};
+        }
+        done += static_cast<size_t>(chunk);
+    }
+    return heard;
+}
+
+// 0.5 s of `bed`, then a burst of `burst` from 0.5 s on, 0.1 s long, added.
+std::vector<float> with_burst(const std::vector<float>& bed, const std::vector<float>& burst) {
+    std::vector<float> x = bed;
+    const auto at = static_cast<size_t>(0.5 * kRateHz);
+    for (size_t i = 0; i < burst.size() && at + i < x.size(); ++i) x[at + i] += burst[i];
+    return x;
+}
+
+std::vector<float> sine(double hz, double amplitude, double seconds) {
+    return test::sine(hz, kRateHz, static_cast<size_t>(seconds * kRateHz), amplitude);
+}
+
+// White noise in a band, through 4th-order Butterworth high- and low-passes.
+std::vector<float> band_noise(double amplitude, double seconds, double low_hz, double high_hz) {
+    std::vector<float> x = test::white_noise(static_cast<size_t>(seconds * kRateHz), 7);
+    Biquad sections[4];
+    for (int s = 0; s < 2; ++s) {
+        sections[s].set(BiquadCoefficients::highpass(low_hz, butterworth_q(4, s), kRateHz));
+        sections[s + 2].set(BiquadCoefficients::lowpass(high_hz, butterworth_q(4, s), kRateHz));
+    }
+    for (float& v : x) {
+        double y = v;
+        for (Biquad& section : sections) y = section.process(y);
+        v = static_cast<float>(amplitude * y);
+    }
+    return x;
+}
+
+TEST(HitAnalysis, AHitOverASteadyBedReadsItsOwnLevel) {
+    const std::vector<float> silence(static_cast<size_t>(kRateHz), 0.0f);
+    const std::vector<float> snare = band_noise(0.3, 0.1, 300, 5000);
+    const Heard alone = first_hit(with_burst(silence, snare));
+    const Heard over_bed = first_hit(with_burst(sine(220, 0.5, 1.0), snare));  // 8 dB louder
+    ASSERT_TRUE(alone.decided && over_bed.decided);
+    EXPECT_NEAR(over_bed.strength_db, alone.strength_db, 2.0);
+}
+
+TEST(HitAnalysis, WhereAHitAddsPowerSaysItsPart) {
+    const std::vector<float> silence(static_cast<size_t>(kRateHz), 0.0f);
+    EXPECT_EQ(first_hit(with_burst(silence, sine(55, 0.8, 0.1))).part, DrumPart::kick);
+    EXPECT_EQ(first_hit(with_burst(silence, band_noise(0.5, 0.1, 7000, 20000))).part,
+              DrumPart::hat);
+    EXPECT_EQ(first_hit(with_burst(silence, band_noise(0.5, 0.1, 300, 5000))).part,
+              DrumPart::snare);
+    std::vector<float> chord = sine(330, 0.3, 0.1), fifth = sine(495, 0.3, 0.1);
+    for (size_t i = 0; i < chord.size(); ++i) chord[i] += fifth[i];
+    EXPECT_EQ(first_hit(with_burst(silence, chord)).part, DrumPart::other);
+}
+
+double band_power_of(BandPower::Band band, double hz, double rate_hz) {
+    BandPower power;
+    power.prepare(band, rate_hz, 64);  // 64 frames of 64 samples: whole periods, nearly
+    const std::vector<float> x = test::sine(hz, rate_hz, static_cast<size_t>(0.3 * rate_hz));
+    BandPower::Power last;
+    for (size_t done = 0; done < x.size(); done += 64) {
+        power.process(x.data() + done, static_cast<int>(std::min<size_t>(64, x.size() - done)));
+        last = power.frame();
+    }
+    return last.mean;
+}
+
+TEST(BandPower, EachBandHoldsItsOwnEnd) {
+    using enum BandPower::Band;
+    EXPECT_NEAR(band_power_of(low, 60, kRateHz), 0.5, 0.03);  // a unit sine's mean power
+    EXPECT_LT(band_power_of(low, 1000, kRateHz), 0.5e-4);
+    // 6-10 kHz from two 4th-order edges: within 3 dB of a unit sine's mean power at 7.7 kHz.
+    EXPECT_GT(band_power_of(high, 7700, kRateHz), 0.25);
+    EXPECT_LT(band_power_of(high, 7700, kRateHz), 0.55);
+    EXPECT_LT(band_power_of(high, 1000, kRateHz), 0.5e-4);
+    EXPECT_EQ(band_power_of(high, 7000, 22050), 0.0);  // below 32 kHz: no high band
+}
+
+}  // namespace
+}  // namespace tactus
