@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -45,14 +45,14 @@ TEST_F(RunFileTest, OutputMatchesTheEngineAndProgressReachesTheEnd) {
     std::vector<float> streamed;
     int64_t last_done = -1, last_total = -1;
     int reports = 0;
-    const RunSummary summary =
-        run_file(path, engine,
-                 {[&](const float* const* v, int n) { streamed.insert(streamed.end(), v[0], v[0] + n); },
-                  [&](int64_t done, int64_t total) {
-                      EXPECT_GE(done, last_done);
-                      last_done = done, last_total = total;
-                      ++reports;
-                  }});
+    const RunSummary summary = run_file(
+        path, engine,
+        {[&](const float* const* v, int n) { streamed.insert(streamed.end(), v[0], v[0] + n); },
+         [&](int64_t done, int64_t total) {
+             EXPECT_GE(done, last_done);
+             last_done = done, last_total = total;
+             ++reports;
+         }});
     EXPECT_EQ(summary.sample_rate_hz, fs);
     EXPECT_EQ(summary.input_channels, 1);
     EXPECT_EQ(summary.frames, static_cast<int64_t>(drums.audio.size()));
@@ -77,8 +77,9 @@ class FeatureList final : public FrameObserver {
 // hop), which decides the last onset's part.
 void expect_same_features(const std::vector<Features>& a, const std::vector<Features>& b) {
     const Settings defaults;
-    const auto padding_frames = static_cast<size_t>(
-        std::ceil(defaults[P::parts_settle_ms] / defaults[P::analysis_hop_ms])) + 2;
+    const auto padding_frames = static_cast<size_t>(std::ceil(defaults[P::parts_settle_ms] /
+                                                              defaults[P::analysis_hop_ms])) +
+                                2;
     ASSERT_GE(a.size(), b.size());
     ASSERT_LE(a.size(), b.size() + padding_frames);
     for (size_t i = 0; i < b.size(); ++i) {

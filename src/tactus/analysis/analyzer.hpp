@@ -16,10 +16,10 @@
 #include <cmath>
 #include <vector>
 
+#include "tactus/analysis/band_power.hpp"
 #include "tactus/analysis/brightness.hpp"
 #include "tactus/analysis/dc_blocker.hpp"
 #include "tactus/analysis/features.hpp"
-#include "tactus/analysis/band_power.hpp"
 #include "tactus/analysis/hit_analysis.hpp"
 #include "tactus/analysis/loudness.hpp"
 #include "tactus/analysis/noisiness.hpp"

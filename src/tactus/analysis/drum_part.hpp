@@ -9,8 +9,7 @@
 namespace tactus {
 
 enum class DrumPart : uint8_t { kick, snare, hat, other };
-inline constexpr std::array<std::string_view, 4> kDrumPartNames = {"kick", "snare", "hat",
-                                                                   "other"};
+inline constexpr std::array<std::string_view, 4> kDrumPartNames = {"kick", "snare", "hat", "other"};
 inline constexpr int kDrumParts = static_cast<int>(kDrumPartNames.size());
 
 inline std::string_view name_of(DrumPart part) {

@@ -19,16 +19,17 @@ struct Features {
     bool onset = false;            // an onset was decided at frame_end_sample
     int64_t onset_sample = 0;      // its estimated start (valid when onset)
     // What the latest hit added above what was sounding before it (analysis/hit_analysis.hpp).
-    double hit_db = -120;          // its loudness now, dB LKFS scale
-    double hit_brightness_hz = 0;  // its brightness
+    double hit_db = -120;             // its loudness now, dB LKFS scale
+    double hit_brightness_hz = 0;     // its brightness
     DrumPart part = DrumPart::other;  // the latest hit's part (decided settle_ms after its onset)
     bool part_decided = false;        // ... on this frame
     double hit_strength_db = -120;    // the latest hit's strongest level so far
 };
 
 // The analysis by cost: loudness (a K filter on every sample), spectrum (brightness, noisiness
-// and what each hit adds, with its part: an FFT every hop) and pitch (YIN, as much as the rest together). Onsets are always
-// computed: they trigger the envelope. A group nothing reads is skipped and keeps its default.
+// and what each hit adds, with its part: an FFT every hop) and pitch (YIN, as much as the rest
+// together). Onsets are always computed: they trigger the envelope. A group nothing reads is
+// skipped and keeps its default.
 struct FeatureSet {
     bool loudness = true, spectrum = true, pitch = true;
 

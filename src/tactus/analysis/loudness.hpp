@@ -22,7 +22,7 @@ class Loudness {
     // Instead of process(): the K-weighted power of each sample, summed over the channels.
     void process_power(const float* power, int count) noexcept;
     double loudness_db() const noexcept { return db_of(mean_square()); }  // the newest window's
-    double mean_square() const noexcept;  // K-weighted, over the newest window
+    double mean_square() const noexcept;               // K-weighted, over the newest window
     static double db_of(double mean_square) noexcept;  // LKFS scale
 
   private:

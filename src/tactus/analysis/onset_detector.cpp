@@ -34,7 +34,8 @@ void OnsetDetector::prepare(const ProcessSpec& spec, int hop_samples, const Onse
     const double band_lags_ms[2] = {kLowBandLagMs, kLagMs};
     for (size_t b = 0; b < bands_.size(); ++b) {
         bands_[b].lag_frames = std::max(
-            1, static_cast<int>(std::lround(band_lags_ms[b] * 1e-3 * sample_rate_hz / hop_samples)));
+            1,
+            static_cast<int>(std::lround(band_lags_ms[b] * 1e-3 * sample_rate_hz / hop_samples)));
         bands_[b].past.assign(static_cast<size_t>(2 * bands_[b].lag_frames), 0.0f);
     }
     rise_.assign(static_cast<size_t>(stft_.bins()), 0.0f);

@@ -52,8 +52,7 @@ class OnsetDetector {
     void set_thresholds(const OnsetSettings& settings) noexcept;
     // Analyses the frame ending at the newest sample of `history`, with the bands' mean power
     // over the same window ({low, high}; 0 without one).
-    OnsetDecision analyse(const SampleHistory& history,
-                          std::array<double, 2> band_power) noexcept;
+    OnsetDecision analyse(const SampleHistory& history, std::array<double, 2> band_power) noexcept;
     int span_samples() const { return stft_.window_samples() + hop_samples_; }
     // The power spectrum of the frame analyse() last read.
     const StftFrame& frame() const { return stft_; }
