@@ -77,7 +77,9 @@ TEST(HitAnalysis, AHitOverASteadyBedReadsItsOwnLevel) {
     const Heard alone = first_hit(with_burst(silence, snare));
     const Heard over_bed = first_hit(with_burst(sine(220, 0.5, 1.0), snare));  // 8 dB louder
     ASSERT_TRUE(alone.decided && over_bed.decided);
-    EXPECT_NEAR(over_bed.strength_db, alone.strength_db, 2.0);
+    // Within 3 dB: the 10 ms loudness of a 220 Hz tone ripples by about 5 % of its power, a
+    // third of a hit 8 dB below it.
+    EXPECT_NEAR(over_bed.strength_db, alone.strength_db, 3.0);
 }
 
 TEST(HitAnalysis, WhereAHitAddsPowerSaysItsPart) {
@@ -112,7 +114,7 @@ TEST(BandPower, EachBandHoldsItsOwnEnd) {
     EXPECT_GT(band_power_of(high, 7700, kRateHz), 0.25);
     EXPECT_LT(band_power_of(high, 7700, kRateHz), 0.55);
     EXPECT_LT(band_power_of(high, 1000, kRateHz), 0.5e-4);
-    EXPECT_EQ(band_power_of(high, 7000, 22050), 0.0);  // below 32 kHz: no high band
+    EXPECT_EQ(band_power_of(high, 7000, 16000), 0.0);  // a 16 kHz input: no high band
 }
 
 }  // namespace

@@ -1,13 +1,16 @@
 #include "tactus/analysis/added_spectrum.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace tactus {
 
-void AddedSpectrum::prepare(int bins, int hop_samples, int longest_wait_samples) {
+void AddedSpectrum::prepare(int bins, int hop_samples, int longest_wait_samples,
+                            double sample_rate_hz) {
     bins_ = bins;
     hop_samples_ = std::max(1, hop_samples);
-    frames_ = longest_wait_samples / hop_samples_ + 2;
+    margin_samples_ = static_cast<int>(std::lround(kMarginMs * 1e-3 * sample_rate_hz));
+    frames_ = (longest_wait_samples + margin_samples_) / hop_samples_ + 2;
     ring_.assign(static_cast<size_t>(frames_) * static_cast<size_t>(bins_), 0.0f);
     reference_.assign(static_cast<size_t>(bins_), 0.0f);
     added_.assign(static_cast<size_t>(bins_), 0.0f);
@@ -27,9 +30,9 @@ void AddedSpectrum::analyse(std::span<const float> powers, int64_t now,
     position_ = (position_ + 1) % frames_;
     std::copy_n(powers.data(), bins_, ring_.data() + static_cast<size_t>(position_) * bins_);
     if (onset_start >= 0) {
-        // The last frame that ended at or before the hit's start: what was already sounding.
-        const auto back = static_cast<int>(
-            std::min<int64_t>((now - onset_start + hop_samples_ - 1) / hop_samples_, frames_ - 1));
+        // The last frame that ended kMarginMs or more before the hit's start.
+        const auto back = static_cast<int>(std::min<int64_t>(
+            (now - onset_start + margin_samples_ + hop_samples_ - 1) / hop_samples_, frames_ - 1));
         const int slot = (position_ + frames_ - back) % frames_;
         std::copy_n(ring_.data() + static_cast<size_t>(slot) * bins_, bins_, reference_.data());
     }

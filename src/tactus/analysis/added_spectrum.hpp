@@ -1,8 +1,9 @@
-// What a hit adds to a stream of power spectra: at each onset the spectrum of the last frame
-// that ended before the hit began is kept as what was already sounding (bass, chords, a voice,
-// the previous hit's tail); every frame from then to the next onset, added() is the newest
-// spectrum less that one, bin by bin, where positive. A stationary bed cancels; a hit over it
-// reads as it would alone (the transient's energy above what was sounding).
+// What a hit adds to a stream of power spectra: at each onset the spectrum of the last frame that
+// ended kMarginMs before the hit began is kept as what was already sounding (bass, chords, a
+// voice, the previous hit's tail; the margin, so that a start estimated a little late does not
+// count the hit's own beginning as the bed); every frame from then to the next onset, added() is
+// the newest spectrum less that one, bin by bin, where positive. A stationary bed
+// cancels; a hit over it reads as it would alone (the transient's energy above what was sounding).
 // Audio thread: analyse(); prepare() allocates.
 #pragma once
 
@@ -14,9 +15,11 @@ namespace tactus {
 
 class AddedSpectrum {
   public:
+    static constexpr double kMarginMs = 1;
+
     // `longest_wait_samples`: the most analysis samples an onset's start can lie before the frame
     // that decides it (the ring of past spectra covers it).
-    void prepare(int bins, int hop_samples, int longest_wait_samples);
+    void prepare(int bins, int hop_samples, int longest_wait_samples, double sample_rate_hz);
     void reset() noexcept;
     // One frame ending at analysis sample `now`, and the start of an onset this frame decided
     // (< 0: none).
@@ -29,7 +32,7 @@ class AddedSpectrum {
   private:
     std::vector<float> ring_;  // the last frames_ spectra, bins_ each
     std::vector<float> reference_, added_;
-    int bins_ = 0, frames_ = 0, position_ = 0, hop_samples_ = 1;
+    int bins_ = 0, frames_ = 0, position_ = 0, hop_samples_ = 1, margin_samples_ = 0;
     double added_sum_ = 0;
 };
 

@@ -66,7 +66,7 @@ void Analyzer::prepare(const ProcessSpec& spec, const Settings& s) {
     high_band_.prepare(BandPower::Band::high, sample_rate_hz_, band_window_frames);
     hits_.prepare({onsets_.frame().bins(), onsets_.frame().bin_hz()},
                   {stft_.bins(), stft_.bin_hz()}, analysis_rate, hop_, onsets_.span_samples(),
-                  hit_settings(s));
+                  high_band_.active(), hit_settings(s));
     history_.prepare(
         std::max({stft_.window_samples(), pitch_.span_samples(), onsets_.span_samples()}));
     clean_.assign(static_cast<size_t>(max_inputs), 0.0f);

@@ -5,13 +5,13 @@
 //         voice have little energy, so hats stay audible inside a mix;
 //   low:  below 150 Hz, a kick's body: a sub kick lights one or two of the analysis spectrum's
 //         bins, which a busy bed's flux outweighs.
-// 4th-order Butterworth filters at the input rate (the high band's top edge keeps it the same
-// band at every rate from 32 kHz up), squared, read at each analysis
+// 4th-order Butterworth filters at the input rate (the high band's top edge keeps it about the
+// same band at every rate from 22.05 kHz up), squared, read at each analysis
 // frame as the mean power over the last window_frames frames: as it is (for the onset detection
 // function, which decides sooner on it) and weighted by a Hann window as the onset detector's
 // spectrum is (stft_frame.hpp), so that the two read a hit's shares alike. An input rate whose
-// Nyquist frequency is below kHighTopHz * kTopMargin has no high band: its power stays 0 (below
-// 32 kHz the filters' warping near Nyquist would make it another band at each rate).
+// Nyquist frequency is below kHighTopHz * kTopMargin has no high band: its power stays 0 (a
+// 16 kHz input).
 // Audio thread: process(), frame(); prepare() allocates.
 #pragma once
 
@@ -26,9 +26,10 @@ class BandPower {
   public:
     enum class Band { low, high };
     static constexpr double kLowEdgeHz = 150;
-    static constexpr double kHighEdgeHz = 6000, kHighTopHz = 10000, kTopMargin = 1.5;
+    static constexpr double kHighEdgeHz = 6000, kHighTopHz = 10000, kTopMargin = 1.05;
 
     void prepare(Band band, double sample_rate_hz, int window_frames);
+    bool active() const { return active_; }  // false: a high band the input rate cannot hold
     void reset() noexcept;
     void process(const float* samples, int count) noexcept;
 

@@ -16,6 +16,8 @@ constexpr double kSilentDb = Loudness::kFloorDb;
 // Where a drum's added power lies (Sonic Pi and General MIDI kits; eval/results.md): a kick's
 // body below 150 Hz, a snare's shell at 150 Hz-1 kHz and its wires above, a hat's above 6 kHz.
 constexpr double kLowEdgeHz = 150, kMidEdgeHz = 1000;
+// Without the high band (inputs below 32 kHz), the analysis's own top stands in for it.
+constexpr double kTopEdgeHz = 4000;
 // The shares that tell them apart, fitted on the tuning part of the music corpus
 // (eval/music_corpus.py; part accuracy on both parts in eval/results.md).
 constexpr double kHatAboveShare = 0.2, kHatLowShare = 0.2;
@@ -25,18 +27,21 @@ constexpr double kDrumAboveShare = 0.01;
 }  // namespace
 
 void HitAnalysis::prepare(SpectrumShape fast, SpectrumShape fine, double sample_rate_hz,
-                          int hop_samples, int longest_wait_samples, const HitSettings& settings) {
+                          int hop_samples, int longest_wait_samples, bool high_band,
+                          const HitSettings& settings) {
     sample_rate_hz_ = sample_rate_hz;
+    high_band_ = high_band;
     for (AddedSpectrum* one : {&loudness_, &low_, &high_})
-        one->prepare(1, hop_samples, longest_wait_samples);
-    fast_.prepare(fast.bins, hop_samples, longest_wait_samples);
-    fine_.prepare(fine.bins, hop_samples, longest_wait_samples);
+        one->prepare(1, hop_samples, longest_wait_samples, sample_rate_hz);
+    fast_.prepare(fast.bins, hop_samples, longest_wait_samples, sample_rate_hz);
+    fine_.prepare(fine.bins, hop_samples, longest_wait_samples, sample_rate_hz);
     fine_magnitude_.assign(static_cast<size_t>(fine.bins), 0.0f);
     const auto bin_of = [&](double hz) {
         return std::clamp(static_cast<int>(std::ceil(hz / fast.bin_hz)), 1, fast.bins);
     };
     low_bins_ = bin_of(kLowEdgeHz);
     mid_bins_ = bin_of(kMidEdgeHz);
+    top_bins_ = bin_of(kTopEdgeHz);
     brightness_.prepare(fine.bins, fine.bin_hz, settings.brightness_max_hz);
     set_live(settings);
     reset();
@@ -100,13 +105,15 @@ DrumPart HitAnalysis::classify() const noexcept {
     const int bins = static_cast<int>(added.size());
     const double low = kBinsPerMeanPower * low_.added_sum();
     const double mid = sum_of(added.data() + low_bins_, mid_bins_ - low_bins_);
-    const double upper = sum_of(added.data() + mid_bins_, bins - mid_bins_);
-    const double above = kBinsPerMeanPower * high_.added_sum();
+    const int upper_end = high_band_ ? bins : top_bins_;
+    const double upper = sum_of(added.data() + mid_bins_, upper_end - mid_bins_);
+    const double above = high_band_ ? kBinsPerMeanPower * high_.added_sum()
+                                    : sum_of(added.data() + top_bins_, bins - top_bins_);
     const double total = low + mid + upper + above;
     if (total <= 0) return DrumPart::other;
     if (above > kHatAboveShare * total && low < kHatLowShare * total) return DrumPart::hat;
     if (low >= kKickLowPerMid * mid && low > kKickLowShare * total) return DrumPart::kick;
-    if (above < kDrumAboveShare * total) return DrumPart::other;
+    if (high_band_ && above < kDrumAboveShare * total) return DrumPart::other;
     return DrumPart::snare;
 }
 

@@ -39,8 +39,10 @@ class HitAnalysis {
   public:
     // `longest_wait_samples`: the most analysis samples an onset's start can lie before the
     // frame that decides it.
+    // `high_band`: the input has the 6-10 kHz band (analysis/band_power.hpp); without it the
+    // part reads the fast spectrum's top in its place and never says `other`.
     void prepare(SpectrumShape fast, SpectrumShape fine, double sample_rate_hz, int hop_samples,
-                 int longest_wait_samples, const HitSettings& settings);
+                 int longest_wait_samples, bool high_band, const HitSettings& settings);
     void reset() noexcept;
     void set_live(const HitSettings& settings) noexcept;  // audio thread
 
@@ -69,7 +71,8 @@ class HitAnalysis {
     AddedSpectrum loudness_, low_, high_;  // each a spectrum of one bin
     Brightness brightness_;
     std::vector<float> fine_magnitude_;
-    int low_bins_ = 0, mid_bins_ = 0;  // band edges in fast bins (classify())
+    int low_bins_ = 0, mid_bins_ = 0, top_bins_ = 0;  // band edges in fast bins (classify())
+    bool high_band_ = true;
     double sample_rate_hz_ = 16000;
     int64_t settle_samples_ = 0, hit_start_ = -1;
     double level_db_ = -120, brightness_hz_ = 0, peak_db_ = -120;
