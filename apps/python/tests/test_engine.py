@@ -75,9 +75,10 @@ def test_a_live_change_mid_file_matches_set_from_there_on(amen_audio, cli, amen,
     assert len(changed) and changed[0] < 0.5 * rate, "the change is heard promptly"
     # The change glides (at most 50 ms) and what sounded before it decays: two seconds later
     # the output is --set's, sample for sample to within rounding (a smoothed value that came
-    # from elsewhere can settle an ulp away: -180 dB), and not the unchanged output.
+    # from elsewhere can settle an ulp or two of the float output away: -160 dB), and not the
+    # unchanged output.
     settled = cut + 2 * int(rate)
-    assert np.max(np.abs(y[settled:] - with_set[settled:len(y)])) <= 1e-9
+    assert np.max(np.abs(y[settled:] - with_set[settled:len(y)])) <= 1e-8
     assert not np.array_equal(y[settled:], plain[settled:len(y)])
 
 
