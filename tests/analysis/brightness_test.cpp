@@ -9,16 +9,15 @@
 #include <vector>
 
 #include "support/signals.hpp"
-#include "tactus/dsp/sample_history.hpp"
 #include "tactus/analysis/stft_frame.hpp"
+#include "tactus/dsp/sample_history.hpp"
 
 namespace tactus {
 namespace {
 
 constexpr double kWholeBand = 1e9;
 
-double centroid_of(const std::vector<float>& x, double fs, int window,
-                   double max_hz = kWholeBand) {
+double centroid_of(const std::vector<float>& x, double fs, int window, double max_hz = kWholeBand) {
     StftFrame stft;
     stft.prepare(window, fs);
     SampleHistory history;

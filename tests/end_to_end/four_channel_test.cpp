@@ -11,10 +11,10 @@
 
 #include "support/engine_blocks.hpp"
 #include "support/signals.hpp"
-#include "tactus/io/preset.hpp"
 #include "tactus/core/units.hpp"
 #include "tactus/engine/engine.hpp"
 #include "tactus/io/audio_reader.hpp"
+#include "tactus/io/preset.hpp"
 #include "tactus/perception/channels.hpp"
 
 namespace tactus {
