@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tactus/analysis/band_power.hpp"
 #include "tactus/analysis/loudness.hpp"
 #include "tactus/core/fast_math.hpp"
 
@@ -14,8 +15,9 @@ namespace {
 constexpr double kBinsPerMeanPower = 2 * 1.5;
 constexpr double kSilentDb = Loudness::kFloorDb;
 // Where a drum's added power lies (Sonic Pi and General MIDI kits; eval/results.md): a kick's
-// body below 150 Hz, a snare's shell at 150 Hz-1 kHz and its wires above, a hat's above 6 kHz.
-constexpr double kLowEdgeHz = 150, kMidEdgeHz = 1000;
+// body in the low band (below BandPower::kLowEdgeHz), a snare's shell from there to kMidEdgeHz
+// and its wires above, a hat's in the high band.
+constexpr double kMidEdgeHz = 1000;
 // Without the high band (inputs below 32 kHz), the analysis's own top stands in for it.
 constexpr double kTopEdgeHz = 4000;
 // The shares that tell them apart, fitted on the tuning part of the music corpus
@@ -30,7 +32,7 @@ void HitAnalysis::prepare(SpectrumShape fast, SpectrumShape fine, double sample_
                           int hop_samples, int longest_wait_samples, bool high_band,
                           const HitSettings& settings) {
     sample_rate_hz_ = sample_rate_hz;
-    high_band_ = high_band;
+    has_high_band_ = high_band;
     for (AddedSpectrum* one : {&loudness_, &low_, &high_})
         one->prepare(1, hop_samples, longest_wait_samples, sample_rate_hz);
     fast_.prepare(fast.bins, hop_samples, longest_wait_samples, sample_rate_hz);
@@ -39,7 +41,7 @@ void HitAnalysis::prepare(SpectrumShape fast, SpectrumShape fine, double sample_
     const auto bin_of = [&](double hz) {
         return std::clamp(static_cast<int>(std::ceil(hz / fast.bin_hz)), 1, fast.bins);
     };
-    low_bins_ = bin_of(kLowEdgeHz);
+    low_bins_ = bin_of(BandPower::kLowEdgeHz);
     mid_bins_ = bin_of(kMidEdgeHz);
     top_bins_ = bin_of(kTopEdgeHz);
     brightness_.prepare(fine.bins, fine.bin_hz, settings.brightness_max_hz);
@@ -105,15 +107,15 @@ DrumPart HitAnalysis::classify() const noexcept {
     const int bins = static_cast<int>(added.size());
     const double low = kBinsPerMeanPower * low_.added_sum();
     const double mid = sum_of(added.data() + low_bins_, mid_bins_ - low_bins_);
-    const int upper_end = high_band_ ? bins : top_bins_;
+    const int upper_end = has_high_band_ ? bins : top_bins_;
     const double upper = sum_of(added.data() + mid_bins_, upper_end - mid_bins_);
-    const double above = high_band_ ? kBinsPerMeanPower * high_.added_sum()
-                                    : sum_of(added.data() + top_bins_, bins - top_bins_);
+    const double above = has_high_band_ ? kBinsPerMeanPower * high_.added_sum()
+                                        : sum_of(added.data() + top_bins_, bins - top_bins_);
     const double total = low + mid + upper + above;
     if (total <= 0) return DrumPart::other;
     if (above > kHatAboveShare * total && low < kHatLowShare * total) return DrumPart::hat;
     if (low >= kKickLowPerMid * mid && low > kKickLowShare * total) return DrumPart::kick;
-    if (high_band_ && above < kDrumAboveShare * total) return DrumPart::other;
+    if (has_high_band_ && above < kDrumAboveShare * total) return DrumPart::other;
     return DrumPart::snare;
 }
 

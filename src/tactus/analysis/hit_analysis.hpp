@@ -72,7 +72,7 @@ class HitAnalysis {
     Brightness brightness_;
     std::vector<float> fine_magnitude_;
     int low_bins_ = 0, mid_bins_ = 0, top_bins_ = 0;  // band edges in fast bins (classify())
-    bool high_band_ = true;
+    bool has_high_band_ = true;
     double sample_rate_hz_ = 16000;
     int64_t settle_samples_ = 0, hit_start_ = -1;
     double level_db_ = -120, brightness_hz_ = 0, peak_db_ = -120;

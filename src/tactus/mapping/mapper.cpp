@@ -10,12 +10,15 @@
 namespace tactus {
 namespace {
 // The first of a part's parameters (gain_db, brightness_hz, decay_ms follow it in the table).
-P part_first(DrumPart part) {
-    return static_cast<P>(static_cast<int>(P::parts_kick_gain_db) + 3 * static_cast<int>(part));
-}
-P next(P first, int by) {
+constexpr P next(P first, int by) {
     return static_cast<P>(static_cast<int>(first) + by);
 }
+constexpr P part_first(DrumPart part) {
+    return next(P::parts_kick_gain_db, 3 * static_cast<int>(part));
+}
+static_assert(part_first(DrumPart::other) == P::parts_other_gain_db &&
+                  next(part_first(DrumPart::hat), 2) == P::parts_hat_decay_ms,
+              "each part's three parameters, in DrumPart's order");
 using perception::Channel;
 // Innervation density P / NPI, human fingerpad (paper Table 1).
 constexpr double kFlutterEqualizeGain = perception::info(Channel::P).innervation_per_cm2 /
