@@ -17,12 +17,12 @@ void list_devices() {
         try {
             RtAudio audio(api);
             audio.showWarnings(false);
-            const unsigned int count = audio.getDeviceCount();
-            if (count == 0)
+            const std::vector<RtAudio::DeviceInfo> infos = live::probe_devices(audio);
+            if (infos.empty())
                 std::cout << (api == RtAudio::UNIX_JACK ? "  no devices (no JACK server running)\n"
                                                         : "  no devices\n");
-            for (unsigned int i = 0; i < count; ++i) {
-                const RtAudio::DeviceInfo info = audio.getDeviceInfo(i);
+            for (size_t i = 0; i < infos.size(); ++i) {
+                const RtAudio::DeviceInfo& info = infos[i];
                 if (!info.probed) continue;
                 const std::string rates = fmt::format("{}", fmt::join(info.sampleRates, " "));
                 std::cout << fmt::format("  {}: {}  in {}  out {}  rates {}{}{}\n", i, info.name,

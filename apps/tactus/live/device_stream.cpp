@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <charconv>
+#include <chrono>
 #include <stdexcept>
+#include <thread>
 
 namespace tactus::live {
 namespace {
@@ -35,28 +37,50 @@ RtAudio::Api backend_named(const std::string& name) {
     return api;
 }
 
-unsigned int find_device(RtAudio& audio, const std::string& name, bool output) {
+std::vector<RtAudio::DeviceInfo> probe_devices(RtAudio& audio) {
     const unsigned int count = audio.getDeviceCount();
-    std::vector<std::string> names;
-    for (unsigned int i = 0; i < count; ++i) names.push_back(audio.getDeviceInfo(i).name);
+    std::vector<RtAudio::DeviceInfo> infos(count);
+    // A JACK probe opens a client of its own, which a server busy with a graph change can refuse
+    // for a moment: such a device reads as unprobed, with no channels. (An ALSA device that
+    // cannot be opened stays so: it is not asked again.)
+    const int attempts = audio.getCurrentApi() == RtAudio::UNIX_JACK ? 20 : 1;
+    for (unsigned int i = 0; i < count; ++i) {
+        for (int attempt = 0; attempt < attempts; ++attempt) {
+            infos[i] = audio.getDeviceInfo(i);
+            if (infos[i].probed || attempt + 1 == attempts) break;
+            std::this_thread::sleep_for(std::chrono::milliseconds(25));
+        }
+    }
+    return infos;
+}
+
+Device find_device(RtAudio& audio, const std::string& name, bool output) {
+    const std::vector<RtAudio::DeviceInfo> infos = probe_devices(audio);
+    const auto found = [&](unsigned int i) { return Device{i, infos[i]}; };
+    if (name.empty()) {
+        const unsigned int id =
+            output ? audio.getDefaultOutputDevice() : audio.getDefaultInputDevice();
+        if (id < infos.size()) return found(id);
+    }
+    const auto count = static_cast<unsigned int>(infos.size());
     const auto usable = [&](unsigned int i) {
-        const RtAudio::DeviceInfo info = audio.getDeviceInfo(i);
-        return output ? info.outputChannels > 0 : info.inputChannels > 0;
+        return output ? infos[i].outputChannels > 0 : infos[i].inputChannels > 0;
     };
     unsigned int index = 0;
     if (const auto [end, error] = std::from_chars(name.data(), name.data() + name.size(), index);
         error == std::errc() && end == name.data() + name.size() && index < count)
-        return index;
+        return found(index);
     for (unsigned int i = 0; i < count; ++i)
-        if (names[i] == name && usable(i)) return i;
+        if (infos[i].name == name && usable(i)) return found(i);
     std::vector<unsigned int> partial;
     for (unsigned int i = 0; i < count; ++i)
-        if (lower(names[i]).find(lower(name)) != std::string::npos && usable(i))
+        if (lower(infos[i].name).find(lower(name)) != std::string::npos && usable(i))
             partial.push_back(i);
-    if (partial.size() == 1) return partial[0];
+    if (partial.size() == 1) return found(partial[0]);
     std::string known;
     for (unsigned int i = 0; i < count; ++i)
-        if (usable(i)) known += fmt::format("{}{}: {}", known.empty() ? "" : ", ", i, names[i]);
+        if (usable(i))
+            known += fmt::format("{}{}: {}", known.empty() ? "" : ", ", i, infos[i].name);
     throw std::runtime_error(
         fmt::format("{} device '{}': {} ({} devices: {})", output ? "output" : "input", name,
                     partial.empty() ? "no such device" : "more than one device matches",
@@ -71,11 +95,9 @@ DeviceStream::DeviceStream(const StreamRequest& request) {
             throw std::runtime_error(fmt::format("{}: no devices (is the server running?)",
                                                  RtAudio::getApiName(audio_->getCurrentApi())));
         RtAudio::StreamParameters out_params, in_params;
-        out_params.deviceId = request.output_device.empty()
-                                  ? audio_->getDefaultOutputDevice()
-                                  : find_device(*audio_, request.output_device, true);
+        const auto [out_id, out_info] = find_device(*audio_, request.output_device, true);
+        out_params.deviceId = out_id;
         out_params.nChannels = static_cast<unsigned int>(request.output_channels);
-        const RtAudio::DeviceInfo out_info = audio_->getDeviceInfo(out_params.deviceId);
         output_name_ = out_info.name;
         if (request.output_channels > static_cast<int>(out_info.outputChannels))
             throw std::runtime_error(fmt::format("output device '{}' has {} channels; {} asked for",
@@ -83,8 +105,8 @@ DeviceStream::DeviceStream(const StreamRequest& request) {
                                                  request.output_channels));
         const bool with_input = request.input_channels != 0;
         if (with_input) {
-            in_params.deviceId = find_device(*audio_, request.input_device, false);
-            const RtAudio::DeviceInfo in_info = audio_->getDeviceInfo(in_params.deviceId);
+            const auto [in_id, in_info] = find_device(*audio_, request.input_device, false);
+            in_params.deviceId = in_id;
             input_channels_ = request.input_channels < 0 ? static_cast<int>(in_info.inputChannels)
                                                          : request.input_channels;
             in_params.nChannels = static_cast<unsigned int>(input_channels_);

@@ -71,8 +71,17 @@ class DeviceStream {
     std::string output_name_;
 };
 
-// Device `name` of `backend`: an exact name, an index, or the only device whose name contains
-// it. Throws std::runtime_error listing what there is.
-unsigned int find_device(RtAudio& audio, const std::string& name, bool output);
+// Every device of `audio` (control thread), each probed again for a moment if its server is
+// busy; one that never answers stays unprobed, with no channels.
+std::vector<RtAudio::DeviceInfo> probe_devices(RtAudio& audio);
+
+struct Device {
+    unsigned int id;
+    RtAudio::DeviceInfo info;
+};
+
+// Device `name` of `audio` (control thread): an exact name, an index, or the only device whose
+// name contains it; the default one for "". Throws std::runtime_error listing what there is.
+Device find_device(RtAudio& audio, const std::string& name, bool output);
 
 }  // namespace tactus::live
