@@ -4,7 +4,7 @@ JOBS ?= $(shell nproc)
 AMEN := /usr/share/sonic-pi/samples/loop_amen_full.flac
 TACTUS := $(BUILD)/bin/tactus
 
-.PHONY: setup build demo test test-asan fuzz eval bench bench-compare format clean
+.PHONY: setup build demo test test-asan fuzz eval bench bench-compare format format-check clean
 
 setup:
 	bash scripts/setup.sh
@@ -53,6 +53,10 @@ bench-compare: build
 
 format:
 	clang-format -i $$(git ls-files '*.cpp' '*.hpp')
+
+# Fails on any C++ file .clang-format would change (CI runs it first).
+format-check: setup
+	clang-format --dry-run --Werror $$(git ls-files '*.cpp' '*.hpp')
 
 clean:
 	rm -rf build out

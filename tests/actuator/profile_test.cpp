@@ -1,8 +1,6 @@
 // Actuator profiles: the shipped TOML files load and describe their actuator class (voice coil:
 // flat displacement below resonance, -12 dB/octave above; LRA: a narrow peak at f0; no DC
 // without DC capability), and bad files give one-line errors naming file, line and key.
-#include "tactus/io/actuator_file.hpp"
-
 #include <gtest/gtest.h>
 #include <stdlib.h>
 
@@ -10,6 +8,7 @@
 #include <fstream>
 
 #include "support/temp_dir.hpp"
+#include "tactus/io/actuator_file.hpp"
 
 namespace tactus {
 namespace {

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "support/signals.hpp"
-#include "tactus/dsp/sample_history.hpp"
 #include "tactus/analysis/stft_frame.hpp"
+#include "tactus/dsp/sample_history.hpp"
 
 namespace tactus {
 namespace {

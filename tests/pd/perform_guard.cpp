@@ -51,16 +51,15 @@ t_int* perform(t_int* w) {
 extern "C" {
 
 void perform_guard_tilde_setup() {
-    guard_class = class_new(
-        gensym("perform_guard~"),
-        reinterpret_cast<t_newmethod>(+[](t_symbol* state) -> void* {
-            auto* guard = reinterpret_cast<Guard*>(pd_new(guard_class));
-            guard->scalar_input = 0;
-            guard->on = std::strcmp(state->s_name, "on") == 0;
-            outlet_new(&guard->pd, &s_signal);
-            return guard;
-        }),
-        nullptr, sizeof(Guard), CLASS_DEFAULT, A_DEFSYMBOL, A_NULL);
+    guard_class = class_new(gensym("perform_guard~"),
+                            reinterpret_cast<t_newmethod>(+[](t_symbol* state) -> void* {
+                                auto* guard = reinterpret_cast<Guard*>(pd_new(guard_class));
+                                guard->scalar_input = 0;
+                                guard->on = std::strcmp(state->s_name, "on") == 0;
+                                outlet_new(&guard->pd, &s_signal);
+                                return guard;
+                            }),
+                            nullptr, sizeof(Guard), CLASS_DEFAULT, A_DEFSYMBOL, A_NULL);
     CLASS_MAINSIGNALIN(guard_class, Guard, scalar_input);
     class_addmethod(guard_class, reinterpret_cast<t_method>(+[](Guard* guard, t_signal** sp) {
                         dsp_add(perform, 4, guard, sp[0]->s_vec, sp[1]->s_vec,

@@ -1,10 +1,10 @@
 // Real-time safety of `tactus live`'s audio callback (apps/tactus/live/live_callback.hpp): the
-// callback runs block after block under the allocation and lock guard (support/allocation_counter.hpp) while,
-// on their own threads as in `tactus live`, the OSC server receives real UDP traffic sent with
-// liblo (every live parameter turned, a structural change, triggers, actuator trims, malformed
-// and out-of-range messages), the preset watcher reloads a preset file rewritten on disk, and the
-// frame monitor reads frames and sends features over OSC. No allocation and no lock may happen
-// inside the callback.
+// callback runs block after block under the allocation and lock guard
+// (support/allocation_counter.hpp) while, on their own threads as in `tactus live`, the OSC server
+// receives real UDP traffic sent with liblo (every live parameter turned, a structural change,
+// triggers, actuator trims, malformed and out-of-range messages), the preset watcher reloads a
+// preset file rewritten on disk, and the frame monitor reads frames and sends features over OSC. No
+// allocation and no lock may happen inside the callback.
 #include "live/live_callback.hpp"
 
 #include <gtest/gtest.h>

@@ -12,8 +12,12 @@ namespace tactus {
 class ScopedFlushDenormals {
   public:
 #if defined(__SSE__) || defined(__x86_64__)
-    ScopedFlushDenormals() noexcept : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | kFtzDaz); }
-    ~ScopedFlushDenormals() { _mm_setcsr(saved_); }
+    ScopedFlushDenormals() noexcept : saved_(_mm_getcsr()) {
+        _mm_setcsr(saved_ | kFtzDaz);
+    }
+    ~ScopedFlushDenormals() {
+        _mm_setcsr(saved_);
+    }
 
   private:
     static constexpr unsigned kFtzDaz = 0x8040;  // MXCSR bits 15 (FTZ) and 6 (DAZ)
@@ -25,7 +29,9 @@ class ScopedFlushDenormals {
         __asm__ __volatile__("mrs %0, fpcr" : "=r"(saved_));
         __asm__ __volatile__("msr fpcr, %0" : : "r"(saved_ | kFz) : "memory");
     }
-    ~ScopedFlushDenormals() { __asm__ __volatile__("msr fpcr, %0" : : "r"(saved_) : "memory"); }
+    ~ScopedFlushDenormals() {
+        __asm__ __volatile__("msr fpcr, %0" : : "r"(saved_) : "memory");
+    }
 
   private:
     static constexpr unsigned long kFz = 1ul << 24;  // FPCR bit 24 (FZ), Arm ARM C5.2.8

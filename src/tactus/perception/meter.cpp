@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "tactus/dsp/real_fft.hpp"
 #include "tactus/core/units.hpp"
+#include "tactus/dsp/real_fft.hpp"
 
 namespace tactus::perception {
 
