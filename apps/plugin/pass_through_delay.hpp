@@ -1,6 +1,6 @@
 // The music passed through, delayed by the engine's latency so it lines up with the vibration
-// (design.md, "outputs"). prepare() allocates; process() is real-time safe and takes the delay
-// per block (it changes when a structural change moves the limiter's look-ahead).
+// (docs/architecture.md, "The pipeline"). prepare() allocates; process() is real-time safe and
+// takes the delay per block (it changes when a structural change moves the limiter's look-ahead).
 #pragma once
 
 #include <algorithm>

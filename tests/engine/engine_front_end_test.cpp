@@ -3,8 +3,10 @@
 // are downmixed in the engine (mean or a chosen channel); N actuator outputs share one analysis,
 // each with its own profile, trim and delay; live parameters turned while audio runs glide (no
 // step in the output larger than the unturned outputs have) and a turn to the current value
-// changes nothing; a structural change while running is refused; the vibration program can be
-// injected (triggers from outside) and read (frames through a queue).
+// changes nothing; a structural change while running is primed and crossfaded in (no lost
+// onset, no gap, no larger step, the hop grid and the summed loudness kept; a preset's changes
+// at once end as each in turn); the vibration program can be injected (triggers from outside)
+// and read (frames through a queue).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 

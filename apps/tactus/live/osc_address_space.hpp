@@ -1,5 +1,5 @@
-// The OSC address space of `tactus live`, generated from the parameter table (design.md: "OSC
-// addresses ... generated from it, never written again"):
+// The OSC address space of `tactus live`, generated from the parameter table
+// (docs/architecture.md, "The parameter table"):
 //   /tactus/<key> <value>                 every parameter (a number, or a choice's name)
 //   /tactus/preset <name>                 a preset by name (no file path: untrusted input)
 //   /tactus/trigger [frequency_hz amplitude]   a pulse (without arguments: the mapping's

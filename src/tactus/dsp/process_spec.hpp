@@ -1,4 +1,4 @@
-// The one contract every stream processor keeps (design.md, "One engine, many front ends"):
+// The one contract every stream processor keeps (docs/architecture.md, "The pipeline"):
 //   void prepare(const ProcessSpec& spec, <its own settings, by name>);  // may allocate
 //   void reset() noexcept;            // back to silence, as just after prepare()
 //   void process(<buffers>, int count) noexcept;  // any count from 0 to spec.max_block

@@ -20,7 +20,7 @@
 // actuator outputs (ActuatorOutput: profile, trim gain, delay), one post chain per distinct
 // profile, all reading one analysis and one synthesis (Pipeline).
 //
-// Threads (design.md, "One engine, many front ends"):
+// Threads (docs/architecture.md, "Threads and queues"):
 //   control threads  set(), set_actuator_gain_db(), inject(), trigger(), set_program_source():
 //                    thread-safe among themselves (a mutex no audio thread takes); they validate,
 //                    then hand the change to the audio thread through a lock-free queue

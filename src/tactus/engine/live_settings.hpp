@@ -1,10 +1,10 @@
-// The settings the audio thread runs with while a control thread changes them (design.md: "live
-// versus structural"). Each live value glides linearly to what was last asked for over its
-// parameter's smoothing time (ParamSpec::smoothing_ms), one step per analysis frame: the stages
-// re-derive their coefficients from now() at each step, and the voice's and limiter's own
-// per-sample glides smooth what lies between. A value with no smoothing time applies at once; a
-// toggle with one glides through the values between off (0) and on (1), which the stage reads as
-// a mix.
+// The settings the audio thread runs with while a control thread changes them (live parameters:
+// docs/architecture.md, "Threads and queues"). Each live value glides linearly to what was last
+// asked for over its parameter's smoothing time (ParamSpec::smoothing_ms), one step per analysis
+// frame: the stages re-derive their coefficients from now() at each step, and the voice's and
+// limiter's own per-sample glides smooth what lies between. A value with no smoothing time
+// applies at once; a toggle with one glides through the values between off (0) and on (1), which
+// the stage reads as a mix.
 // Audio thread only; never allocates.
 #pragma once
 

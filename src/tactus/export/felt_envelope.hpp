@@ -1,8 +1,8 @@
-// The vibration's envelope as the skin weighs it (design.md, "Measuring what is felt"): the
-// peak of the rendered vibration over one period of its carrier, weighted by the P channel's
-// sensitivity at the carrier frequency (the inverse of its threshold curve, 0 dB at 250 Hz:
-// perception/threshold.hpp). The flattening filter boosts low carriers so that they are felt
-// as strongly as 250 Hz; this undoes that boost to read what is felt, not the drive.
+// The vibration's envelope as the skin weighs it (docs/architecture.md, "Measuring quality and
+// speed"): the peak of the rendered vibration over one period of its carrier, weighted by the P
+// channel's sensitivity at the carrier frequency (the inverse of its threshold curve, 0 dB at
+// 250 Hz: perception/threshold.hpp). The flattening filter boosts low carriers so that they are
+// felt as strongly as 250 Hz; this undoes that boost to read what is felt, not the drive.
 // Offline, on a 1 ms grid: the exports (ahap, haptic, Android) are drawn from it.
 #pragma once
 

@@ -2,8 +2,8 @@
 // envelope on a 1 ms grid, and the onsets (transients), all in the input's time (the engine's
 // latency taken out, so the vibration lines up with the sound). Drawn from the vibration
 // program (the onsets, each with its drum part, and the carrier of the engine's ControlFrames)
-// and the rendered vibration (its felt envelope): design.md, "the vibration program is the seam ...
-// file exports".
+// and the rendered vibration (its felt envelope): docs/architecture.md, "The vibration program
+// is the seam".
 #pragma once
 
 #include <filesystem>
