@@ -259,10 +259,6 @@ struct OnsetLog : FrameObserver {
     }
 };
 
-// Structural changes while drums play (the hop, the onset window, the look-ahead, the flutter
-// turned on): the new pipeline is primed and crossfaded in. Every hit the unchanged engine finds
-// is found within 10 ms; around each change the output never drops out and steps no more than
-// the outputs with the settings before or after it held throughout.
 // A pipeline swapped in for a structural change is primed with the channels' summed loudness
 // too: before, during and after the change the loudness reads as in an engine that always
 // had the new setting.
@@ -296,6 +292,10 @@ TEST(EngineFrontEnd, StructuralChangesKeepTheSummedLoudnessOfSeveralChannels) {
     EXPECT_GT(compared, 100);
 }
 
+// Structural changes while drums play (the hop, the onset window, the look-ahead, the flutter
+// turned on): the new pipeline is primed and crossfaded in. Every hit the unchanged engine finds
+// is found within 10 ms; around each change the output never drops out and steps no more than
+// the outputs with the settings before or after it held throughout.
 TEST(EngineFrontEnd, StructuralChangesLoseNoOnsetAndLeaveNoGap) {
     const double fs = 48000;
     constexpr int kBlock = 64;

@@ -1,8 +1,8 @@
 """tactus live against a real JACK server (dummy driver): `tactus live --backend jack --play FILE`
 records, through the test's own JACK client, exactly what `tactus render FILE` writes (within
 1e-5 after the stream's start is aligned), and the sound passes through unchanged; with --sync,
-sound and vibration onsets line up within 1 ms (every onset with a 0.5 ms hop; with the default
-2.9 ms hop, onsets are decided on that grid: the median within 1 ms, each within half a hop).
+sound and vibration onsets line up within 1 ms (every onset with a 0.5 ms hop; with a 2.9 ms
+hop, onsets are decided on that grid: the median within 1 ms, each within half a hop).
 
 usage: jack_live_test.py TACTUS LIVE_TEST_CLIENT SOURCE_DIR [PERIOD]
 (with a PERIOD other than 256 frames, the equality alone, at that block size)"""

@@ -39,8 +39,8 @@ class Analyzer {
 
     void prepare(const ProcessSpec& spec, const Settings& settings);  // may allocate
     void reset() noexcept;
-    // Live (audio thread): the settings that change no buffer (onset thresholds and interval,
-    // pitch threshold); the others need prepare().
+    // Live (audio thread): the settings that change no buffer (onset thresholds, weights and
+    // interval, pitch threshold, brightness.max_hz, parts.settle_ms); the others need prepare().
     void set_live(const Settings& settings) noexcept;
 
     // The rate the features are computed at: kAnalysisRateHz (or the input rate below it),

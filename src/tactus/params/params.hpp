@@ -1,5 +1,5 @@
 // The one table of parameters: name, unit, range, default, curve and help for every setting of
-// the pipeline. Presets, `--set`, and every later front end (live engine, plugins, Pd, OSC)
+// the pipeline. Presets, `--set`, and every front end (live engine, plugins, Pd, OSC, Python)
 // read this table; nothing else declares a parameter.
 #pragma once
 
@@ -16,7 +16,8 @@ enum class ParamType { real, integer, toggle, choice };  // the control a host s
 inline constexpr std::string_view kParamTypeNames[] = {"real", "integer", "toggle", "choice"};
 enum class ParamCurve { lin, log };  // how a front end should lay the range out on a slider
 // live: set while audio runs (no allocation, no lock), gliding over smoothing_ms;
-// structural: the engine must be prepared again (buffer sizes, rates, routing).
+// structural: the engine builds a new pipeline off the audio thread (buffer sizes, rates,
+// routing), primes it and crossfades it in (engine/engine.hpp).
 enum class ParamChange { live, structural };
 
 enum class P : int;
