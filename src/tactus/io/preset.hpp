@@ -43,8 +43,9 @@ struct PresetInfo {
 std::vector<std::filesystem::path> preset_search_path();
 std::vector<PresetInfo> list_presets();
 
-// The preset every front end starts from: the parameter table's defaults, restated in
-// presets/music.toml (the paper's own mapping is presets/tfd.toml).
+// The preset every front end starts from: the parameter table's defaults (presets/music.toml
+// restates the mapping's, the envelope's and the brightness's with why; the paper's own mapping
+// is presets/tfd.toml).
 inline constexpr const char* kDefaultPreset = "music";
 
 // A name ("tfd") or a path to a .toml file.
