@@ -26,7 +26,7 @@ namespace tactus {
 
 struct HitSettings {
     double brightness_max_hz = 1500;
-    double settle_ms = 8;  // onset -> its part decided
+    double settle_ms = 20;  // onset -> its part decided
 };
 
 // One power spectrum stream: its bins, their width.

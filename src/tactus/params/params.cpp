@@ -211,7 +211,7 @@ constexpr ParamSpec kTable[] = {
      "highest frequency the brightness centroid reads: a drum's body, not its beater click or "
      "snare wires (8000: the whole 16 kHz analysis band)"},
     // Analysis: what each hit adds and its drum part (analysis/hit_analysis.hpp).
-    {P::parts_settle_ms, 79, "parts.settle_ms", "ms", real, 1, 30, 8, lin, live, 0,
+    {P::parts_settle_ms, 79, "parts.settle_ms", "ms", real, 1, 30, 20, lin, live, 0,
      "time from a hit's onset to the decision of its drum part (kick, snare, hat, other): "
      "longer reads more of the hit"},
     {P::onset_high_weight, 80, "onset.high_weight", "", real, 0, 200, 30, lin, live, 0,
