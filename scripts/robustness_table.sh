@@ -72,7 +72,7 @@ leftovers() { ls -A "${1:-.}" | grep -E '^(out\.|\.out\.)' | tr '\n' ' '; }
 
 echo '| input | tactus says (stderr, last line) | exit | test |'
 echo '|---|---|---|---|'
-row "missing file" BadInput.MissingInputFile "$tactus" render nosuch.wav -o out.wav
+row "missing file (every command taking input paths)" BadInput.MissingInputFile "$tactus" render nosuch.wav -o out.wav
 row "directory as input (with no sound files in it)" BadInput.InputIsADirectory "$tactus" render sub -o out.wav
 row "unreadable file (mode 000, not root)" BadInput.UnreadableInputFile $nobody "$tactus" render locked.wav -o out.wav
 row "empty file" BadInput.EmptyFile "$tactus" render empty.wav -o out.wav
