@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Runs tactus on every bad input of docs/robustness.md and prints the table's rows: what was
 # given, the exact last line tactus wrote on stderr, the exit code, and the test that checks it.
-# The inputs are made here (libsndfile through python3-soundfile, sox) in a temporary directory,
-# and named relative to it so the messages are short.
+# The inputs are made here (libsndfile through python3-soundfile, sox, lame) in a temporary
+# directory, and named relative to it so the messages are short.
 #   scripts/robustness_table.sh [build/release] > table.md
 set -uo pipefail
 build=$(realpath "${1:-build/release}")
@@ -32,6 +32,7 @@ sf.write("dc.wav", 0.5 * beat + 0.4, rate, subtype="FLOAT")
 sf.write("square.wav", np.where((np.arange(3 * rate) // 441) % 2, 1.0, -1.0).astype(np.float32),
          rate, subtype="FLOAT")
 sf.write("long.wav", np.tile(beat, 100), rate, subtype="PCM_16")
+sf.write("beat30.wav", np.tile(beat, 10), rate, subtype="PCM_16")
 for name in ("drums.wav", "drums.flac", "drums.mp3"):
     data = open(name, "rb").read()
     open("cut." + name.split(".")[1], "wb").write(data[: len(data) // 2])
@@ -47,6 +48,7 @@ open("slow.toml", "w").write('[envelope]\ndecay_ms = "slow"\n')
 open("hot.toml", "w").write("[post]\nceiling_db = 3\n")
 open("syntax.toml", "w").write("[envelope]\ndecay_ms = = 3\n")
 EOF
+lame --quiet -t -b 128 beat30.wav tagless.mp3  # constant bitrate, no Xing/Info tag
 mkdir sub locked && chmod 555 locked
 cp drums.wav locked.wav && chmod 000 locked.wav
 echo "keep me" > exists.wav
@@ -70,7 +72,7 @@ leftovers() { ls -A "${1:-.}" | grep -E '^(out\.|\.out\.)' | tr '\n' ' '; }
 
 echo '| input | tactus says (stderr, last line) | exit | test |'
 echo '|---|---|---|---|'
-row "missing file" BadInput.MissingInputFile "$tactus" render nosuch.wav -o out.wav
+row "missing file (every command taking input paths)" BadInput.MissingInputFile "$tactus" render nosuch.wav -o out.wav
 row "directory as input (with no sound files in it)" BadInput.InputIsADirectory "$tactus" render sub -o out.wav
 row "unreadable file (mode 000, not root)" BadInput.UnreadableInputFile $nobody "$tactus" render locked.wav -o out.wav
 row "empty file" BadInput.EmptyFile "$tactus" render empty.wav -o out.wav
@@ -85,6 +87,7 @@ row "zero frames" BadInput.ZeroFrames "$tactus" render silent.wav -o out.wav
 row "sample rate 4 kHz" BadInput.SampleRatesOutsideTheSupportedRange "$tactus" render low.wav -o out.wav
 row "sample rate 384 kHz" BadInput.SampleRatesOutsideTheSupportedRange "$tactus" render high.wav -o out.wav
 row "MP3 (valid)" BadInput.Mp3IsReadAndTruncatedMp3Refused "$tactus" render drums.mp3 -o out.wav
+row "MP3 without a length tag (constant bitrate: its estimated length 3047 frames over what decodes)" BadInput.Mp3WithoutLengthTagIsReadToItsEnd "$tactus" render tagless.mp3 -o out.wav
 row "64 channels (downmixed)" BadInput.ManyChannelsAreDownmixed "$tactus" render wide.wav -o out.wav
 row "NaN, ±Inf, denormal, 3e38 samples" BadInput.NonFiniteAndDenormalSamplesNeverReachTheOutput "$tactus" render nan.wav -o out.wav
 row "DC offset 0.4" BadInput.DcOffsetDoesNotChangeTheVibration "$tactus" render dc.wav -o out.wav

@@ -1,7 +1,10 @@
-// numpy arrays as the engine reads and writes audio: one pointer per channel. Audio is float32,
-// (frames,) or (frames, channels); a float32 array whose channels are contiguous (1-D, one
-// column, or Fortran order) is read in place, anything else is converted once. Outputs are
-// (frames, channels) float32 in Fortran order, so the engine writes each channel in place.
+// numpy arrays as the engine reads and writes audio: one pointer per channel; the one place
+// every Python call converts its audio. Audio is (frames,) or (frames, channels): float of any
+// width as it is, integers scaled to full scale as libsndfile scales an audio file's (int16 by
+// 1/32768, int32 by 2^-31, uint8 as (x - 128) / 128); complex, non-numeric, NaN and infinite
+// samples refused. A float32 array whose channels are contiguous (1-D, one column, or Fortran
+// order) is read in place, anything else is converted once. Outputs are (frames, channels)
+// float32 in Fortran order, so the engine writes each channel in place.
 #pragma once
 
 #include <pybind11/numpy.h>
@@ -19,7 +22,8 @@ struct AudioView {
     std::vector<const float*> pointers;
 };
 
-// ValueError for anything but 1 or 2 dimensions, or no channels.
+// ValueError (naming what is wrong, and for a non-finite sample where) for anything but 1 or 2
+// dimensions, no channels, or samples that are not audio.
 AudioView audio_view(const pybind11::handle& x);
 
 struct AudioOutput {

@@ -22,10 +22,14 @@ namespace {
 
 class PyEngine {
   public:
+    // `channels`: the input's channel count, or None: the first block's (1 until then).
     PyEngine(double sample_rate_hz, const std::string& preset, const py::object& actuator_name,
-             int channels, int actuators, bool keep_frames, const py::object& settings_dict,
-             const py::kwargs& params)
-        : channels_(channels), actuators_(actuators), keep_frames_(keep_frames) {
+             const py::object& channels, int actuators, bool keep_frames,
+             const py::object& settings_dict, const py::kwargs& params)
+        : channels_(channels.is_none() ? 1 : channels.cast<int>()),
+          channels_given_(!channels.is_none()),
+          actuators_(actuators),
+          keep_frames_(keep_frames) {
         const Settings settings = resolve_settings(preset, settings_dict, params);
         const auto actuator = resolve_actuator_for(actuator_name, settings);
         if (actuators < 1 || actuators > Engine::kMaxActuators)
@@ -35,23 +39,27 @@ class PyEngine {
         engine_->set_actuators(std::vector<ActuatorOutput>(static_cast<size_t>(actuators),
                                                            ActuatorOutput{.profile = actuator}));
         if (keep_frames_) engine_->enable_frame_queue();
-        try {
-            engine_->prepare({.sample_rate_hz = sample_rate_hz,
-                              .max_block = kStreamBlockFrames,
-                              .channels = channels});
-        } catch (const std::invalid_argument& e) {
-            throw py::value_error(e.what());
-        }
+        prepare(sample_rate_hz, channels_);
     }
 
     py::array_t<float> process(const py::handle& block) {
         const AudioView in = audio_view(block);
-        if (in.channels != channels_)
-            throw py::value_error(fmt::format("block: {} channel(s), the engine was made for {}",
-                                              in.channels, channels_));
         const std::unique_lock running(processing_, std::try_to_lock);
         if (!running.owns_lock())
             throw py::value_error("process(): already running in another thread");
+        // Made without a channel count, the engine takes the first block's: nothing has been
+        // processed, so preparing it again (settings as set, pending changes folded in) loses
+        // nothing.
+        if (in.channels != channels_ && !channels_given_ && !processed_)
+            prepare(engine_->sample_rate_hz(), in.channels);
+        if (in.channels != channels_)
+            throw py::value_error(fmt::format(
+                "block: {} channel(s), the engine was made for {} ({}); make another with "
+                "Engine(rate, channels={})",
+                in.channels, channels_,
+                channels_given_ ? fmt::format("channels={}", channels_) : "its first block's",
+                in.channels));
+        processed_ = processed_ || in.frames > 0;
         AudioOutput out = audio_output(in.frames, actuators_);
         {
             const py::gil_scoped_release unlocked;
@@ -128,6 +136,17 @@ class PyEngine {
     int actuators() const { return actuators_; }
 
   private:
+    void prepare(double sample_rate_hz, int channels) {
+        try {
+            engine_->prepare({.sample_rate_hz = sample_rate_hz,
+                              .max_block = kStreamBlockFrames,
+                              .channels = channels});
+        } catch (const std::invalid_argument& e) {
+            throw py::value_error(e.what());
+        }
+        channels_ = channels;
+    }
+
     // Waits for a process() running in another thread, without the GIL (which that thread takes
     // back before it lets go of the engine).
     std::unique_lock<std::mutex> wait_for_process() {
@@ -138,9 +157,12 @@ class PyEngine {
     }
 
     std::unique_ptr<Engine> engine_;
-    int channels_, actuators_;
+    int channels_;
+    bool channels_given_;
+    int actuators_;
     bool keep_frames_;
-    std::mutex processing_;  // one process() at a time: it is the engine's audio thread
+    bool processed_ = false;  // a block with frames went through: the channel count is fixed
+    std::mutex processing_;   // one process() at a time: it is the engine's audio thread
     std::vector<AnalysisFrame> frames_;
 };
 
@@ -150,7 +172,7 @@ std::string param_doc(const ParamSpec& s) {
                                   Settings().text_of(s.param), s.help);
     if (!s.choices.empty()) {
         std::string names;
-        for (auto c : s.choices) names += (names.empty() ? "" : ", ") + std::string(c);
+        for (auto c : s.choices) names.append(names.empty() ? "" : ", ").append(c);
         doc += fmt::format(" Choices: {}.", names);
     }
     if (s.change == ParamChange::live && s.smoothing_ms > 0)
@@ -165,8 +187,11 @@ void add_engine(py::module_& m) {
     py::class_<PyEngine> engine(m, "Engine",
                                 R"(The tactus engine, block by block, as a host runs it.
 
-Engine(sample_rate, preset="music", actuator=None, channels=1, actuators=1, keep_frames=False,
-       settings=None, **params)
+Engine(sample_rate, preset="music", actuator=None, channels=None, actuators=1,
+       keep_frames=False, settings=None, **params)
+
+channels: the input's channel count; None takes the first block's (a stereo file from
+tactus.read gives 2); every later block must have as many.
 
 process(block) takes any number of frames, (frames,) or (frames, channels), and returns the
 vibration, float32 (frames, actuators); blocks of any sizes give the output of one call.
@@ -175,10 +200,10 @@ applies from the next process() call (live parameters glide over their smoothing
 structural ones build a new pipeline and crossfade to it). Every parameter of the table is an
 attribute named by its key with dots as underscores (engine.envelope_decay_ms).)");
     engine
-        .def(py::init<double, const std::string&, const py::object&, int, int, bool,
+        .def(py::init<double, const std::string&, const py::object&, const py::object&, int, bool,
                       const py::object&, const py::kwargs&>(),
              arg("sample_rate"), arg("preset") = kDefaultPreset, arg("actuator") = py::none(),
-             arg("channels") = 1, arg("actuators") = 1, arg("keep_frames") = false,
+             arg("channels") = py::none(), arg("actuators") = 1, arg("keep_frames") = false,
              arg("settings") = py::none())
         .def("process", &PyEngine::process, arg("block"),
              "The vibration for the next block: float32 (frames, actuators).")
@@ -198,7 +223,9 @@ attribute named by its key with dots as underscores (engine.envelope_decay_ms).)
             "at the 16 kHz analysis rate; frames end at whole input samples).")
         .def_property_readonly(
             "sample_rate", [](const PyEngine& e) { return e.engine().sample_rate_hz(); }, "Hz.")
-        .def_property_readonly("channels", &PyEngine::channels, "Input channels.")
+        .def_property_readonly("channels", &PyEngine::channels,
+                               "Input channels (made with channels=None: 1 until the first "
+                               "block, then that block's).")
         .def_property_readonly("actuators", &PyEngine::actuators, "Actuator outputs.")
         .def_property_readonly("settings", &PyEngine::settings,
                                "Every parameter as last set: {key: value}.");

@@ -5,6 +5,8 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
+
 #include "tactus/perception/sensation.hpp"
 
 namespace py = pybind11;
@@ -18,7 +20,7 @@ Channel channel_named(const std::string& name) {
     std::string known;
     for (const ChannelInfo& c : kChannels) {
         if (c.name == name) return c.channel;
-        known += (known.empty() ? "" : ", ") + std::string(c.name);
+        known.append(known.empty() ? "" : ", ").append(c.name);
     }
     throw py::value_error(fmt::format("unknown channel '{}' (known: {})", name, known));
 }
@@ -42,6 +44,21 @@ py::object map_array(const py::handle& x, F f) {
     for (py::ssize_t i = 0; i < in.size(); ++i) to[i] = f(from[i]);
     if (in.ndim() == 0) return py::float_(to[0]);
     return py::object(std::move(out));
+}
+
+// A frequency the threshold curves are defined at: above 0 Hz and finite (0 gives an infinite
+// threshold, below 0 NaN).
+double checked_frequency_hz(double frequency_hz) {
+    if (!(frequency_hz > 0) || !std::isfinite(frequency_hz))
+        throw py::value_error(fmt::format(
+            "frequency_hz = {} is out of range: must be above 0 Hz and finite", frequency_hz));
+    return frequency_hz;
+}
+
+// f applied to every frequency of `frequency_hz` (any shape), each checked.
+template <typename F>
+py::object map_frequencies(const py::handle& frequency_hz, F f) {
+    return map_array(frequency_hz, [&](double hz) { return f(checked_frequency_hz(hz)); });
 }
 
 py::list channels() {
@@ -76,7 +93,7 @@ void add_perception(py::module_& m) {
            double duration_s) {
             const Channel c = channel_named(channel);
             const Stimulus s = stimulus(contact_area_cm2, duration_s);
-            return map_array(frequency_hz, [&](double f) { return threshold_db(c, f, s); });
+            return map_frequencies(frequency_hz, [&](double f) { return threshold_db(c, f, s); });
         },
         arg("channel"), arg("frequency_hz"), arg("contact_area_cm2") = area,
         arg("duration_s") = duration,
@@ -86,15 +103,17 @@ void add_perception(py::module_& m) {
         "detection_threshold_db",
         [](const py::handle& frequency_hz, double contact_area_cm2, double duration_s) {
             const Stimulus s = stimulus(contact_area_cm2, duration_s);
-            return map_array(frequency_hz, [&](double f) { return detection_threshold_db(f, s); });
+            return map_frequencies(frequency_hz,
+                                   [&](double f) { return detection_threshold_db(f, s); });
         },
         arg("frequency_hz"), arg("contact_area_cm2") = area, arg("duration_s") = duration,
         "The whole system's threshold: the lowest channel's (min rule), dB re 1 um peak.");
     m.def(
         "detecting_channel",
         [](double frequency_hz, double contact_area_cm2, double duration_s) {
-            return std::string(
-                info(detecting_channel(frequency_hz, stimulus(contact_area_cm2, duration_s))).name);
+            return std::string(info(detecting_channel(checked_frequency_hz(frequency_hz),
+                                                      stimulus(contact_area_cm2, duration_s)))
+                                   .name);
         },
         arg("frequency_hz"), arg("contact_area_cm2") = area, arg("duration_s") = duration,
         "The channel that sets the threshold at a frequency.");
@@ -104,7 +123,7 @@ void add_perception(py::module_& m) {
            double contact_area_cm2, double duration_s) {
             const Channel c = channel_named(channel);
             const Stimulus s = stimulus(contact_area_cm2, duration_s);
-            return map_array(frequency_hz, [&](double f) {
+            return map_frequencies(frequency_hz, [&](double f) {
                 return sensation_level_db(displacement_db, threshold_db(c, f, s));
             });
         },

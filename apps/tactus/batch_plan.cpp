@@ -32,7 +32,7 @@ void BatchOptions::add_to(CLI::App& command, const std::string& output_help,
                           const std::string& suffix) {
     command.add_option("inputs", inputs, "audio files or folders (- for stdin); several need -O")
         ->required()
-        ->check(input_file() | CLI::ExistingDirectory);
+        ->type_name("FILE|DIR|-");
     command.add_option("-o,--output", output, output_help);
     command.add_option("-O,--output-dir", output_dir,
                        "folder for the outputs: DIR/<input's folder below the given one>/<name "
@@ -53,6 +53,7 @@ std::vector<BatchJob> plan_batch(const BatchOptions& o, const std::string& suffi
         throw std::runtime_error("give either -o FILE (one input) or -O DIR, not both");
     // (input, its output's path below DIR without the suffix)
     std::vector<std::pair<fs::path, fs::path>> found;
+    for (const fs::path given : o.inputs) check_input(given, true);
     for (const fs::path given : o.inputs) {
         std::error_code error;
         if (!fs::is_directory(given, error)) {

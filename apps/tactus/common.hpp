@@ -43,11 +43,19 @@ inline void check_output(const std::filesystem::path& input, const std::filesyst
                                              output.string(), dir.string()));
 }
 
-// An input: an existing file, or "-" for standard input.
-inline CLI::Validator input_file() {
-    return CLI::Validator(
-        [](std::string& path) { return path == "-" ? std::string() : CLI::ExistingFile(path); },
-        "FILE or - (stdin)");
+// Every command's input paths, checked before any output is opened: one message for a path
+// that does not exist, and tactus's exit code for errors (1; CLI11's validators would exit 105
+// with their own words). "-" is standard input; `directory_allowed` for commands that walk
+// folders.
+inline void check_input(const std::filesystem::path& input, bool directory_allowed) {
+    if (input == "-") return;
+    std::error_code error;
+    const auto status = std::filesystem::status(input, error);  // through symlinks
+    if (status.type() == std::filesystem::file_type::not_found)
+        throw std::runtime_error(fmt::format("{}: no such file or directory", input.string()));
+    if (error) throw std::runtime_error(fmt::format("{}: {}", input.string(), error.message()));
+    if (!directory_allowed && status.type() == std::filesystem::file_type::directory)
+        throw std::runtime_error(fmt::format("{}: is a directory, not a file", input.string()));
 }
 
 // The --force flag of every command that writes a file.

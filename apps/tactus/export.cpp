@@ -117,6 +117,7 @@ void export_files(const ExportOptions& o) {
 
 // One input to -o, or every input (folders walked) to DIR/.../<name><format> for each --formats.
 void export_batch(const ExportOptions& o) {
+    for (const auto& input : o.inputs) check_input(input, true);
     if (o.output_dir.empty() == o.outputs.empty())
         throw std::runtime_error("export: give -o OUT (one input; repeatable) or -O DIR");
     if (o.output_dir.empty()) {
@@ -160,7 +161,7 @@ void add_export(CLI::App& app) {
         "export", "write the vibration as haptic files: .ahap, .haptic, .android.json, .ogg");
     command->add_option("inputs", options->inputs, "audio files or folders (- for stdin)")
         ->required()
-        ->check(input_file() | CLI::ExistingDirectory);
+        ->type_name("FILE|DIR|-");
     command->add_option(
         "-o,--output", options->outputs,
         "OUT.ahap (Core Haptics), OUT.haptic (Meta Haptics SDK), OUT.android.json "

@@ -17,6 +17,7 @@
 
 #include "actuator_option.hpp"
 #include "commands.hpp"
+#include "common.hpp"
 #include "live/channel_list.hpp"
 #include "live/device_stream.hpp"
 #include "live/frame_monitor.hpp"
@@ -111,6 +112,7 @@ void live_run(const LiveOptions& o) {
     const Settings settings = o.pipeline.resolve();
     if (o.play.empty() == o.input.empty())
         throw std::runtime_error("live: give either --input DEV[:CH] or --play FILE...");
+    for (const auto& file : o.play) check_input(file, false);
     if (o.loop && o.play.empty()) throw std::runtime_error("live: --loop plays files: give --play");
     if (o.sync && o.play.empty())
         throw std::runtime_error("live: --sync delays the sound of --play");
@@ -273,7 +275,7 @@ void add_live(CLI::App& app) {
     command->add_option("--sound-channels", o->sound_channels,
                         "output channels of the sound of --play (its channels in turn)");
     command->add_option("--play", o->play, "audio files played as sound and vibration")
-        ->check(CLI::ExistingFile);
+        ->type_name("FILE");
     command->add_flag("--loop", o->loop, "play the files again and again");
     command->add_flag("--sync", o->sync,
                       "delay the sound by the vibration's latency so onsets line up");

@@ -32,7 +32,7 @@ int main(int argc, char** argv) {
 #endif
     if (const auto unknown = tactus::cli::unknown_command(app, argc, argv)) {
         std::cerr << "tactus: error: " << *unknown << '\n';
-        return 2;
+        return 1;  // an error tactus finds (docs/robustness.md, exit codes)
     }
     try {
         app.parse(argc, argv);

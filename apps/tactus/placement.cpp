@@ -41,6 +41,7 @@ void write_plot_csv(std::ostream& out, std::vector<Measurement> rows,
 }
 
 void placement(const PlacementOptions& o) {
+    check_input(o.input, false);
     const std::vector<Measurement> rows = read_measurements(o.input);
     const PlacementReport report = summarise_placement(rows);
     if (!is_stdout(o.output)) check_output(o.input, o.output, o.force);
@@ -81,7 +82,7 @@ void add_placement(CLI::App& app) {
         ->add_option("measurements", options->input,
                      "CSV with the header subject,finger,hole_mm,extension_mm ('#' comments)")
         ->required()
-        ->check(CLI::ExistingFile);
+        ->type_name("FILE");
     command->add_option("-o,--output", options->output,
                         "plot-ready CSV: every measurement with its hole's mean, SD, n, depth");
     add_force_option(*command, options->force);

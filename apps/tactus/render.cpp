@@ -22,6 +22,7 @@
 #include "tactus/io/audio_writer.hpp"
 #include "tactus/io/render_info.hpp"
 #include "tactus/io/temporary_path.hpp"
+#include "unfelt_sound.hpp"
 
 namespace tactus::cli {
 namespace {
@@ -40,19 +41,22 @@ struct RenderOptions {
 
 using Job = BatchJob;
 
-// The pulses a render triggers and the loudest its input got (for the summary and the warning
-// that audible input gave no vibration).
+// The pulses a render triggers and the loudest its input got (for the summary and the warnings
+// that audible input gave no vibration, in whole or for a long stretch).
 class RenderStats final : public FrameObserver {
   public:
+    explicit RenderStats(double gate_db) : unfelt(gate_db) {}
     void on_frame(const Features& features, const ControlFrame& control) noexcept override {
         onsets += control.trigger;
         loudest_db = std::max(loudest_db, features.loudness_db);
+        unfelt.on_loudness(features.loudness_db);
     }
     FeatureSet reads() const noexcept override {
         return {.loudness = true, .spectrum = false, .pitch = false};
     }
     int onsets = 0;
     double loudest_db = -INFINITY;
+    UnfeltSound unfelt;
 };
 
 // Where each input's vibration goes (batch_plan.hpp: -o for one input, with -O the input's
@@ -75,13 +79,16 @@ std::string render_one(const Job& job, const Settings& settings,
     Engine engine(settings);
     engine.set_actuators(std::vector<ActuatorOutput>(static_cast<size_t>(channels),
                                                      ActuatorOutput{.profile = actuator}));
-    RenderStats stats;
+    RenderStats stats(settings[P::mapping_gate_db]);
     engine.set_observer(&stats);
     std::optional<AudioWriter> writer;  // opened at the input's sample rate
     float peak = 0.0f;
     const auto write = [&](const float* const* v, int n) {
+        float block_peak = 0.0f;
         for (int c = 0; c < channels; ++c)
-            for (int i = 0; i < n; ++i) peak = std::max(peak, std::abs(v[c][i]));
+            for (int i = 0; i < n; ++i) block_peak = std::max(block_peak, std::abs(v[c][i]));
+        peak = std::max(peak, block_peak);
+        stats.unfelt.on_output(block_peak, n);
         writer->write(v, n);
     };
     RenderInfo info = how;
@@ -103,6 +110,15 @@ std::string render_one(const Job& job, const Settings& settings,
             "vibration: it has no onset for the pulses; for sustained sounds try --preset "
             "sustained",
             job.input.string(), stats.loudest_db));
+    // A sustained sound after its onset (an explosion's rumble) gets one pulse from a preset of
+    // discrete pulses, and then nothing: one line per file, naming the longest such stretch.
+    else if (const double unfelt_s = stats.unfelt.longest_frames() / summary.sample_rate_hz;
+             unfelt_s >= UnfeltSound::kLongStretchS && settings[P::envelope_sustain] == 0)
+        note(fmt::format(
+            "tactus: warning: {}: {:.1f} s of sound from {:.1f} s on gave no vibration: the "
+            "preset pulses only at onsets; for sustained sounds try --preset sustained",
+            job.input.string(), unfelt_s,
+            stats.unfelt.longest_start_frame() / summary.sample_rate_hz));
     return fmt::format(
         "{}: {:.2f} s at {:g} Hz, {} pulses, peak {:.1f} dBFS, {} channel(s)", job.output.string(),
         (summary.frames + summary.tail_frames) / summary.sample_rate_hz, summary.sample_rate_hz,

@@ -240,6 +240,67 @@ TEST_F(Cli, SustainedSoundsWarnWithoutVibrationAndTheSustainedPresetFeelsThem) {
     EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
 }
 
+// An explosion: a low rumble that starts at once and lasts 2 s. The default preset gives its
+// onset one pulse and then nothing, and render says so in one line naming the preset that
+// follows loudness; that preset vibrates all through the rumble. A drum loop gets no warning.
+TEST_F(Cli, ARumbleAfterItsOnsetWarnsOnceAndTheSustainedPresetFeelsItThrough) {
+    const double rate = 44100;
+    const auto at = [&](double seconds) { return static_cast<size_t>(seconds * rate); };
+    // Brown noise (integrated white) through two one-pole low-passes at 100 Hz, peak 0.7,
+    // 0.3 s fade-out, with 0.3 s of silence either side.
+    const std::vector<float> white = tactus::test::white_noise(at(2), 11);
+    std::vector<float> rumble(at(2.6), 0.0f);
+    const double leak = 1 - 2 * tactus::test::kTestPi * 5 / rate;
+    const double low = 1 - std::exp(-2 * tactus::test::kTestPi * 100 / rate);
+    double brown = 0, lp1 = 0, lp2 = 0, largest = 0;
+    for (size_t i = 0; i < white.size(); ++i) {
+        brown = leak * brown + white[i];
+        lp1 += low * (brown - lp1);
+        lp2 += low * (lp1 - lp2);
+        rumble[at(0.3) + i] =
+            static_cast<float>(lp2 * std::min(1.0, (white.size() - i) / (0.3 * rate)));
+        largest = std::max(largest, std::abs(lp2));
+    }
+    for (float& x : rumble) x = static_cast<float>(0.7 * x / largest);
+    const fs::path input = dir_ / "rumble.wav", pulses = dir_ / "music.wav",
+                   held = dir_ / "held.wav";
+    ASSERT_NO_FATAL_FAILURE(tactus::test::write_sound_file(input, rumble, rate));
+    const auto window_peaks = [&](const fs::path& path, double from_s, double to_s) {
+        const auto y = tactus::read_mono(path).samples;
+        std::vector<float> peaks;
+        for (size_t start = at(from_s); start + at(0.1) <= at(to_s); start += at(0.1)) {
+            float p = 0;
+            for (size_t i = start; i < start + at(0.1); ++i) p = std::max(p, std::abs(y[i]));
+            peaks.push_back(p);
+        }
+        return peaks;
+    };
+
+    Result r = run("render " + input.string() + " -o " + pulses.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("tactus: warning: " + input.string() +
+                         ": 1.8 s of sound from 0.5 s on "
+                         "gave no vibration: the preset pulses only at onsets; for sustained "
+                         "sounds try --preset sustained\n"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 2) << r.err;  // and the summary
+    EXPECT_NE(r.err.find(", 1 pulses,"), std::string::npos) << r.err;
+    EXPECT_GT(window_peaks(pulses, 0.3, 0.4)[0], 0.1f);                        // the onset's pulse
+    for (const float p : window_peaks(pulses, 0.6, 2.3)) EXPECT_LT(p, 0.01f);  // then nothing
+
+    r = run("render " + input.string() + " -o " + held.string() + " --preset sustained");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+    const std::vector<float> felt = window_peaks(held, 0.3, 2.2);  // all but the fade's end
+    ASSERT_EQ(felt.size(), 19u);
+    for (const float p : felt) EXPECT_GT(p, 0.2f);  // -14 dBFS and louder, every 100 ms
+
+    r = run("render " + kAmen + " -o " + pulses.string() + " --force");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+}
+
 TEST_F(Cli, PlacementReportsAndWritesAPlotCsv) {
     const std::string example =
         std::string(TACTUS_SOURCE_DIR) + "/examples/placement_synthetic.csv";

@@ -153,7 +153,7 @@ TEST_F(Cli, VersionSuggestionsAndLooselyTypedNames) {
     EXPECT_EQ(v.exit_code, 0);
     EXPECT_EQ(v.out, "tactus " TACTUS_VERSION "\n");
     const Result typo = run("rendr " + kTick);
-    EXPECT_NE(typo.exit_code, 0);
+    EXPECT_EQ(typo.exit_code, 1);
     EXPECT_NE(typo.err.find("unknown command 'rendr' (did you mean 'render'?"), std::string::npos)
         << typo.err;
     const Result preset =

@@ -47,8 +47,34 @@ def test_a_block_is_read_in_place_in_any_layout(amen_audio):
         assert np.array_equal(tactus.Engine(rate, channels=2).process(layout), expected)
     mono = x.mean(axis=1, dtype=np.float32)
     assert np.array_equal(tactus.Engine(rate).process(mono), tactus.render(mono, rate)[:len(mono)])
-    with pytest.raises(ValueError, match="2 channel"):
-        tactus.Engine(rate).process(x)
+    with pytest.raises(ValueError, match=r"2 channel\(s\), the engine was made for 1 \(channels=1\); "
+                       r"make another with Engine\(rate, channels=2\)"):
+        tactus.Engine(rate, channels=1).process(x)
+
+
+def test_the_channel_count_is_the_first_blocks_unless_given(amen_audio):
+    """Engine(rate) takes tactus.read's stereo as it comes: the first block sets the count, and
+    the output is that of an engine made for it, parameters set before it included."""
+    x, rate = amen_audio
+    given = tactus.Engine(rate, channels=2)
+    given.envelope_decay_ms = 80
+    taken = tactus.Engine(rate)
+    taken.envelope_decay_ms = 80
+    assert taken.channels == 1
+    empty = taken.process(np.zeros((0, 2), np.float32))  # no frames: nothing fixed yet
+    assert empty.shape == (0, 1)
+    assert np.array_equal(in_blocks(taken, x, [4096]), in_blocks(given, x, [4096]))
+    assert taken.channels == 2 and taken.settings["envelope.decay_ms"] == 80
+    with pytest.raises(ValueError, match=r"1 channel\(s\), the engine was made for 2 \(its first "
+                       r"block's\)"):
+        taken.process(x[:, 0])
+    taken.reset()
+    with pytest.raises(ValueError, match="made for 2"):
+        taken.process(x[:, 0])
+    mono = tactus.Engine(rate)
+    mono.process(x[:100, 0])
+    with pytest.raises(ValueError, match="made for 1"):
+        mono.process(x[100:200])
 
 
 # Live parameters, each turned once mid-file at a block boundary.

@@ -78,3 +78,16 @@ def test_the_channels_are_the_papers_table_1():
     assert list(table) == ["P", "NPI", "NPII", "NPIII"]
     assert table["P"]["range_hz"] == (40, 500) and table["NPI"]["sensation"] == "flutter"
     assert table["NPIII"]["receptor"] == "Merkel"
+
+
+@pytest.mark.parametrize("frequency_hz", [0, -5, np.nan, np.inf, [100, 0, 250]])
+def test_frequencies_outside_the_curves_are_refused(frequency_hz):
+    """0 Hz gave an infinite threshold and -5 Hz NaN: a ValueError naming the argument."""
+    calls = [lambda: tactus.threshold_db("P", frequency_hz),
+             lambda: tactus.detection_threshold_db(frequency_hz),
+             lambda: tactus.sensation_level_db("P", frequency_hz, 0.0)]
+    if np.isscalar(frequency_hz):
+        calls.append(lambda: tactus.detecting_channel(frequency_hz))
+    for call in calls:
+        with pytest.raises(ValueError, match="frequency_hz = .* is out of range: must be above 0"):
+            call()

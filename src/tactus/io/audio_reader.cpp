@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "tactus/dsp/downmix.hpp"
+#include "tactus/io/mpeg_length_tag.hpp"
 
 namespace tactus {
 namespace {
@@ -67,6 +68,18 @@ int stdin_descriptor() {
     return fd;
 }
 
+// Whether the length libsndfile reports is the file's own statement (a header's or a tag's),
+// which a stream ending early breaks, rather than an estimate from the file's size (an MPEG
+// stream without a Xing, Info or VBRI tag: mpeg_length_tag.hpp).
+bool length_is_stated(const std::filesystem::path& path, int format) {
+    if ((format & SF_FORMAT_TYPEMASK) != SF_FORMAT_MPEG) return true;
+    const int fd = path == "-" ? stdin_descriptor() : ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return false;
+    const bool stated = mpeg_file_states_length(fd);
+    ::close(fd);
+    return stated;
+}
+
 }  // namespace
 
 AudioReader::AudioReader(const std::filesystem::path& path) : path_(path) {
@@ -94,6 +107,7 @@ AudioReader::AudioReader(const std::filesystem::path& path) : path_(path) {
         sf_close(file_);
         throw std::runtime_error(fmt::format("{}: truncated: {}", path.string(), cut));
     }
+    length_stated_ = length_is_stated(path, info_.format);
     // Scale integer formats to [-1, 1) and do not clip floats.
     sf_command(file_, SFC_SET_NORM_FLOAT, nullptr, SF_TRUE);
 }
@@ -128,11 +142,13 @@ int AudioReader::read(float* const* out, int max_frames) {
         throw std::runtime_error(fmt::format("{}: corrupt or truncated audio data: {}",
                                              path_.string(), sf_strerror(file_)));
     frames_read_ += got;
-    // A stream that ends well before its header's length (an MP3 cut short: its Xing header
-    // still holds the whole length) is truncated. One MPEG frame of slack (1152 samples, twice)
-    // allows for an encoder's padding estimate.
+    // A stream that ends well before the length its file states (an MP3 cut short: its Xing
+    // tag still holds the whole length) is truncated. One MPEG frame of slack (1152 samples,
+    // twice) allows for an encoder's padding estimate. A length estimated from the file's size
+    // promises nothing: the stream is read to its end, and only the decoder's errors count.
     constexpr int64_t kSlackFrames = 2 * 1152;
-    const bool length_known = info_.frames > 0 && info_.frames != SF_COUNT_MAX;  // not a pipe
+    const bool length_known =
+        length_stated_ && info_.frames > 0 && info_.frames != SF_COUNT_MAX;  // not a pipe
     if (got == 0 && length_known && frames_read_ + kSlackFrames < info_.frames)
         throw std::runtime_error(fmt::format(
             "{}: truncated or corrupt: the header announces {} frames, only {} could be decoded",

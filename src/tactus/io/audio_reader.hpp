@@ -21,7 +21,9 @@ class AudioReader {
 
     double sample_rate_hz() const { return info_.samplerate; }
     int channels() const { return info_.channels; }
-    int64_t frames() const { return info_.frames; }  // may be unknown (<= 0) for some formats
+    // May be unknown (<= 0) for some formats, and is an estimate for an MP3 without a length
+    // tag (mpeg_length_tag.hpp): the stream is read to its end, whatever its length.
+    int64_t frames() const { return info_.frames; }
     // The file's comment (WAV ICMT, Vorbis COMMENT: render writes RenderInfo::comment()), or "".
     std::string comment() const {
         const char* text = sf_get_string(file_, SF_STR_COMMENT);
@@ -29,7 +31,7 @@ class AudioReader {
     }
     // Reads up to `max_frames` frames into channels()[c][0 ... max_frames); returns how many
     // (0 at the end). Throws std::runtime_error for undecodable data or a stream that ends
-    // before its header says.
+    // before the length its header or tag states.
     int read(float* const* channels, int max_frames);
 
   private:
@@ -39,6 +41,7 @@ class AudioReader {
     std::vector<float> interleaved_;
     std::vector<short> pcm16_;
     int64_t frames_read_ = 0;
+    bool length_stated_ = true;  // info_.frames is the file's statement, not an estimate
 };
 
 // Buffers for `channels` channels of `frames` samples, as AudioReader::read and

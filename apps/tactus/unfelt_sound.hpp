@@ -1,0 +1,55 @@
+// The longest stretch of sound a render turned into no vibration, for render's warning that a
+// preset of discrete pulses leaves a sustained sound (an explosion's rumble, a drone, a held
+// chord) unfelt after its onset's pulse. Sound: an analysis frame's loudness above the mapping's
+// gate and within kSoundBelowLoudestDb of the loudest so far (a reverb tail or a fade-out is no
+// stretch to warn about). No vibration: every output sample under kUnfelt (-40 dBFS). Fed by one
+// render's worker, in the order the engine delivers: each frame's loudness (its observer, inside
+// process()), then each output block; no allocation.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace tactus::cli {
+
+class UnfeltSound {
+  public:
+    // A passage more than 30 dB under the loudest (a tail dying away) is not what is missed.
+    static constexpr double kSoundBelowLoudestDb = 30;
+    // -40 dBFS: 10 dB under the quietest pulse the presets map (amplitude out_min 0.03).
+    static constexpr float kUnfelt = 0.01f;
+    static constexpr double kLongStretchS = 1.0;  // what a warning is worth
+
+    explicit UnfeltSound(double gate_db) : gate_db_(gate_db) {}
+
+    void on_loudness(double loudness_db) noexcept {
+        loudest_db_ = std::max(loudest_db_, loudness_db);
+        sounding_ = loudness_db > gate_db_ && loudness_db > loudest_db_ - kSoundBelowLoudestDb;
+    }
+    // One output block: `frames` samples whose largest magnitude (all channels) is `peak`.
+    void on_output(float peak, int frames) noexcept {
+        if (sounding_ && peak < kUnfelt) {
+            if (run_frames_ == 0) run_start_ = written_;
+            run_frames_ += frames;
+            if (run_frames_ > longest_frames_) {
+                longest_frames_ = run_frames_;
+                longest_start_ = run_start_;
+            }
+        } else {
+            run_frames_ = 0;
+        }
+        written_ += frames;
+    }
+
+    int64_t longest_frames() const { return longest_frames_; }
+    int64_t longest_start_frame() const { return longest_start_; }  // output frames
+
+  private:
+    double gate_db_, loudest_db_ = -INFINITY;
+    bool sounding_ = false;
+    int64_t written_ = 0, run_start_ = 0, run_frames_ = 0;
+    int64_t longest_frames_ = 0, longest_start_ = 0;
+};
+
+}  // namespace tactus::cli
