@@ -2,7 +2,7 @@
 // its output's ending: .ahap (Apple Core Haptics), .haptic (Meta Haptics SDK), .android.json
 // (Android VibrationEffect.createWaveform), .ogg (the sound with the vibration as its last
 // channels and ANDROID_HAPTIC=<n>, for Android's haptic-coupled playback). One render feeds
-// every output (src/tactus/export).
+// every output (src/tactus/export), normalised as --normalise and --gain-db say.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -18,7 +18,9 @@
 #include "common.hpp"
 #include "global_options.hpp"
 #include "pipeline_options.hpp"
+#include "tactus/actuator/felt_floor.hpp"
 #include "tactus/export/haptic_formats.hpp"
+#include "tactus/export/normalisation.hpp"
 #include "tactus/export/vorbis_writer.hpp"
 #include "tactus/io/text_output.hpp"
 
@@ -33,6 +35,8 @@ struct ExportOptions {
     std::vector<std::string> outputs;
     int channels = 1;
     bool force = false;
+    std::string normalise = Normalisation{}.name();
+    double gain_db = 0;
     PipelineOptions pipeline;
     // A batch (batch_plan.hpp): inputs, -O DIR, the formats each input is written in.
     std::vector<std::string> inputs;
@@ -67,6 +71,13 @@ void export_files(const ExportOptions& o) {
                                              *ogg_path, kMaxAndroidHapticChannels, o.channels));
     std::optional<ActuatorProfile> actuator;
     if (!o.actuator.empty()) actuator = load_actuator_for(o.actuator, settings);
+    const Normalisation normalisation = Normalisation::parse(o.normalise, o.gain_db);
+    // Android plays on the phone's actuator: the one rendered for, else a phone's LRA.
+    double android_floor = 0;
+    if (std::find(formats.begin(), formats.end(), ".android.json") != formats.end())
+        android_floor =
+            felt_floor(actuator ? *actuator : load_actuator(resolve_actuator(kAndroidActuator)),
+                       settings[P::perception_contact_area_cm2]);
 
     Engine engine(settings);
     engine.set_actuators(std::vector<ActuatorOutput>(static_cast<size_t>(o.channels),
@@ -92,6 +103,7 @@ void export_files(const ExportOptions& o) {
     Progress progress("export");
     HapticTrack track = render_haptic_track(o.input, engine, sink, with_progress(progress));
     track.info = info;
+    normalise(track, normalisation);
     if (ogg_path && !ogg)
         throw std::runtime_error(fmt::format("{}: the input gave no audio to write", *ogg_path));
     // Every output is written before any is committed: a failure leaves none of them.
@@ -101,7 +113,7 @@ void export_files(const ExportOptions& o) {
         texts.emplace_back(o.outputs[i]).stream()
             << (formats[i] == ".ahap"     ? ahap_text(track)
                 : formats[i] == ".haptic" ? meta_haptic_text(track)
-                                          : android_waveform_text(track));
+                                          : android_waveform_text(track, android_floor));
     }
     if (ogg) ogg->commit();
     for (TextOutput& text : texts) text.commit();
@@ -177,6 +189,32 @@ void add_export(CLI::App& app) {
         ->check(CLI::Range(1, 1024));
     command->add_flag("--skip-existing", options->skip_existing,
                       "with -O: leave outputs that exist (resume a batch)");
+    command->add_option("--normalise,--normalize", options->normalise, normalisation_help())
+        ->check([](const std::string& text) {
+            try {
+                Normalisation::parse(text);
+                return std::string();
+            } catch (const std::invalid_argument& e) {
+                return std::string(e.what());
+            }
+        })
+        ->capture_default_str();
+    command
+        ->add_option("--gain-db", options->gain_db,
+                     "gain after --normalise, dB (louder moments clip at full scale)")
+        ->check([](const std::string& text) {
+            char* end = nullptr;
+            const double db = std::strtod(text.c_str(), &end);
+            if (end == text.c_str() || *end != '\0')
+                return fmt::format("'{}' is not a number of dB", text);
+            try {
+                Normalisation::parse("peak", db);
+                return std::string();
+            } catch (const std::invalid_argument& e) {
+                return std::string(e.what());
+            }
+        })
+        ->capture_default_str();
     command->add_option("--channels,-c", options->channels, "haptic channels in the .ogg")
         ->check(CLI::Range(1, kMaxAndroidHapticChannels))
         ->capture_default_str();

@@ -18,6 +18,8 @@
 #include "tactus/actuator/drive_meter.hpp"
 #include "tactus/export/haptic_track.hpp"
 #include "tactus/export/html_report.hpp"
+#include "tactus/export/thin_rows.hpp"
+#include "tactus/export/vorbis_writer.hpp"
 #include "tactus/io/text_output.hpp"
 #include "tactus/perception/meter.hpp"
 
@@ -26,6 +28,9 @@ namespace {
 
 constexpr size_t kMaxPlotRows = 4000;        // per plot: enough for a screen, light to zoom
 constexpr double kMaxEmbeddedSeconds = 120;  // of sound and of vibration in the page
+// The players' Vorbis quality (-0.1 ... 1): ~ 48 kb/s mono at 44.1 kHz, to listen along the
+// plots, not to master from; 120 s of noise take ~ 1 MB (a 16-bit WAV: 10.6 MB).
+constexpr float kPlayerQuality = 0.1f;
 
 struct ReportOptions {
     std::string input, output, actuator;
@@ -61,12 +66,9 @@ class Waveform {
     std::vector<float> samples_;
 };
 
-// Every k-th row, at most kMaxPlotRows.
+// At most about kMaxPlotRows, every series' extremes kept.
 std::vector<std::vector<double>> thinned(const std::vector<std::vector<double>>& rows) {
-    const size_t k = std::max<size_t>(1, (rows.size() + kMaxPlotRows - 1) / kMaxPlotRows);
-    std::vector<std::vector<double>> out;
-    for (size_t i = 0; i < rows.size(); i += k) out.push_back(rows[i]);
-    return out;
+    return thin_rows(rows, kMaxPlotRows);
 }
 
 std::string channel_text(const perception::ChannelSummary& c) {
@@ -181,23 +183,25 @@ void report(const ReportOptions& o) {
     ReportPlot drive = plot("vibration", "Vibration (the actuator's drive)", "full scale",
                             {"vibration"}, vibration->rows());
     drive.onsets = drive.band = true;
-    ReportPlot felt_plot = plot("felt", "Felt envelope (P-weighted, as the exports carry it)",
-                                "0 ... 1", {"felt"}, thinned(felt));
+    ReportPlot felt_plot =
+        plot("felt", "Felt envelope (P-weighted; 1: its peak)", "0 ... 1", {"felt"}, thinned(felt));
     felt_plot.onsets = true;
     data.plots = {
         waveform,
         loudness,
         brightness,
-        plot("noisiness", "Noisiness (spectral flatness)", "0 tonal ... 1 noise", {"noisiness"},
-             column(3)),
+        plot("noisiness", "Noisiness (spectral flatness: 0 tonal, 1 noise)", "flatness",
+             {"noisiness"}, column(3)),
         pitch,
         vibration_program,
         drive,
         felt_plot,
         plot("sensation", "Sensation level per channel of touch (through " + metered.name + ")",
              "dB SL", {"P", "NPI", "NPII", "NPIII", "combined"}, thinned(levels))};
-    data.sound_wav = wav_file_bytes(sound->first_seconds(kMaxEmbeddedSeconds), rate);
-    data.vibration_wav = wav_file_bytes(vibration->first_seconds(kMaxEmbeddedSeconds), rate);
+    data.sound_ogg =
+        vorbis_file_bytes(sound->first_seconds(kMaxEmbeddedSeconds), rate, kPlayerQuality);
+    data.vibration_ogg =
+        vorbis_file_bytes(vibration->first_seconds(kMaxEmbeddedSeconds), rate, kPlayerQuality);
     if (static_cast<double>(sound->size()) / rate > kMaxEmbeddedSeconds)
         data.note = fmt::format("The players hold the first {:g} s.", kMaxEmbeddedSeconds);
 

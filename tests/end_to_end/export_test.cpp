@@ -19,8 +19,10 @@
 #include "tactus/engine/onset_decisions.hpp"
 #include "tactus/export/felt_envelope.hpp"
 #include "tactus/export/haptic_formats.hpp"
+#include "tactus/io/actuator_file.hpp"
 #include "tactus/io/audio_reader.hpp"
 #include "tactus/io/preset.hpp"
+#include "tactus/perception/threshold.hpp"
 
 namespace {
 
@@ -339,6 +341,17 @@ TEST_P(Export, HapticFollowsMetaSpecAndTheFeltEnvelope) {
         EXPECT_NEAR(emphasis_frequency[i], engine.sharpness[i], 0.00051) << "emphasis " << i;
 }
 
+// The weakest amplitude felt on a phone's LRA (lra-175), worked out here from its profile and the P
+// channel's closed form at its resonance (2.9 cm2, 1 s: the default contact area, full temporal
+// summation): 0.14 um over 12 um x 0.7 (max_drive) = 0.017 of full drive, amplitude 5 of 255.
+int lowest_felt_android_amplitude() {
+    const tactus::ActuatorProfile lra =
+        tactus::load_actuator(tactus::resolve_actuator(tactus::kAndroidActuator));
+    const double threshold_um = std::pow(10.0, tactus::perception::p_threshold_db(175.0) / 20.0);
+    return static_cast<int>(
+        std::ceil(255 * threshold_um / (lra.displacement_um_at(175.0) * lra.max_drive)));
+}
+
 TEST_P(Export, AndroidWaveformIsReadyForCreateWaveform) {
     const EngineRun engine = run_engine(GetParam().path);
     const Json w = read_json(exported(".android.json"));
@@ -355,16 +368,77 @@ TEST_P(Export, AndroidWaveformIsReadyForCreateWaveform) {
     }
     EXPECT_EQ(static_cast<int64_t>(drawn.size()), w.at("duration_ms").get<int64_t>());
     EXPECT_NEAR(static_cast<double>(drawn.size()), engine.felt.size() * kStepS * 1e3, 2);
-    const double r = correlation(drawn, engine.felt);
+    // Each step plays the felt envelope as exported (over its full scale, clipped at 1) as the
+    // step resolves it: its RMS over the step (0 below the floor); and the steps follow the
+    // envelope itself, though no step is shorter than 20 ms.
+    const double full_scale = w.at("metadata").at("felt_full_scale").get<double>();
+    std::vector<double> exported(engine.felt.size()), resolved(engine.felt.size());
+    for (size_t i = 0; i < exported.size(); ++i)
+        exported[i] = std::min(1.0, engine.felt[i] / full_scale);
+    for (size_t i = 0, first = 0; i < timings.size(); ++i) {
+        const size_t last = std::min(exported.size(), first + static_cast<size_t>(timings[i]));
+        double energy = 0;
+        for (size_t k = first; k < last; ++k) energy += exported[k] * exported[k];
+        for (size_t k = first; k < last; ++k)
+            resolved[k] = std::sqrt(energy / static_cast<double>(last - first));
+        first = last;
+    }
+    const double r = correlation(drawn, resolved), r_felt = correlation(drawn, exported);
     std::cout << GetParam().name << ".android.json: " << timings.size() << " steps, correlation "
-              << r << '\n';
+              << r << " with the felt envelope over each step, " << r_felt << " step by step\n";
     EXPECT_GE(r, kMinCorrelation);
+    EXPECT_GE(r_felt, 0.85);
     std::vector<double> onsets_s;
     for (const double ms : w.at("onsets_ms").get<std::vector<double>>())
         onsets_s.push_back(ms / 1e3);
     expect_parts_as_printed(onsets_s, w.at("onset_parts").get<std::vector<std::string>>(),
                             w.at("onset_strengths_db").get<std::vector<double>>(), onsets(),
                             "Android");
+}
+
+// A phone without amplitude control plays every amplitude but 0 at full strength: nothing below
+// what its actuator makes felt is written, so the motor stops where the vibration fades (a tail
+// of amplitude 1 buzzed to the end), and no step is shorter than a phone resolves (20 ms).
+TEST_P(Export, AndroidSwitchesTheMotorOffBelowTheFeltFloor) {
+    const EngineRun engine = run_engine(GetParam().path);
+    const Json w = read_json(exported(".android.json"));
+    const auto timings = w.at("timings").get<std::vector<int64_t>>();
+    const auto amplitudes = w.at("amplitudes").get<std::vector<int>>();
+    const int lowest = lowest_felt_android_amplitude();
+    EXPECT_EQ(w.at("lowest_amplitude").get<int>(), lowest);
+    EXPECT_EQ(w.at("min_step_ms").get<int>(), 20);
+    std::vector<int> drawn;
+    int64_t on_ms = 0;
+    for (size_t i = 0; i < timings.size(); ++i) {
+        EXPECT_GE(timings[i], 20) << "step " << i;
+        if (amplitudes[i] != 0) {
+            EXPECT_GE(amplitudes[i], lowest) << "step " << i;
+        }
+        on_ms += amplitudes[i] > 0 ? timings[i] : 0;
+        drawn.insert(drawn.end(), static_cast<size_t>(timings[i]), amplitudes[i]);
+    }
+    ASSERT_FALSE(amplitudes.empty());
+    EXPECT_EQ(amplitudes.back(), 0) << "the motor runs to the end";
+    // Wherever the exported envelope stays below the floor for 40 ms, the motor is off after its
+    // first 20 ms (a step may reach 20 ms past a fade).
+    const double full_scale = w.at("metadata").at("felt_full_scale").get<double>();
+    const double floor = (lowest - 0.5) / 255.0;
+    size_t quiet_ms = 0, buzzing_ms = 0;
+    for (size_t i = 0; i < std::min(drawn.size(), engine.felt.size()); ++i) {
+        const bool below = engine.felt[i] / full_scale < floor;
+        size_t run = 0;
+        while (below && i + run < engine.felt.size() && run < 40 &&
+               engine.felt[i + run] / full_scale < floor)
+            ++run;
+        if (run < 40) continue;
+        ++quiet_ms;
+        buzzing_ms += i + 20 < drawn.size() && drawn[i + 20] != 0;
+    }
+    std::cout << GetParam().name << ".android.json: motor on "
+              << 100.0 * static_cast<double>(on_ms) / static_cast<double>(drawn.size())
+              << " % of the time, " << timings.size() << " steps; " << buzzing_ms << " of "
+              << quiet_ms << " ms below the floor on\n";
+    EXPECT_EQ(buzzing_ms, 0u);
 }
 
 // The comments of an Ogg Vorbis file, read from its comment header as the Vorbis I spec lays
@@ -453,6 +527,91 @@ TEST_F(Cli, ExportRefusesASecondOggAndARepeatedOutput) {
     EXPECT_NE(r.exit_code, 0);
     EXPECT_NE(r.err.find("c.ahap: named twice"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(a) || fs::exists(b) || fs::exists(c));
+    expect_no_temporaries();
+}
+
+}  // namespace
+
+namespace {
+
+std::vector<double> transient_intensities(const Json& ahap) {
+    std::vector<double> v;
+    for (const Json& item : ahap.at("Pattern"))
+        if (item.contains("Event") && item["Event"].at("EventType") == "HapticTransient")
+            v.push_back(item["Event"].at("EventParameters").at(0).at("ParameterValue"));
+    return v;
+}
+
+// numpy.percentile's default: linear between ranks.
+double percentile(std::vector<double> v, double p) {
+    std::sort(v.begin(), v.end());
+    const double rank = p / 100 * static_cast<double>(v.size() - 1);
+    const auto below = static_cast<size_t>(rank);
+    const size_t above = std::min(v.size() - 1, below + 1);
+    return v[below] + (rank - static_cast<double>(below)) * (v[above] - v[below]);
+}
+
+// --normalise pNN puts the NN-th percentile of the hits at full scale (louder ones clip at 1),
+// --gain-db scales after it, by default p99; each file says so in its description.
+TEST_F(Cli, ExportNormalisesToAPercentileOfTheHitsWithAGain) {
+    const std::string input = kSounds[0].path;
+    const fs::path peak = dir_ / "peak.ahap", p90 = dir_ / "p90.ahap", plain = dir_ / "plain.ahap",
+                   android = dir_ / "p90.android.json";
+    ASSERT_EQ(run("export " + input + " -o " + peak.string() + " --normalise peak").exit_code, 0);
+    ASSERT_EQ(run("export " + input + " -o " + p90.string() + " -o " + android.string() +
+                  " --normalise p90 --gain-db -3")
+                  .exit_code,
+              0);
+    ASSERT_EQ(run("export " + input + " -o " + plain.string()).exit_code, 0);
+    const Json by_peak = read_json(peak), by_p90 = read_json(p90), by_default = read_json(plain);
+    const auto at_peak = transient_intensities(by_peak), at_p90 = transient_intensities(by_p90),
+               at_default = transient_intensities(by_default);
+    ASSERT_EQ(at_p90.size(), at_peak.size());
+    ASSERT_GE(at_peak.size(), 20u);
+    EXPECT_EQ(*std::max_element(at_peak.begin(), at_peak.end()), 1.0);
+    const double gain = std::pow(10.0, -3.0 / 20), p90_of_peak = percentile(at_peak, 90),
+                 p99_of_peak = percentile(at_peak, 99);
+    int clipped = 0;
+    for (size_t i = 0; i < at_peak.size(); ++i) {
+        // Both files rounded to 0.001: the peak file's rounding, of the value and of the
+        // percentile read from it, carries over scaled.
+        const auto near = [&](double exported, double scale) {
+            const double expected = std::min(1.0, at_peak[i] * scale);
+            const double rounding =
+                0.0005 + expected * 0.0005 * (1 / at_peak[i] + scale / (gain / p90_of_peak));
+            EXPECT_NEAR(exported, expected, rounding) << "transient " << i;
+        };
+        near(at_p90[i], gain / p90_of_peak);
+        near(at_default[i], 1 / p99_of_peak);
+        clipped += at_p90[i] == 1.0;
+    }
+    EXPECT_GE(clipped, 1);
+    std::cout << "amen: p90 of the transients " << p90_of_peak << " of the peak; median "
+              << percentile(at_peak, 50) << " (peak) -> " << percentile(at_p90, 50)
+              << " (p90, -3 dB), " << percentile(at_default, 50) << " (p99, default)\n";
+    const std::string description = by_p90.at("Metadata").at("Description");
+    EXPECT_NE(description.find("p90 of the hits' felt peaks"), std::string::npos) << description;
+    EXPECT_NE(description.find("gain -3.0 dB"), std::string::npos) << description;
+    EXPECT_NE(by_default.at("Metadata").at("Description").get<std::string>().find("p99"),
+              std::string::npos);
+    EXPECT_NE(
+        by_peak.at("Metadata").at("Description").get<std::string>().find("the peak is full scale"),
+        std::string::npos);
+    EXPECT_EQ(read_json(android).at("metadata").at("description"), description);
+}
+
+TEST_F(Cli, ExportRefusesABadNormalisationBeforeReadingAudio) {
+    const std::string input = kSounds[0].path;
+    const fs::path out = dir_ / "x.ahap";
+    for (const char* bad : {"--normalise p101", "--normalise loud", "--gain-db 60"}) {
+        const auto r = run("export " + input + " -o " + out.string() + " " + bad);
+        EXPECT_NE(r.exit_code, 0) << bad;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find(std::string(bad).substr(0, std::string(bad).find(' '))),
+                  std::string::npos)
+            << r.err;
+        EXPECT_FALSE(fs::exists(out));
+    }
     expect_no_temporaries();
 }
 

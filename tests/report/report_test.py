@@ -1,16 +1,21 @@
 #!/usr/bin/python3
-"""tactus report in a real browser: headless Chromium loads the page of the Amen break and of a
-19 ms tick with no script error, the page says it has drawn every plot, and a screenshot shows
-drawn pixels (the series' colours) in each plot area that has values. The onsets are drawn in
-their drum part's colour, with a legend naming the four parts, and the waveform shows every onset
-(the Amen break's in two parts at least). The page is one file with
-nothing fetched: no external script, style, link or image; the sound and the vibration are WAV
-data URIs.
+"""tactus report in a real browser: headless Chromium loads the page of the Amen break, of a
+19 ms tick and of five minutes of quiet noise with one loud hit, with no script or player error,
+the page records (hidden, nothing shown: no "drawn" text, its title kept) that it has drawn every
+plot, no axis title runs into its tick labels, and a screenshot shows drawn pixels (the series'
+colours) in each plot area that has values. The onsets are drawn in their drum part's colour,
+with a legend naming the four parts, and the waveform shows every onset (the Amen break's in two
+parts at least). The page is one file with nothing fetched: no external script, style, link or
+image; the sound and the vibration are Ogg Vorbis data URIs that decode to the sound (as long as
+the page says, its envelope the input's) and that the browser loads. Plots are thinned keeping
+each bucket's extremes: the long file's one hit keeps the felt envelope's peak (1.0) and the
+loudness plot's maximum is the one `tactus analyze` prints; its page stays under 3 MB.
 
 usage: report_test.py TACTUS CHROMIUM
 (TACTUS_REPORT_SCREENSHOTS=DIR keeps the screenshots there, to look at.)"""
 import base64
 import html
+import io
 import json
 import os
 import re
@@ -19,12 +24,17 @@ import subprocess
 import sys
 import tempfile
 
+import numpy as np
+import soundfile
 from PIL import Image
 
 TACTUS, CHROMIUM = sys.argv[1], sys.argv[2]
 SOUNDS = {"amen": "/usr/share/sonic-pi/samples/loop_amen_full.flac",
           "tick": "/usr/share/sonic-pi/samples/elec_tick.flac"}
 WINDOW = (1200, 2700)
+LONG_S, LONG_RATE = 300, 44100  # the long file: quiet noise with one loud hit in the middle
+MAX_PAGE_BYTES = 3_000_000      # its page (two 120 s WAV players alone took 28 MB)
+MAX_PLAYER_S = 120              # what the players hold at most
 failures = []
 
 
@@ -61,7 +71,36 @@ def coloured(pixel, colours):
     return not onset_line(pixel, colours)
 
 
+def write_long_file(path):
+    """Five minutes of noise at -40 dBFS RMS and, in the middle, one loud 20 ms hit."""
+    rng = np.random.default_rng(7)
+    x = 0.01 * rng.standard_normal(LONG_S * LONG_RATE)
+    hit = np.arange(int(0.02 * LONG_RATE))
+    at = LONG_S // 2 * LONG_RATE
+    x[at:at + hit.size] += 0.9 * np.sign(rng.standard_normal(hit.size)) * np.exp(-hit / 200)
+    soundfile.write(path, np.clip(x, -1, 1), LONG_RATE, subtype="PCM_16")
+
+
+def envelope(x, rate):
+    """RMS in 2 ms windows."""
+    n = int(0.002 * rate)
+    x = x[:len(x) // n * n].reshape(-1, n)
+    return np.sqrt((x * x).mean(axis=1))
+
+
+def plot_rows(text, plot_id):
+    plots = json.loads(re.search(r'id="plot-data">(.*?)</script>', text, re.S).group(1))
+    return next(p["rows"] for p in plots if p["id"] == plot_id)
+
+
+def attribute(tag, name):
+    found = re.search(r'\s' + name + r'="([^"]*)"', tag)
+    return html.unescape(found.group(1)) if found else None
+
+
 with tempfile.TemporaryDirectory(prefix="tactus-report-") as work:
+    SOUNDS["long"] = os.path.join(work, "long.wav")
+    write_long_file(SOUNDS["long"])
     for name, sound in SOUNDS.items():
         page = os.path.join(work, name + ".html")
         run = subprocess.run([TACTUS, "report", sound, "-o", page], capture_output=True, text=True)
@@ -71,11 +110,53 @@ with tempfile.TemporaryDirectory(prefix="tactus-report-") as work:
         check(not re.search(r'<(script|img|link|iframe)[^>]*\s(src|href)\s*=\s*"(?!data:)', text),
               f"{name}: the page refers to an outside file")
         check("url(http" not in text, f"{name}: the style fetches something")
-        for label, uri in re.findall(r'<span>(\w+)</span><audio controls src="data:audio/wav;base64,([^"]+)"', text):
-            wav = base64.b64decode(uri)
-            check(wav[:4] == b"RIFF" and wav[8:12] == b"WAVE" and len(wav) > 1000,
-                  f"{name}: the {label} player holds no WAV")
-        check(text.count("<audio controls") == 2, f"{name}: two players expected")
+        # The players: Ogg Vorbis that decodes to the sound, as long as the page says it is (at
+        # most MAX_PLAYER_S), the sound player's envelope the input's.
+        length = re.search(r"<tr><th>input</th><td>.*? \(([0-9.]+) s at", text)
+        check(length is not None, f"{name}: no input length in the summary")
+        expected_s = min(MAX_PLAYER_S, float(length.group(1))) if length else 0
+        players = re.findall(r'<span>(\w+)</span><audio controls data-label="\w+" '
+                             r'src="data:audio/ogg;base64,([^"]+)"', text)
+        check([label for label, _ in players] == ["sound", "vibration"],
+              f"{name}: two Ogg players expected, found {[label for label, _ in players]}")
+        decoded = {}
+        for label, uri in players:
+            ogg = base64.b64decode(uri)
+            check(ogg[:4] == b"OggS", f"{name}: the {label} player holds no Ogg")
+            audio, rate = soundfile.read(io.BytesIO(ogg))
+            decoded[label] = audio.size / rate
+            check(abs(audio.size / rate - expected_s) < 0.05,
+                  f"{name}: the {label} player holds {audio.size / rate:.3f} s, not {expected_s:.3f}")
+            if label == "sound":
+                source, source_rate = soundfile.read(sound, always_2d=True)
+                source = source.mean(axis=1)[:audio.size]
+                check(rate == source_rate, f"{name}: the sound player at {rate} Hz, not {source_rate}")
+                level_db = 10 * np.log10(np.mean(audio[:source.size] ** 2) / np.mean(source ** 2))
+                a, b = envelope(audio, rate), envelope(source, rate)
+                n = min(a.size, b.size)
+                r = np.corrcoef(a[:n], b[:n])[0, 1]
+                print(f"{name}: the sound player's level {level_db:+.2f} dB re the input, "
+                      f"envelope correlation {r:.4f}, {len(uri)} bytes of base64")
+                check(abs(level_db) <= 1, f"{name}: the sound player is {level_db:+.2f} dB off")
+                if name != "long":  # steady noise: an envelope without a shape to follow
+                    check(r >= 0.95, f"{name}: the sound player's envelope correlates {r:.3f} "
+                                     "with the input's")
+        if name == "long":
+            size = os.path.getsize(page)
+            print(f"{name}: page {size} bytes")
+            check(size <= MAX_PAGE_BYTES, f"{name}: the page weighs {size} bytes, over {MAX_PAGE_BYTES}")
+            felt = max(r[1] for r in plot_rows(text, "felt") if r[1] is not None)
+            check(felt >= 0.999, f"{name}: the felt plot tops out at {felt}, its peak is 1")
+            analysed = subprocess.run([TACTUS, "analyze", sound, "-o", "-"], capture_output=True,
+                                      text=True)
+            lines = [l for l in analysed.stdout.splitlines() if not l.startswith("#")]
+            column = lines[0].split(",").index("loudness_db")
+            loudest = max(float(l.split(",")[column]) for l in lines[1:])
+            plotted = max(r[1] for r in plot_rows(text, "loudness") if r[1] is not None)
+            print(f"{name}: felt plot peak {felt}, loudness plot max {plotted} dB "
+                  f"(analyze: {loudest:.4f} dB)")
+            check(abs(plotted - loudest) <= 1e-3 * abs(loudest) + 1e-3,
+                  f"{name}: the loudness plot tops out at {plotted} dB, analyze says {loudest}")
         legend = re.findall(r'<span class="onset-part" data-part="(\w+)" data-colour="(#[0-9a-f]{6})"',
                             text)
         check([part for part, _ in legend] == ["kick", "snare", "hat", "other"],
@@ -85,23 +166,40 @@ with tempfile.TemporaryDirectory(prefix="tactus-report-") as work:
         check(onsets is not None, f"{name}: no onset count in the summary")
 
         profile = os.path.join(work, "profile-" + name)
-        dom = chromium(profile, "--dump-dom", "file://" + page)
+        dom = chromium(profile, "--virtual-time-budget=5000", "--dump-dom", "file://" + page)
         check(dom.returncode == 0, f"{name}: chromium --dump-dom failed: {dom.stderr[-500:]}")
-        check("<title>tactus report: drawn</title>" in dom.stdout, f"{name}: the page did not draw")
+        title = f"<title>tactus report: {os.path.basename(sound)}</title>"
+        now = re.search('<title>.*?</title>', dom.stdout)
+        check(title in dom.stdout, f"{name}: the title changed: {now.group(0) if now else None}")
         errors = re.search(r'<div id="errors">(.*?)</div>', dom.stdout, re.S)
         check(errors is not None and errors.group(1).strip() == "",
               f"{name}: script errors: {errors.group(1) if errors else 'no #errors element'}")
-        status = re.search(r'<div id="status" data-plots="([^"]*)"[^>]*>drawn (\d+) plots</div>',
-                           dom.stdout)
-        check(status is not None, f"{name}: no drawn status")
-        if status is None:
+        # Nothing left for tests on the page: the text outside scripts and styles never says "drawn".
+        shown_text = re.sub(r"<(script|style)\b.*?</\1>", "", dom.stdout, flags=re.S)
+        shown_text = html.unescape(re.sub(r"<[^>]*>", " ", shown_text))
+        check("drawn" not in shown_text, f"{name}: the page shows 'drawn'")
+        status = re.search(r'<div id="status"[^>]*>', dom.stdout)
+        check(status is not None and attribute(status.group(0), "hidden") is not None,
+              f"{name}: no hidden #status")
+        if status is None or attribute(status.group(0), "data-drawn") is None:
+            check(False, f"{name}: the page did not draw")
             continue
-        areas = json.loads(html.unescape(status.group(1)))
-        check(len(areas) == 9 == int(status.group(2)), f"{name}: {len(areas)} plots drawn, 9 expected")
-        shown = re.search(r'data-onsets="([^"]*)"', dom.stdout)
+        areas = json.loads(attribute(status.group(0), "data-plots"))
+        check(len(areas) == 9 == int(attribute(status.group(0), "data-drawn")),
+              f"{name}: {len(areas)} plots drawn, 9 expected")
+        for area in areas:
+            check(area["overlaps"] == 0,
+                  f"{name}: plot {area['id']}: an axis title runs into {area['overlaps']} tick labels")
+        for label, seconds in re.findall(r'<audio [^>]*data-label="(\w+)"[^>]*data-duration="([^"]*)"',
+                                         dom.stdout):
+            check(abs(float(seconds) - decoded.get(label, -1)) < 0.05,
+                  f"{name}: the browser reads the {label} player as {seconds} s")
+        check(len(re.findall(r"<audio [^>]*data-duration=", dom.stdout)) == 2,
+              f"{name}: the browser did not load both players")
+        shown = attribute(status.group(0), "data-onsets")
         check(shown is not None, f"{name}: no onset lines counted")
         if shown and onsets:
-            per_part = json.loads(html.unescape(shown.group(1)))
+            per_part = json.loads(shown)
             print(f"{name}: onset lines in the waveform by part: {per_part}")
             check(sum(per_part.values()) == int(onsets.group(1)) > 0,
                   f"{name}: the waveform shows {per_part}, the summary {onsets.group(1)} onsets")

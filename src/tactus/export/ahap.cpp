@@ -88,7 +88,7 @@ std::string ahap_text(const HapticTrack& track) {
                        {"Metadata",
                         {{"Project", track.info.source},
                          {"Created", "tactus " + track.info.version},
-                         {"Description", track.info.describe()},
+                         {"Description", track.description()},
                          {"Onsets", parts}}},
                        {"Pattern", pattern}};
     return ahap.dump(1) + "\n";

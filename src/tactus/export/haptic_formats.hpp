@@ -14,8 +14,12 @@
 //                  the amplitude's.
 //   .android.json  Android VibrationEffect.createWaveform(long[] timings, int[] amplitudes,
 //                  int repeat) (API 26): steps in ms, amplitudes 0 (off) or 1-255; the onsets
-//                  with their parts and strengths beside them.
-// Values are rounded to what a device resolves (0.1 ms, 1e-3 of full scale).
+//                  with their parts and strengths beside them. Steps last kAndroidMinStepMs at
+//                  least, and an amplitude below the actuator's felt floor (felt_floor.hpp) is 0:
+//                  a phone without amplitude control plays every other amplitude at full
+//                  strength, so a tail too weak to feel would buzz.
+// Values are rounded to what a device resolves (0.1 ms, 1e-3 of full scale). Intensity 1 (255) is
+// the track's full scale (normalisation.hpp), stated in each format's description.
 #pragma once
 
 #include <string>
@@ -34,10 +38,22 @@ inline constexpr double kIntensityTolerance = 0.01;
 inline constexpr double kSharpnessTolerance = 0.02;
 // An Android step holds one amplitude while the envelope stays within this range.
 inline constexpr double kAndroidStepRange = 0.02;
+// The shortest Android step. Android drives the vibrator through the framework, one
+// setAmplitude call per step (binder to the vibrator HAL), on actuators that resolve no shorter:
+// a phone's LRA rises in 10-20 ms (docs/perception.md; lra-175's rise_ms is 15), Android's own
+// guidance has a crisp click last 10-20 ms ("Analyze vibration waveforms", developer.android.com),
+// and pulses under ~20 ms are hard to feel on phone actuators (perception.md). A shorter step is
+// never reached, only adds a call: 20 ms, the top of that range.
+inline constexpr int kAndroidMinStepMs = 20;
+// The actuator an Android waveform plays on when none is named: a phone's LRA.
+inline constexpr const char* kAndroidActuator = "lra-175";
 
 std::string ahap_text(const HapticTrack& track);
 std::string meta_haptic_text(const HapticTrack& track);
-std::string android_waveform_text(const HapticTrack& track);
+// floor: the weakest drive felt (0 ... 1, felt_floor.hpp); amplitudes below it are written 0.
+std::string android_waveform_text(const HapticTrack& track, double floor);
+// The lowest amplitude (1-255) at or above `floor`.
+int android_lowest_amplitude(double floor);
 
 // The format named by a path's ending (".ahap", ".haptic", ".android.json", ".ogg"), or empty.
 std::string haptic_format_of(const std::string& path);

@@ -133,11 +133,11 @@ HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engi
 
     HapticTrack track;
     const std::vector<double> felt = envelope->felt();
-    track.felt_peak = felt.empty() ? 0.0 : *std::max_element(felt.begin(), felt.end());
+    track.felt_full_scale = felt.empty() ? 0.0 : *std::max_element(felt.begin(), felt.end());
     track.intensity.resize(felt.size());
     track.sharpness.resize(felt.size());
     for (size_t i = 0; i < felt.size(); ++i) {
-        track.intensity[i] = track.felt_peak > 0 ? felt[i] / track.felt_peak : 0.0;
+        track.intensity[i] = track.felt_full_scale > 0 ? felt[i] / track.felt_full_scale : 0.0;
         track.sharpness[i] = sharpness_of(envelope->carrier_hz()[i]);
     }
     for (const auto& [onset, frequency_hz] : onsets) {

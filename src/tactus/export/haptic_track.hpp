@@ -29,12 +29,16 @@ struct HapticOnset {
 
 struct HapticTrack {
     static constexpr double kStepS = 0.001;
-    std::vector<double> intensity;  // 0 ... 1, felt amplitude normalised to its peak
+    std::vector<double> intensity;  // 0 ... 1, felt amplitude (1: its peak, or normalise()'s)
     std::vector<double> sharpness;  // 0 ... 1, carrier frequency (sharpness_of)
     std::vector<HapticOnset> onsets;
-    double felt_peak = 0;  // the felt amplitude intensity 1 stands for (full scale at 250 Hz)
+    double felt_full_scale = 0;  // the felt amplitude intensity 1 stands for (1: full scale at
+                                 // 250 Hz); as rendered, the envelope's peak
+    std::string normalisation = "the peak is full scale";  // how, in words (normalisation.hpp)
     RenderInfo info;
     double duration_s() const { return static_cast<double>(intensity.size()) * kStepS; }
+    // How it was made and normalised, one line: a format's description.
+    std::string description() const { return info.describe() + "; " + normalisation; }
     // Intensity at any time, linear between steps.
     double intensity_at(double time_s) const;
 };

@@ -80,6 +80,43 @@ constexpr const char* kScript = R"JS(
 window.onerror = function (message, source, line) {
   document.getElementById('errors').textContent += message + ' (line ' + line + ')\n';
 };
+document.querySelectorAll('audio').forEach(function (audio) {
+  var loaded = function () { audio.setAttribute('data-duration', String(audio.duration)); };
+  var failed = function () {
+    document.getElementById('errors').textContent +=
+        'the ' + audio.getAttribute('data-label') + ' player cannot play its sound\n';
+  };
+  audio.addEventListener('loadedmetadata', loaded);
+  audio.addEventListener('error', failed);
+  if (audio.error) failed();
+  else if (audio.readyState >= 1) loaded();  // loaded before this script ran
+});
+// How many tick labels a plot's axis titles run into: a title's text, as laid out, must stay
+// clear of its axis's column (or row) of tick labels (a title that wraps runs into it).
+function textRects(element) {
+  var range = document.createRange();
+  range.selectNodeContents(element);
+  return Array.prototype.slice.call(range.getClientRects());
+}
+function labelOverlaps(div) {
+  var count = 0;
+  [['ylabel', 'y', true], ['y2label', 'y2', true], ['xlabel', 'x', false]].forEach(function (a) {
+    var ticks = [];
+    div.querySelectorAll('.dygraph-axis-label-' + a[1]).forEach(function (t) {
+      ticks = ticks.concat(textRects(t));
+    });
+    div.querySelectorAll('.dygraph-' + a[0]).forEach(function (title) {
+      textRects(title).forEach(function (r) {
+        ticks.forEach(function (t) {
+          if (a[2] ? r.left < t.right && t.left < r.right : r.top < t.bottom && t.top < r.bottom)
+            ++count;
+        });
+      });
+    });
+  });
+  return count;
+}
+var kTickWidth = 64;  // px
 (function () {
   var plots = JSON.parse(document.getElementById('plot-data').textContent);
   var onsets = JSON.parse(document.getElementById('onset-data').textContent);
@@ -97,7 +134,11 @@ window.onerror = function (message, source, line) {
       logscale: p.log, customBars: p.band, fillAlpha: 0.6, series: series,
       connectSeparatedPoints: false, legend: 'always', labelsSeparateLines: false,
       labelsDiv: document.getElementById(p.id + '-legend'),
-      axes: {y2: {independentTicks: true}}, height: 180, animatedZooms: false,
+      // Room for five-digit ticks (10000 Hz) beside the axis title: dygraphs' 50 px lets a
+      // title touch four-digit ones.
+      axes: {y: {axisLabelWidth: kTickWidth},
+             y2: {independentTicks: true, axisLabelWidth: kTickWidth}},
+      height: 180, animatedZooms: false,
       dateWindow: [0, end], drawPoints: p.points, pointSize: 3
     };
     if (p.right && p.right.length) options.y2label = p.right.join(', ');
@@ -127,13 +168,12 @@ window.onerror = function (message, source, line) {
     });
     return {id: plots[i].id, x: Math.round(box.left + a.x + window.scrollX),
             y: Math.round(box.top + a.y + window.scrollY), w: Math.round(a.w), h: Math.round(a.h),
-            values: values};
+            values: values, overlaps: labelOverlaps(g.graphDiv)};
   });
   var status = document.getElementById('status');
   status.setAttribute('data-plots', JSON.stringify(areas));
   status.setAttribute('data-onsets', JSON.stringify(shown));
-  status.textContent = 'drawn ' + graphs.length + ' plots';
-  document.title = 'tactus report: drawn';
+  status.setAttribute('data-drawn', String(graphs.length));
 })();
 )JS";
 
@@ -144,36 +184,6 @@ Dygraphs load_dygraphs() {
     const fs::path dir = env && *env ? fs::path(env) : fs::path(kDygraphsDir);
     return {read_text(dir / "dygraph.min.js"), read_text(dir / "extras" / "synchronizer.js"),
             read_text(dir / "dygraph.min.css")};
-}
-
-std::string wav_file_bytes(const std::vector<float>& mono, double sample_rate_hz) {
-    const auto rate = static_cast<uint32_t>(sample_rate_hz);
-    const auto data_bytes = static_cast<uint32_t>(mono.size() * 2);
-    std::string out;
-    const auto u32 = [&](uint32_t v) {
-        for (int i = 0; i < 4; ++i) out += static_cast<char>((v >> (8 * i)) & 0xff);
-    };
-    const auto u16 = [&](uint16_t v) {
-        out += static_cast<char>(v & 0xff);
-        out += static_cast<char>(v >> 8);
-    };
-    out += "RIFF";
-    u32(36 + data_bytes);
-    out += "WAVEfmt ";
-    u32(16);
-    u16(1);  // PCM
-    u16(1);  // mono
-    u32(rate);
-    u32(rate * 2);
-    u16(2);
-    u16(16);
-    out += "data";
-    u32(data_bytes);
-    for (const float x : mono) {
-        const auto v = static_cast<int16_t>(std::lround(std::clamp(x, -1.0f, 1.0f) * 32767.0f));
-        u16(static_cast<uint16_t>(v));
-    }
-    return out;
 }
 
 std::string base64(const std::string& bytes) {
@@ -242,12 +252,12 @@ std::string report_html(const ReportData& data, const Dygraphs& dygraphs) {
     std::string summary;
     for (const auto& [what, value] : data.summary)
         summary += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", escaped(what), escaped(value));
-    const auto player = [](const char* label, const std::string& wav) {
-        if (wav.empty()) return std::string();
+    const auto player = [](const char* label, const std::string& ogg) {
+        if (ogg.empty()) return std::string();
         return fmt::format(
-            "<p><span>{}</span><audio controls src=\"data:audio/wav;base64,{}\">"
-            "</audio></p>\n",
-            label, base64(wav));
+            "<p><span>{0}</span><audio controls data-label=\"{0}\" "
+            "src=\"data:audio/ogg;base64,{1}\"></audio></p>\n",
+            label, base64(ogg));
     };
     std::string page;
     page += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
@@ -267,11 +277,11 @@ audio { vertical-align: middle; margin-left: 8px; width: 480px; }
 <body>
 )";
     page += fmt::format("<h1>{}</h1>\n<table>\n{}</table>\n", escaped(data.title), summary);
-    page += player("sound", data.sound_wav) + player("vibration", data.vibration_wav);
+    page += player("sound", data.sound_ogg) + player("vibration", data.vibration_ogg);
     if (!data.note.empty()) page += fmt::format("<p><small>{}</small></p>\n", escaped(data.note));
     page += "<p><small>Drag to zoom (every plot follows), double-click to zoom out.</small></p>\n";
     page += "<p id=\"onset-legend\"><small>Onsets by drum part:" + legend + "</small></p>\n";
-    page += "<div id=\"status\">not drawn</div><div id=\"errors\"></div>\n";
+    page += "<div id=\"status\" hidden></div><div id=\"errors\"></div>\n";
     page += divs;
     page += "<script type=\"application/json\" id=\"plot-data\">" +
             inlined(plots.dump(), "</script") + "</script>\n";

@@ -1,11 +1,13 @@
 // A self-contained HTML report (one file, no network: opened by double click): plots aligned in
 // time and zoomed together, drawn by dygraphs (Debian's libjs-dygraphs, inlined into the page:
 // dygraph.min.js, dygraph.min.css and the synchronizer extra), a summary table, and the sound
-// and the vibration playable from data URIs. The page records that it has drawn: its title
-// becomes "tactus report: drawn" and #status carries each plot area's rectangle and how many
-// values it has, and how many onset lines of each drum part the waveform shows (for tests in a
-// headless browser); script errors are written into #errors. Onsets are drawn in their part's
-// colour, named in a legend (#onset-legend).
+// and the vibration playable from data URIs (Ogg Vorbis: a tenth of a WAV's size). The page
+// records what it has drawn in a hidden #status (for tests in a headless browser, nothing shown):
+// data-drawn, the number of plots; data-plots, each plot area's rectangle, how many values it
+// has and how many tick labels its axis labels overlap; data-onsets, how many onset lines of
+// each drum part the waveform shows; each player's duration once loaded (data-duration). Script
+// and player errors are written into #errors. Onsets are drawn in their part's colour, named in
+// a legend (#onset-legend).
 #pragma once
 
 #include <filesystem>
@@ -38,7 +40,7 @@ struct ReportData {
     std::vector<std::pair<std::string, std::string>> summary;  // (what, value) rows
     std::vector<ReportPlot> plots;
     std::vector<ReportOnset> onsets;
-    std::string sound_wav, vibration_wav;  // file bytes (may be empty)
+    std::string sound_ogg, vibration_ogg;  // Ogg Vorbis file bytes (may be empty)
     std::string note;                      // a line under the players (e.g. what was cut)
 };
 
@@ -51,8 +53,7 @@ Dygraphs load_dygraphs();
 
 std::string report_html(const ReportData& data, const Dygraphs& dygraphs);
 
-// Helpers for the data URIs: a 16-bit mono WAV file in memory, and base64.
-std::string wav_file_bytes(const std::vector<float>& mono, double sample_rate_hz);
+// For the data URIs.
 std::string base64(const std::string& bytes);
 
 }  // namespace tactus

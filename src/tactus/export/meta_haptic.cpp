@@ -1,4 +1,4 @@
-// .haptic (Meta Haptics SDK / Lofelt v1) and Android waveforms: haptic_formats.hpp.
+// .haptic (Meta Haptics SDK / Lofelt v1): haptic_formats.hpp.
 #include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -59,60 +59,10 @@ std::string meta_haptic_text(const HapticTrack& track) {
           {"source", track.info.source},
           {"project", ""},
           {"tags", Json::array()},
-          {"description", track.info.describe()}}},
+          {"description", track.description()}}},
         {"signals",
          {{"continuous", {{"envelopes", {{"amplitude", amplitude}, {"frequency", frequency}}}}}}}};
     return haptic.dump(1) + "\n";
-}
-
-std::string android_waveform_text(const HapticTrack& track) {
-    // Steps that each hold one amplitude while the envelope stays within kAndroidStepRange.
-    Json timings = Json::array(), amplitudes = Json::array();
-    const auto& v = track.intensity;
-    const auto ms_per_step = HapticTrack::kStepS * 1e3;
-    int64_t total_ms = 0;
-    for (size_t first = 0; first < v.size();) {
-        double low = v[first], high = v[first];
-        size_t end = first + 1;
-        for (; end < v.size(); ++end) {
-            const double l = std::min(low, v[end]), h = std::max(high, v[end]);
-            if (h - l > kAndroidStepRange) break;
-            low = l;
-            high = h;
-        }
-        const int amplitude =
-            static_cast<int>(std::lround(0.5 * (low + high) * kAndroidMaxAmplitude));
-        const auto ms =
-            static_cast<int64_t>(std::lround(static_cast<double>(end - first) * ms_per_step));
-        if (!amplitudes.empty() && amplitudes.back().get<int>() == amplitude) {
-            timings.back() = timings.back().get<int64_t>() + ms;
-        } else {
-            timings.push_back(ms);
-            amplitudes.push_back(amplitude);
-        }
-        total_ms += ms;
-        first = end;
-    }
-    Json onsets = Json::array(), parts = Json::array(), strengths = Json::array();
-    for (const HapticOnset& onset : track.onsets) {
-        onsets.push_back(time_value(onset.time_s * 1e3));
-        parts.push_back(name_of(onset.part));
-        strengths.push_back(decibels(onset.strength_db));
-    }
-    const Json waveform = {
-        {"api_level", kAndroidWaveformApiLevel},
-        {"call", "VibrationEffect.createWaveform(timings, amplitudes, repeat)"},
-        {"requires",
-         "Vibrator.hasAmplitudeControl() (else amplitudes other than 0 play at the default)"},
-        {"repeat", -1},
-        {"duration_ms", total_ms},
-        {"timings", timings},
-        {"amplitudes", amplitudes},
-        {"onsets_ms", onsets},
-        {"onset_parts", parts},
-        {"onset_strengths_db", strengths},
-        {"metadata", {{"description", track.info.describe()}}}};
-    return waveform.dump(1) + "\n";
 }
 
 std::string haptic_format_of(const std::string& path) {
