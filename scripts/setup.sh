@@ -14,7 +14,7 @@ packages=(
   python3-dev pybind11-dev python3-pytest python3-matplotlib python3-distributed python3-pandas
   vamp-plugin-sdk vamp-examples
   libjs-dygraphs chromium python3-pil
-  librtaudio-dev liblo-dev libjack-jackd2-dev
+  librtaudio-dev liblo-dev libjack-jackd2-dev libasound2-dev
 )
 
 missing=()

@@ -19,6 +19,7 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "live/channel_list.hpp"
+#include "live/console.hpp"
 #include "live/device_stream.hpp"
 #include "live/frame_monitor.hpp"
 #include "live/live_callback.hpp"
@@ -54,6 +55,7 @@ struct LiveOptions {
     std::vector<double> gains_db, delays_ms;  // the same
     double rate_hz = 0;
     int block = 256;
+    bool block_given = false;  // --block on the command line
     std::string osc_port, osc_send;
     double osc_rate_hz = kDefaultOscRateHz;
     double duration_s = 0;
@@ -104,6 +106,7 @@ live::StreamRequest stream_request(const LiveOptions& o, const live::Routing& ro
         r.input_first_channel = std::max(channel, 0);
     }
     r.sample_rate_hz = rate_hz;
+    r.rate_required = o.rate_hz > 0;
     r.block_frames = o.block;
     return r;
 }
@@ -141,18 +144,25 @@ void live_run(const LiveOptions& o) {
     if (!o.osc_port.empty()) osc_in = live::parse_endpoint(o.osc_port, "--osc-port", "127.0.0.1");
     if (!o.osc_send.empty()) osc_out = live::parse_endpoint(o.osc_send, "--osc-send", "127.0.0.1");
 
-    // The device first: its rate is the engine's (JACK's is the server's).
+    // The device first: its rate is the engine's (JACK's is the server's). Without --rate it is
+    // asked for the first file's rate; the player converts the files at another one.
     double rate_hz = o.rate_hz;
-    if (rate_hz <= 0 && !o.play.empty() && o.backend != "jack")
-        rate_hz = live::Player::sample_rate_of(o.play[0]);
+    if (rate_hz <= 0 && !o.play.empty()) rate_hz = live::Player::sample_rate_of(o.play[0]);
     const live::StreamRequest request = stream_request(o, routing, rate_hz);
     auto stream = std::make_unique<live::DeviceStream>(request);
     rate_hz = stream->sample_rate_hz();
+    live::Console console(std::cerr, ::isatty(STDERR_FILENO) == 1);
+    if (o.block_given && stream->block_frames() != o.block)
+        console.message(fmt::format("--block {}: {} {} frames a block; using {}", o.block,
+                                    stream->runs(), stream->block_frames(),
+                                    stream->block_frames()));
 
     std::optional<live::Player> player;
-    if (!o.play.empty())
+    if (!o.play.empty()) {
         player.emplace(std::vector<std::filesystem::path>(o.play.begin(), o.play.end()), rate_hz,
                        o.loop);
+        for (const std::string& line : player->conversions()) console.message(line);
+    }
     routing.device_inputs = player ? 0 : stream->input_channels();
 
     Engine engine(settings);
@@ -161,14 +171,14 @@ void live_run(const LiveOptions& o) {
     engine.prepare({.sample_rate_hz = rate_hz,
                     .max_block = std::min(Engine::kMaxBlock, std::max(stream->block_frames(), 16)),
                     .channels = player ? player->channels() : routing.device_inputs});
-    const int onset_to_pulse = live::vibration_delay_samples(settings, rate_hz, outputs[0].profile);
-    const int sync_samples = o.sync ? onset_to_pulse : 0;
-    live::LiveCallback callback(engine, player ? &*player : nullptr, routing, sync_samples);
+    live::VibrationDelay onset_to_pulse(settings, rate_hz, outputs[0].profile);
+    live::LiveCallback callback(engine, player ? &*player : nullptr, routing,
+                                o.sync ? onset_to_pulse.samples() : live::kNoSync);
 
     live::LiveControl control(engine, settings, o.pipeline.assignments);
-    const auto report = [](const std::string& line) { std::cerr << "tactus: " << line << '\n'; };
+    const auto report = [&console](const std::string& line) { console.message(line); };
     std::optional<live::OscServer> server;
-    if (osc_in) server.emplace(*osc_in, control);
+    if (osc_in) server.emplace(*osc_in, control, report);
     std::optional<live::OscSender> sender;
     if (osc_out) sender.emplace(*osc_out);
     live::FrameMonitor monitor(engine, sender ? &*sender : nullptr, o.osc_rate_hz);
@@ -181,26 +191,32 @@ void live_run(const LiveOptions& o) {
     if (server) server->start();
 
     const long device_frames = stream->device_latency_frames();
-    const int algorithmic_frames = onset_to_pulse;
     const auto ms = [&](double frames) { return 1000.0 * frames / rate_hz; };
-    const double latency_ms = ms(static_cast<double>(device_frames + algorithmic_frames));
-    std::cerr << fmt::format(
-        "tactus: live on {} at {:g} Hz, {} frames a block, {} actuator(s){}{}\n"
-        "tactus: latency {:.2f} ms: device {} frames ({:.2f} ms) + algorithmic {} frames "
-        "({:.2f} ms: onset to pulse, of which look-ahead {} frames){}\n",
-        stream->output_name(), rate_hz, stream->block_frames(), routing.actuator_channels.size(),
+    const auto latency_ms = [&] {
+        return ms(static_cast<double>(device_frames + onset_to_pulse.samples()));
+    };
+    // The algorithmic part and --sync's delay, at the start and after each change of them.
+    const auto latency_text = [&] {
+        const int frames = onset_to_pulse.samples();
+        return fmt::format(
+            "latency {:.2f} ms: device {} frames ({:.2f} ms) + algorithmic {} frames ({:.2f} ms: "
+            "onset to pulse, of which look-ahead {} frames){}",
+            latency_ms(), device_frames, ms(static_cast<double>(device_frames)), frames, ms(frames),
+            engine.latency(),
+            o.sync ? fmt::format("; sound delayed {} frames (--sync)", frames) : "");
+    };
+    console.message(fmt::format(
+        "live on {} at {:g} Hz, {} frames a block, {} actuator(s){}{}", stream->output_name(),
+        rate_hz, stream->block_frames(), routing.actuator_channels.size(),
         server ? fmt::format(", OSC on port {}", server->port()) : "",
-        sender ? fmt::format(", OSC to {}:{}", osc_out->host, osc_out->port) : "", latency_ms,
-        device_frames, ms(static_cast<double>(device_frames)), algorithmic_frames,
-        ms(algorithmic_frames), engine.latency(),
-        o.sync ? fmt::format("; sound delayed {} frames (--sync)", sync_samples) : "");
+        sender ? fmt::format(", OSC to {}:{}", osc_out->host, osc_out->port) : ""));
+    console.message(latency_text());
 
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     auto last_status = start;
     std::optional<Clock::time_point> finished_at;
     int64_t onsets_before = 0;
-    const bool terminal = ::isatty(STDERR_FILENO);
     bool lost = false;
     auto next_retry = start;
     while (!g_stop) {
@@ -208,20 +224,22 @@ void live_run(const LiveOptions& o) {
         const auto now = Clock::now();
         const double elapsed_s = std::chrono::duration<double>(now - start).count();
         if (o.duration_s > 0 && elapsed_s >= o.duration_s) break;
+        if (onset_to_pulse.follow(control.settings(), elapsed_s)) {  // the settings changed it
+            callback.set_sync_delay_samples(onset_to_pulse.samples());
+            console.message("new settings: " + latency_text());
+        }
         if (player && player->finished()) {
             if (!finished_at) finished_at = now;
             if (now - *finished_at >=
-                std::chrono::duration<double>(kTailS +
-                                              2.0 * (sync_samples + algorithmic_frames) / rate_hz))
+                std::chrono::duration<double>(kTailS + 4.0 * onset_to_pulse.samples() / rate_hz))
                 break;
         }
         if (!lost && stream->lost()) {
             lost = true;
-            std::cerr << (terminal ? "\n" : "")
-                      << fmt::format(
-                             "tactus: the audio device stopped after {:.2f} s of audio; "
-                             "retrying every second until it returns (Ctrl-C stops)\n",
-                             callback.frames() / rate_hz);
+            console.message(fmt::format(
+                "the audio device stopped after {:.2f} s of audio; retrying every second until it "
+                "returns (Ctrl-C stops)",
+                callback.frames() / rate_hz));
         }
         if (lost && now >= next_retry) {
             next_retry = now + kRetryPeriod;
@@ -232,28 +250,26 @@ void live_run(const LiveOptions& o) {
                     throw std::runtime_error("the device came back at another rate");
                 stream->start(callback);
                 lost = false;
-                std::cerr << "tactus: the audio device is back\n";
+                console.message("the audio device is back");
             } catch (const std::exception&) {
                 stream.reset();
             }
         }
         if (lost && !stream) continue;
         const double since_status_s = std::chrono::duration<double>(now - last_status).count();
-        if (terminal && since_status_s >= kStatusPeriodS) {
+        if (console.terminal() && since_status_s >= kStatusPeriodS) {
             const int64_t onsets = monitor.onsets();
-            std::cerr << '\r'
-                      << live::status_text(callback.take_meters(), since_status_s,
-                                           onsets - onsets_before, latency_ms)
-                      << "\x1b[K" << std::flush;
+            console.status(live::status_text(callback.take_meters(), since_status_s,
+                                             onsets - onsets_before, latency_ms()));
             onsets_before = onsets;
             last_status = now;
         }
     }
     if (stream) stream->stop();
     const live::Meters meters = callback.take_meters();
-    std::cerr << (terminal ? "\n" : "")
-              << fmt::format("tactus: stopped after {:.2f} s of audio, {} onsets, {} xruns\n",
-                             meters.frames / rate_hz, monitor.onsets(), meters.xruns);
+    console.keep_status();
+    console.message(fmt::format("stopped after {:.2f} s of audio, {} onsets, {} xruns",
+                                meters.frames / rate_hz, monitor.onsets(), meters.xruns));
 }
 
 }  // namespace
@@ -290,11 +306,15 @@ void add_live(CLI::App& app) {
         ->delimiter(',');
     command->add_option("--actuator-delay-ms", o->delays_ms, "delay, ms: one for all, or one each")
         ->delimiter(',');
-    command->add_option("--rate", o->rate_hz, "sample rate, Hz (default: the file's or device's)")
+    command
+        ->add_option("--rate", o->rate_hz,
+                     "sample rate, Hz (default: the file's if the device runs at it, else the "
+                     "device's: files at another rate are converted)")
         ->check(CLI::Range(Engine::kMinSampleRateHz, Engine::kMaxSampleRateHz));
-    command->add_option("--block", o->block, "frames per device block")
-        ->check(CLI::Range(16, Engine::kMaxBlock))
-        ->capture_default_str();
+    CLI::Option* block =
+        command->add_option("--block", o->block, "frames per device block (JACK: the server's)")
+            ->check(CLI::Range(16, Engine::kMaxBlock))
+            ->capture_default_str();
     command->add_option("--osc-port", o->osc_port,
                         "listen for OSC control on [HOST:]PORT (HOST: 127.0.0.1 unless named)");
     command->add_option("--osc-send", o->osc_send, "send features and vibration to HOST:PORT");
@@ -306,7 +326,10 @@ void add_live(CLI::App& app) {
                      "stop after this many seconds (default: Ctrl-C, or the end of --play)")
         ->check(CLI::PositiveNumber);
     o->pipeline.add_to(*command);
-    command->callback([o] { live_run(*o); });
+    command->callback([o, block] {
+        o->block_given = block->count() > 0;
+        live_run(*o);
+    });
 }
 
 }  // namespace tactus::cli

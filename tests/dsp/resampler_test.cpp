@@ -1,7 +1,8 @@
 // Resampler against closed forms: unit gain at DC and in the pass band, the stop band (what
 // would alias) at least kStopBandDb - 5 dB down, output n at input position n * M / L (the count
 // after any input), exact ratios for the usual rates and a bounded one otherwise, and the same
-// output for any block split.
+// output for any block split. The listening band converts either way: flat to its pass edge,
+// images and aliases kListeningStopBandDb - 10 dB down.
 #include "tactus/dsp/resampler.hpp"
 
 #include <gtest/gtest.h>
@@ -121,6 +122,61 @@ TEST(Resampler, AnyBlockSplitGivesTheSameOutput) {
         Resampler r;
         r.prepare(44100, 16000, block);
         EXPECT_EQ(resample(r, x, block), expected) << block;
+    }
+}
+
+// Up or down, as `tactus live` converts a file for the device: unit gain to the pass edge, the
+// images of a rise and the aliases of a fall in the stop band.
+TEST(Resampler, ListeningBandConvertsEitherWay) {
+    for (const auto& [in, out] : {std::pair{22050.0, 48000.0}, std::pair{44100.0, 48000.0},
+                                  std::pair{96000.0, 48000.0}, std::pair{48000.0, 44100.0}}) {
+        const double lower = std::min(in, out);
+        const auto convert = [&](const std::vector<float>& x) {
+            Resampler r;
+            r.prepare(in, out, 512, Resampler::Band::listening);
+            std::vector<float> y(static_cast<size_t>(static_cast<double>(x.size()) * out / in) +
+                                 2048);
+            size_t written = 0;
+            for (size_t i = 0; i < x.size(); i += 512) {
+                const int count = static_cast<int>(std::min<size_t>(512, x.size() - i));
+                written += static_cast<size_t>(r.process(x.data() + i, count, y.data() + written));
+            }
+            y.resize(written);
+            return y;
+        };
+        // A tone's amplitude in y at `hz`: correlated under a Hann window (no leakage).
+        const auto amplitude = [&](const std::vector<float>& y, double hz) {
+            double c = 0, s2 = 0, w_sum = 0;
+            const size_t from = 2000, count = y.size() - from;
+            for (size_t i = from; i < y.size(); ++i) {
+                const double w =
+                    0.5 - 0.5 * std::cos(2 * kPi * static_cast<double>(i - from) / count);
+                const double phase = 2 * kPi * hz * static_cast<double>(i) / out;
+                c += w * y[i] * std::cos(phase);
+                s2 += w * y[i] * std::sin(phase);
+                w_sum += w;
+            }
+            return 2 * std::hypot(c, s2) / w_sum;
+        };
+        const size_t n = static_cast<size_t>(0.25 * in);
+        for (const double hz : {100.0, 1000.0, 0.98 * Resampler::kListeningPassEdge * lower}) {
+            const auto y = convert(sine(hz, in, n));
+            EXPECT_NEAR(gain_to_db(amplitude(y, hz)), 0.0, 0.01)
+                << in << " -> " << out << ", " << hz << " Hz";
+        }
+        // Rising, a tone's image mirrors it around the input's Nyquist frequency; falling, a
+        // tone above the output's folds back below it.
+        const double above = in < out ? in - 0.3 * in : 0.5 * out + 0.4 * (0.5 * in - 0.5 * out);
+        const double hz = in < out ? 0.3 * in : above;
+        const auto y = convert(sine(hz, in, n));
+        if (in < out) {  // the tone passes; the image at `above` does not
+            EXPECT_LT(gain_to_db(amplitude(y, above)), -(Resampler::kListeningStopBandDb - 10))
+                << in << " -> " << out << ": the image at " << above << " Hz";
+        } else {
+            EXPECT_LT(gain_to_db(rms(y, 2000) / std::sqrt(0.5)),
+                      -(Resampler::kListeningStopBandDb - 10))
+                << in << " -> " << out << ": " << hz << " Hz folds back";
+        }
     }
 }
 

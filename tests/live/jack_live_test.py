@@ -13,7 +13,7 @@ import sys
 import numpy as np
 import soundfile
 
-from jack_server import JackServer, check, fail
+from jack_server import JackServer, check, fail, hits, onsets
 
 tactus, client, source_dir = sys.argv[1:4]
 AMEN = "/usr/share/sonic-pi/samples/loop_amen.flac"
@@ -80,33 +80,16 @@ if PERIOD != 256:
     sys.exit(0)
 
 # ---- --sync: sound and vibration onsets within 1 ms ----
-# Hits of a decaying 80 Hz tone with a sharp attack, at uneven times.
-rng = np.random.default_rng(7)
-hits_s = np.cumsum(rng.uniform(0.35, 0.6, 8)) + 0.3
-clicks = np.zeros(int((hits_s[-1] + 0.8) * RATE_HZ), dtype=np.float32)
-t = np.arange(int(0.15 * RATE_HZ)) / RATE_HZ
-burst = (0.8 * np.exp(-t / 0.03) * np.sin(2 * np.pi * 80 * t + 0.5)
-         + 0.3 * np.exp(-t / 0.004) * rng.standard_normal(len(t))).astype(np.float32)
-for h in hits_s:
-    i = int(round(h * RATE_HZ))
-    clicks[i:i + len(burst)] += burst
+clicks, hits_s = hits(RATE_HZ, 8)
 clicks_path = os.path.join(d, "hits.wav")
 soundfile.write(clicks_path, clicks, RATE_HZ, subtype="FLOAT")
-
-
-def onsets(x, threshold):
-    """First sample of each run above `threshold` after 100 ms below it."""
-    above = np.flatnonzero(np.abs(x) > threshold)
-    gap = int(0.1 * RATE_HZ)
-    return np.array([a for k, a in enumerate(above) if k == 0 or a - above[k - 1] > gap])
-
 
 for hop_ms in ["0.5", "2.9"]:
     vibration, sound = live_recording(clicks_path, f"sync{hop_ms.replace('.', '_')}",
                                       ["--actuator-channels", "1", "--sync", "--set",
                                        f"analysis.hop_ms={hop_ms}"])
-    heard = onsets(sound, 0.05)
-    felt = onsets(vibration, 0.1 * np.max(np.abs(vibration)))  # sync_delay.hpp: the first rise
+    heard = onsets(sound, 0.05, RATE_HZ)
+    felt = onsets(vibration, 0.1 * np.max(np.abs(vibration)), RATE_HZ)  # sync_delay.hpp: the first rise
     check(len(heard) == len(hits_s), f"{len(hits_s)} hits heard ({len(heard)})")
     check(len(felt) == len(hits_s), f"{len(hits_s)} pulses felt ({len(felt)})")
     offsets_ms = (felt - heard) * 1000 / RATE_HZ

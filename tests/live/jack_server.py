@@ -9,10 +9,13 @@ import ctypes
 import os
 import shutil
 import signal
+import socket
 import subprocess
 import sys
 import tempfile
 import time
+
+import numpy as np
 
 SKIP = 77
 PR_SET_PDEATHSIG = 1
@@ -112,3 +115,31 @@ def check(condition, what):
     print(("ok: " if condition else "FAIL: ") + what)
     if not condition:
         sys.exit(1)
+
+
+def hits(rate_hz, count, seed=7):
+    """Hits of a decaying 80 Hz tone with a sharp attack, at uneven times (0.35 to 0.6 s apart,
+    the first at 0.3 s or more): the signal (float32) and the hits' times in seconds."""
+    rng = np.random.default_rng(seed)
+    hits_s = np.cumsum(rng.uniform(0.35, 0.6, count)) + 0.3
+    x = np.zeros(int((hits_s[-1] + 0.8) * rate_hz), dtype=np.float32)
+    t = np.arange(int(0.15 * rate_hz)) / rate_hz
+    burst = (0.8 * np.exp(-t / 0.03) * np.sin(2 * np.pi * 80 * t + 0.5)
+             + 0.3 * np.exp(-t / 0.004) * rng.standard_normal(len(t))).astype(np.float32)
+    for h in hits_s:
+        i = int(round(h * rate_hz))
+        x[i:i + len(burst)] += burst
+    return x, hits_s
+
+
+def onsets(x, threshold, rate_hz):
+    """First sample of each run above `threshold` after 100 ms below it."""
+    above = np.flatnonzero(np.abs(x) > threshold)
+    gap = int(0.1 * rate_hz)
+    return np.array([a for k, a in enumerate(above) if k == 0 or a - above[k - 1] > gap])
+
+
+def free_udp_port():
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]

@@ -12,6 +12,9 @@
 //       connected and half a second has passed, plays FILE once, then silence; until SIGTERM.
 //   live_test_client osc-send PORT ADDRESS [f VALUE | s TEXT]...
 //       one OSC message to 127.0.0.1:PORT, sent with liblo.
+//   live_test_client osc-ask PORT SECONDS ADDRESS [f VALUE | s TEXT]...
+//       one OSC message to 127.0.0.1:PORT sent from a port of its own (liblo), then prints, as
+//       osc-listen does, the first message that comes back to that port within SECONDS.
 //   live_test_client osc-listen PORT SECONDS
 //       prints every OSC message received on 127.0.0.1:PORT for SECONDS (or until SIGTERM), one
 //       line each: the address, then the arguments.
@@ -208,10 +211,9 @@ int play(const char* name, const char* path) {
     return 0;
 }
 
-int osc_send(const char* port, int argc, char** argv) {
-    lo_address to = lo_address_new("127.0.0.1", port);
+// argv: ADDRESS, then type and value pairs.
+lo_message make_message(int argc, char** argv) {
     lo_message message = lo_message_new();
-    const char* address = argv[0];
     for (int i = 1; i + 1 < argc; i += 2) {
         if (argv[i][0] == 'f')
             lo_message_add_float(message, std::stof(argv[i + 1]));
@@ -220,7 +222,13 @@ int osc_send(const char* port, int argc, char** argv) {
         else
             lo_message_add_string(message, argv[i + 1]);
     }
-    const int sent = lo_send_message(to, address, message);
+    return message;
+}
+
+int osc_send(const char* port, int argc, char** argv) {
+    lo_address to = lo_address_new("127.0.0.1", port);
+    lo_message message = make_message(argc, argv);
+    const int sent = lo_send_message(to, argv[0], message);
     lo_message_free(message);
     lo_address_free(to);
     return sent > 0 ? 0 : 1;
@@ -261,6 +269,24 @@ int osc_listen(const char* port, double seconds) {
     return 0;
 }
 
+int osc_ask(const char* port, double seconds, int argc, char** argv) {
+    lo_server server = lo_server_new(nullptr, nullptr);
+    if (!server) return 1;
+    lo_server_add_method(server, nullptr, nullptr, print_message, nullptr);
+    lo_address to = lo_address_new("127.0.0.1", port);
+    lo_message message = make_message(argc, argv);
+    const int sent = lo_send_message_from(to, server, argv[0], message);
+    lo_message_free(message);
+    lo_address_free(to);
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    int received = 0;
+    while (sent > 0 && received == 0 && std::chrono::steady_clock::now() < end)
+        received = lo_server_recv_noblock(server, 10);
+    std::fflush(stdout);
+    lo_server_free(server);
+    return sent > 0 ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -273,11 +299,14 @@ int main(int argc, char** argv) {
     if (mode == "play" && argc == 4) return play(argv[2], argv[3]);
     if (mode == "osc-send" && argc >= 4) return osc_send(argv[2], argc - 3, argv + 3);
     if (mode == "osc-listen" && argc == 4) return osc_listen(argv[2], std::stod(argv[3]));
+    if (mode == "osc-ask" && argc >= 5)
+        return osc_ask(argv[2], std::stod(argv[3]), argc - 4, argv + 4);
     std::fprintf(stderr,
                  "usage: live_test_client record NAME CHANNELS SECONDS OUT.wav\n"
                  "       live_test_client filter NAME ACTUATOR.toml\n"
                  "       live_test_client play NAME FILE\n"
                  "       live_test_client osc-send PORT ADDRESS [f VALUE | i VALUE | s TEXT]...\n"
+                 "       live_test_client osc-ask PORT SECONDS ADDRESS [f VALUE | s TEXT]...\n"
                  "       live_test_client osc-listen PORT SECONDS\n");
     return 2;
 }

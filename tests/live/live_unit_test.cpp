@@ -52,6 +52,9 @@ TEST(OscAddressSpace, EveryParameterOfTheTableHasItsAddress) {
         ASSERT_TRUE(std::holds_alternative<SetParameter>(c)) << address;
         EXPECT_EQ(std::get<SetParameter>(c).id, s.param);
         EXPECT_EQ(std::get<SetParameter>(c).value, s.default_value);
+        const OscCommand asked = parse_osc({address, {}}, 1);  // no value: a question
+        ASSERT_TRUE(std::holds_alternative<QueryParameter>(asked)) << address;
+        EXPECT_EQ(std::get<QueryParameter>(asked).id, s.param);
     }
 }
 
@@ -85,7 +88,6 @@ TEST(OscAddressSpace, RefusesWhatIsNotInTheTable) {
         {"/tactus/post.drive_db", {OscArg{'d', NAN, ""}}},    // not finite
         {"/tactus/post.drive_db", {OscArg{'s', 0, "loud"}}},  // wrong type
         {"/tactus/post.drive_db", {OscArg{'b', 0, ""}}},      // a blob
-        {"/tactus/post.drive_db", {}},                        // no value
         {"/tactus/post.drive_db", {OscArg{'f', 1, ""}, OscArg{'f', 1, ""}}},
         {"/tactus/mapping.frequency.curve", {OscArg{'s', 0, "cubic"}}},
         {"/tactus/preset", {OscArg{'s', 0, "/etc/passwd"}}},  // a file: never read
@@ -167,6 +169,57 @@ TEST(OscServerHandling, CoalescesABurstAndRefusesTheBad) {
     EXPECT_EQ(now[P::envelope_decay_ms], 321);
     EXPECT_EQ(now[P::flutter_weight], four[P::flutter_weight]);
     EXPECT_EQ(engine.settings()[P::envelope_decay_ms], 321);
+}
+
+// Every message to a parameter's address is answered once the burst is applied, to its sender,
+// with the value then in force: a question, a set (the last of the burst), a refused set (the
+// value kept); a preset applied is acknowledged with its name; nothing else is answered.
+TEST(OscServerHandling, AnswersWithTheValuesInForce) {
+    Engine engine;
+    LiveControl control(engine, Settings{}, {});
+    const std::vector<std::vector<std::byte>> burst = {
+        packet("/tactus/post.drive_db", ""),
+        packet("/tactus/post.drive_db", "f", 3.0),
+        packet("/tactus/envelope.decay_ms", "f", 99999.0),
+        packet("/tactus/mapping.frequency.curve", "s", "log"),
+        packet("/tactus/trigger", ""),
+        packet("/tactus/preset", "s", "nonesuch"),
+        packet("/tactus/no.such", ""),
+        packet("/tactus/post.drive_db", "f", 4.0)};
+    std::vector<std::pair<size_t, OscMessage>> replies;
+    std::vector<std::string> refused;
+    handle_osc_packets(
+        burst, control, [&](const std::string& line) { refused.push_back(line); },
+        [&](size_t k, const OscMessage& m) { replies.emplace_back(k, m); });
+    EXPECT_EQ(refused.size(), 3u) << "the decay, the preset, the unknown address";
+    ASSERT_EQ(replies.size(), 5u);
+    const auto number = [&](size_t i) { return replies[i].second.args.at(0).number; };
+    EXPECT_EQ(replies[0].first, 0u);
+    EXPECT_EQ(replies[0].second.address, "/tactus/post.drive_db");
+    EXPECT_EQ(replies[0].second.args.at(0).type, 'f');
+    EXPECT_EQ(number(0), 4) << "the value in force once the burst applied";
+    EXPECT_EQ(replies[1].first, 1u);
+    EXPECT_EQ(number(1), 4);
+    EXPECT_EQ(replies[2].second.address, "/tactus/envelope.decay_ms");
+    EXPECT_EQ(number(2), Settings{}[P::envelope_decay_ms]) << "refused: the value kept";
+    EXPECT_EQ(replies[3].second.args.at(0).type, 's');
+    EXPECT_EQ(replies[3].second.args.at(0).text, "log") << "a choice by its name";
+    EXPECT_EQ(replies[4].first, 7u);
+
+    replies.clear();
+    handle_osc_packets(
+        std::vector<std::vector<std::byte>>{packet("/tactus/preset", "s", "four-channel")}, control,
+        [](const std::string&) {},
+        [&](size_t k, const OscMessage& m) { replies.emplace_back(k, m); });
+    ASSERT_EQ(replies.size(), 1u);
+    EXPECT_EQ(replies[0].second.address, "/tactus/preset");
+    EXPECT_EQ(replies[0].second.args.at(0).text, "four-channel");
+    // What goes out is what comes in: the reply decodes to itself.
+    const std::vector<OscMessage> decoded = decode_osc_packet(
+        encode_osc_message(parameter_reply(P::post_drive_db, control.settings())));
+    ASSERT_EQ(decoded.size(), 1u);
+    EXPECT_EQ(decoded[0].address, "/tactus/post.drive_db");
+    EXPECT_EQ(decoded[0].args.at(0).number, control.settings()[P::post_drive_db]);
 }
 
 // The preset file rewritten while running: a good file applies (the --set on top), a file with

@@ -3,12 +3,12 @@ sent with liblo while the file plays changes the actuator output exactly as the 
 offline (`tactus render --set`) from that point on, after its glide and the limiter's release; the
 output up to that point is the render without it. A listener receives the features, the
 vibration program at --osc-rate and each onset once, with its drum part and strength. Bad messages get one line on stderr each and
-change nothing.
+change nothing. A parameter's address without a value is answered, to the sender's port, with
+the value in force; a set is answered with the value it put in force.
 
 usage: osc_live_test.py TACTUS LIVE_TEST_CLIENT SOURCE_DIR"""
 
 import os
-import socket
 import subprocess
 import sys
 import time
@@ -16,7 +16,7 @@ import time
 import numpy as np
 import soundfile
 
-from jack_server import JackServer, check, fail
+from jack_server import JackServer, check, fail, free_udp_port
 
 tactus, client, source_dir = sys.argv[1:4]
 AMEN = "/usr/share/sonic-pi/samples/loop_amen_full.flac"  # 6.9 s
@@ -25,12 +25,6 @@ KEY, VALUE = "post.drive_db", "0"  # from the preset's 12 dB
 OSC_RATE_HZ = 50
 jack = JackServer(RATE_HZ)
 d = jack.dir
-
-
-def free_udp_port():
-    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
 
 
 def render(name, *extra):
@@ -71,7 +65,21 @@ send("/tactus/post.drive_db", "f", "99")          # out of range
 send("/tactus/post.drive", "f", "0")              # unknown
 send("/tactus/post.drive_db", "s", "loud")        # wrong type
 send("/tactus/actuator/3/gain", "f", "-6")        # no such actuator
-send(f"/tactus/{KEY}", "f", VALUE)
+
+
+def ask(*args):
+    """One message from the client's own port: the answer, as the client prints it."""
+    r = jack.run([client, "osc-ask", str(control_port), "2", *args])
+    check(r.returncode == 0, f"asked {' '.join(args)}")
+    return r.stdout.strip()
+
+
+was = ask(f"/tactus/{KEY}")
+print(f"the answer to /tactus/{KEY}: {was!r}")
+check(was == f"/tactus/{KEY} 12", "a question is answered with the value in force (the preset's)")
+now = ask(f"/tactus/{KEY}", "f", VALUE)
+print(f"the answer to /tactus/{KEY} {VALUE}: {now!r}")
+check(now == f"/tactus/{KEY} {VALUE}", "a set is answered with the value it put in force")
 live.wait(timeout=60)
 messages = live.stderr.read()
 print(messages, end="")

@@ -3,8 +3,9 @@
 // (support/allocation_counter.hpp) while, on their own threads as in `tactus live`, the OSC server
 // receives real UDP traffic sent with liblo (every live parameter turned, a structural change,
 // triggers, actuator trims, malformed and out-of-range messages), the preset watcher reloads a
-// preset file rewritten on disk, and the frame monitor reads frames and sends features over OSC. No
-// allocation and no lock may happen inside the callback.
+// preset file rewritten on disk, the frame monitor reads frames and sends features over OSC, and
+// --sync's delay moves (as `live` moves it when the settings change it). No allocation and no lock
+// may happen inside the callback.
 #include "live/live_callback.hpp"
 
 #include <gtest/gtest.h>
@@ -107,6 +108,7 @@ TEST_F(LiveCallbackRealTime, PlayerWithOscTrafficAndPresetReloads) {
         const int frames = 16 + b % 497;
         if (b % 4 == 0) send_osc_traffic(to, static_cast<size_t>(b / 4), turned, start);
         if (b % 600 == 300) write_preset(51 + b / 600);
+        if (b % 150 == 75) callback.set_sync_delay_samples(b % 300 == 75 ? 400 : 90);
         {
             Guard guard;
             callback.process(nullptr, out.data(), frames);
@@ -124,6 +126,7 @@ TEST_F(LiveCallbackRealTime, PlayerWithOscTrafficAndPresetReloads) {
     EXPECT_GE(reloads.load(), 4) << "the preset file was rewritten 5 times";
     EXPECT_GT(monitor.onsets(), 10);
     EXPECT_GT(control.settings()[P::pitch_min_hz], 50.0) << "a reloaded preset applied";
+    EXPECT_EQ(callback.sync_delay_samples(), 90) << "the sound's delay moved, back and forth";
     lo_address_free(to);
     lo_server_free(listener);
 }

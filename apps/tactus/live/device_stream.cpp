@@ -1,8 +1,11 @@
 #include "device_stream.hpp"
 
+#include <alsa/asoundlib.h>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
+#include <atomic>
 #include <charconv>
 #include <chrono>
 #include <stdexcept>
@@ -11,12 +14,23 @@
 namespace tactus::live {
 namespace {
 
+extern "C" void ignore_alsa_error(const char*, int, const char*, int, const char*, ...) {}
+std::atomic<int> g_quiet_alsa{0};  // QuietAlsa's alive: they nest
+
 std::string lower(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
     return s;
 }
 
 }  // namespace
+
+QuietAlsa::QuietAlsa() {
+    if (g_quiet_alsa++ == 0) snd_lib_error_set_handler(&ignore_alsa_error);
+}
+
+QuietAlsa::~QuietAlsa() {
+    if (--g_quiet_alsa == 0) snd_lib_error_set_handler(nullptr);  // alsa-lib's default
+}
 
 std::vector<RtAudio::Api> backends() {
     std::vector<RtAudio::Api> apis;
@@ -38,6 +52,7 @@ RtAudio::Api backend_named(const std::string& name) {
 }
 
 std::vector<RtAudio::DeviceInfo> probe_devices(RtAudio& audio) {
+    const QuietAlsa quiet;
     const unsigned int count = audio.getDeviceCount();
     std::vector<RtAudio::DeviceInfo> infos(count);
     // A JACK probe opens a client of its own, which a server busy with a graph change can refuse
@@ -88,6 +103,7 @@ Device find_device(RtAudio& audio, const std::string& name, bool output) {
 }
 
 DeviceStream::DeviceStream(const StreamRequest& request) {
+    const QuietAlsa quiet;
     try {
         audio_ = std::make_unique<RtAudio>(request.backend);
         audio_->showWarnings(false);
@@ -118,6 +134,19 @@ DeviceStream::DeviceStream(const StreamRequest& request) {
                     in_info.inputChannels, request.input_first_channel + input_channels_));
         }
         sample_rate_hz_ = request.sample_rate_hz;
+        const std::vector<unsigned int>& rates = out_info.sampleRates;
+        if (sample_rate_hz_ > 0 && !rates.empty() &&
+            std::none_of(rates.begin(), rates.end(),
+                         [&](unsigned int r) { return r == sample_rate_hz_; })) {
+            if (request.rate_required)
+                throw std::runtime_error(fmt::format(
+                    "--rate {:g}: {} at {} Hz{}", sample_rate_hz_, runs(), fmt::join(rates, ", "),
+                    audio_->getCurrentApi() == RtAudio::UNIX_JACK
+                        ? " (a JACK client takes the server's rate: leave --rate out, or start "
+                          "jackd with -r)"
+                        : ""));
+            sample_rate_hz_ = 0;  // the device's own
+        }
         if (sample_rate_hz_ <= 0)
             sample_rate_hz_ =
                 out_info.preferredSampleRate > 0
@@ -134,6 +163,12 @@ DeviceStream::DeviceStream(const StreamRequest& request) {
     } catch (const RtAudioError& e) {
         throw std::runtime_error(e.getMessage());
     }
+}
+
+std::string DeviceStream::runs() const {
+    return audio_->getCurrentApi() == RtAudio::UNIX_JACK
+               ? "the JACK server runs"
+               : fmt::format("output device '{}' runs", output_name_);
 }
 
 DeviceStream::~DeviceStream() {

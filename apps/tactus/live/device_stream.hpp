@@ -21,6 +21,17 @@ class AudioCallback {
     virtual void note_xrun() noexcept {}
 };
 
+// While one lives, alsa-lib prints nothing of its own (on a machine without a sound card it
+// prints "ALSA lib confmisc.c:..." lines for every probe): RtAudio's errors say what matters,
+// in the project's words. Control thread; the handler is the process's, restored on destruction.
+class QuietAlsa {
+  public:
+    QuietAlsa();
+    ~QuietAlsa();
+    QuietAlsa(const QuietAlsa&) = delete;
+    QuietAlsa& operator=(const QuietAlsa&) = delete;
+};
+
 // "jack", "alsa", "pulse": the backend names the command line takes (RtAudio's own).
 RtAudio::Api backend_named(const std::string& name);
 std::vector<RtAudio::Api> backends();
@@ -33,7 +44,10 @@ struct StreamRequest {
     std::string output_device;  // empty: the default output
     int output_channels = 0;
     double sample_rate_hz = 0;  // 0: the device's (JACK: the server's)
-    int block_frames = 256;
+    // Only sample_rate_hz will do (--rate); else a rate the device does not run at (a file's,
+    // say) gives way to the device's own.
+    bool rate_required = false;
+    int block_frames = 256;  // asked for: the device may run another (JACK: the server's)
     std::string client_name = "tactus";  // JACK's client name
 };
 
@@ -54,6 +68,8 @@ class DeviceStream {
 
     double sample_rate_hz() const { return sample_rate_hz_; }
     int block_frames() const { return static_cast<int>(block_frames_); }
+    // "the JACK server runs" or "the device runs", for messages.
+    std::string runs() const;
     // The device's input + output latency as RtAudio reports it, in frames.
     long device_latency_frames();
     std::string output_name() const { return output_name_; }

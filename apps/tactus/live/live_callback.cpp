@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "sync_delay.hpp"
+
 namespace tactus::live {
 namespace {
 
@@ -24,10 +26,7 @@ float peak(const float* x, int count) noexcept {
 }  // namespace
 
 LiveCallback::LiveCallback(Engine& engine, Player* player, Routing routing, int sync_delay_samples)
-    : engine_(engine),
-      player_(player),
-      routing_(std::move(routing)),
-      sync_delay_(std::max(0, sync_delay_samples)) {
+    : engine_(engine), player_(player), routing_(std::move(routing)) {
     if (static_cast<int>(routing_.actuator_channels.size()) != engine.actuators())
         throw std::invalid_argument("live: one device channel per actuator output");
     const auto check = [&](int channel) {
@@ -40,9 +39,13 @@ LiveCallback::LiveCallback(Engine& engine, Player* player, Routing routing, int 
     if (player_) {
         played_.assign(static_cast<size_t>(sources), std::vector<float>(kChunk));
         for (auto& p : played_) played_pointers_.push_back(p.data());
-        if (sync_delay_ > 0)
-            delay_.assign(static_cast<size_t>(sources),
-                          std::vector<float>(static_cast<size_t>(sync_delay_)));
+        if (sync_delay_samples != kNoSync) {
+            const double rate_hz = engine.sample_rate_hz();
+            delay_.emplace(sources, max_vibration_delay_samples(rate_hz), sync_delay_samples,
+                           static_cast<int>(Engine::kCrossfadeMs / 1000 * rate_hz));
+            sound_.assign(static_cast<size_t>(sources), std::vector<float>(kChunk));
+            for (auto& p : sound_) sound_pointers_.push_back(p.data());
+        }
     }
     in_pointers_.resize(static_cast<size_t>(std::max(sources, 1)));
     out_pointers_.resize(routing_.actuator_channels.size());
@@ -85,42 +88,19 @@ void LiveCallback::process_chunk(const float* in, int in_stride, float* out, int
     raise(input_peak_, in_peak);
 
     if (player_ && !routing_.sound_channels.empty()) {  // the sound, before the engine runs
-        const int n_sound = static_cast<int>(routing_.sound_channels.size());
-        for (int s = 0; s < n_sound; ++s) {
-            const float* from = played_[static_cast<size_t>(s % sources)].data();
-            float* to = out +
-                        static_cast<ptrdiff_t>(routing_.sound_channels[static_cast<size_t>(s)]) *
-                            out_stride +
-                        offset;
-            std::copy(from, from + count, to);
+        const std::vector<std::vector<float>>* sound = &played_;
+        if (delay_) {
+            for (int c = 0; c < sources; ++c)
+                std::copy_n(played_[static_cast<size_t>(c)].data(), count,
+                            sound_[static_cast<size_t>(c)].data());
+            delay_->process(sound_pointers_.data(), count);
+            sound = &sound_;
         }
-        if (sync_delay_ > 0) {  // every sound channel reads its source through one ring
-            int at = delay_at_;
-            for (int s = 0; s < n_sound; ++s) {
-                auto& ring = delay_[static_cast<size_t>(s % sources)];
-                float* x = out +
-                           static_cast<ptrdiff_t>(routing_.sound_channels[static_cast<size_t>(s)]) *
-                               out_stride +
-                           offset;
-                at = delay_at_;
-                if (s < sources) {  // the first channel reading a source turns its ring
-                    for (int i = 0; i < count; ++i) {
-                        const float delayed = ring[static_cast<size_t>(at)];
-                        ring[static_cast<size_t>(at)] = x[i];
-                        x[i] = delayed;
-                        if (++at == sync_delay_) at = 0;
-                    }
-                } else {  // later ones copy what the first read
-                    const float* first =
-                        out +
-                        static_cast<ptrdiff_t>(
-                            routing_.sound_channels[static_cast<size_t>(s % sources)]) *
-                            out_stride +
-                        offset;
-                    std::copy(first, first + count, x);
-                }
-            }
-            delay_at_ = at;
+        for (size_t s = 0; s < routing_.sound_channels.size(); ++s) {
+            const float* from = (*sound)[s % static_cast<size_t>(sources)].data();
+            std::copy(
+                from, from + count,
+                out + static_cast<ptrdiff_t>(routing_.sound_channels[s]) * out_stride + offset);
         }
     }
 

@@ -2,7 +2,8 @@
 // and copying. The device's input (an instrument, paper §6's first display mode) or the player
 // (the second: a file as sound and vibration) feeds the engine; its N actuator outputs go to
 // their device channels; the player's sound goes to the sound channels, delayed with --sync by
-// the engine's latency so onsets are felt as they are heard. Meters for the status line are
+// the vibration's delay so onsets are felt as they are heard (a delay that moves when the
+// settings change: sound_delay.hpp). Meters for the status line are
 // kept in atomics. Nothing here allocates, locks, throws or does I/O once constructed
 // (tests/realtime proves it).
 #pragma once
@@ -10,10 +11,12 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "device_stream.hpp"
 #include "player.hpp"
+#include "sound_delay.hpp"
 #include "tactus/engine/engine.hpp"
 
 namespace tactus::live {
@@ -34,10 +37,15 @@ struct Meters {
     int64_t frames = 0;                     // since the start
 };
 
+// The sync delay of a LiveCallback without --sync.
+inline constexpr int kNoSync = -1;
+
 class LiveCallback final : public AudioCallback {
   public:
     // Setup thread; `engine` is prepared with device_inputs (or the player's) channels and
-    // actuator_channels.size() outputs; `player` may be null. Allocates.
+    // actuator_channels.size() outputs; `player` may be null. With a player and a
+    // sync_delay_samples of 0 or more (--sync), the sound is delayed by it, and can be moved up
+    // to max_vibration_delay_samples() (sync_delay.hpp). Allocates.
     LiveCallback(Engine& engine, Player* player, Routing routing, int sync_delay_samples);
 
     // Audio thread. in: device_inputs channels, out: device_outputs channels, each `frames`
@@ -53,7 +61,12 @@ class LiveCallback final : public AudioCallback {
     Meters take_meters() noexcept;
     int64_t frames() const { return frames_.load(std::memory_order_relaxed); }
     const Routing& routing() const { return routing_; }
-    int sync_delay_samples() const { return sync_delay_; }
+    // Any thread: --sync's delay (kNoSync without), and moving it (crossfaded, at the audio
+    // thread's next block; ignored without --sync).
+    int sync_delay_samples() const { return delay_ ? delay_->delay_samples() : kNoSync; }
+    void set_sync_delay_samples(int samples) noexcept {
+        if (delay_) delay_->set_delay_samples(samples);
+    }
 
   private:
     static constexpr int kChunk = Engine::kMaxBlock;
@@ -63,13 +76,13 @@ class LiveCallback final : public AudioCallback {
     Engine& engine_;
     Player* player_;
     Routing routing_;
-    int sync_delay_;
     std::vector<std::vector<float>> played_;  // one chunk of the player's channels
     std::vector<float*> played_pointers_;
+    std::vector<std::vector<float>> sound_;  // --sync: the same, delayed
+    std::vector<float*> sound_pointers_;
+    std::optional<SoundDelay> delay_;
     std::vector<const float*> in_pointers_;
     std::vector<float*> out_pointers_;
-    std::vector<std::vector<float>> delay_;  // --sync: per player channel, a ring
-    int delay_at_ = 0;
     // Written by the audio thread: lock-free, or the callback would take a lock.
     static_assert(std::atomic<float>::is_always_lock_free &&
                   std::atomic<double>::is_always_lock_free &&

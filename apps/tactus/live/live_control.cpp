@@ -62,6 +62,7 @@ void LiveControl::load_preset(const std::string& name_or_path) {
 
 void LiveControl::run(const OscCommand& command) {
     if (const auto* c = std::get_if<SetParameter>(&command)) return set(c->id, c->value);
+    if (std::holds_alternative<QueryParameter>(command)) return;  // answered by the server
     if (const auto* c = std::get_if<LoadPreset>(&command)) return load_preset(c->name);
     if (const auto* c = std::get_if<ActuatorGain>(&command))
         return retry_while_full([&] { engine_.set_actuator_gain_db(c->actuator, c->gain_db); });

@@ -46,7 +46,8 @@ OscCommand parse_parameter(const OscMessage& m, std::string_view key) {
     if (!id)
         refuse(m,
                fmt::format("unknown address (did you mean {}{}?)", kOscRoot, nearest_param(key)));
-    expect_args(m, 1, 1, "one value");
+    expect_args(m, 0, 1, "one value (none: asks for it)");
+    if (m.args.empty()) return QueryParameter{*id};
     Settings checked;  // Settings validates against the table, naming the key
     try {
         const OscArg& a = m.args[0];
@@ -125,12 +126,30 @@ OscCommand parse_osc(const OscMessage& m, int actuators) {
     return parse_parameter(m, rest);
 }
 
+std::optional<P> parameter_of(std::string_view address) {
+    if (!address.starts_with(kOscRoot)) return std::nullopt;
+    return find_param(address.substr(kOscRoot.size()));
+}
+
+OscMessage parameter_reply(P id, const Settings& settings) {
+    OscMessage m{fmt::format("{}{}", kOscRoot, spec(id).key), {}};
+    if (spec(id).choices.empty())
+        m.args.push_back(OscArg{'f', settings[id], ""});
+    else
+        m.args.push_back(OscArg{'s', 0, settings.text_of(id)});
+    return m;
+}
+
+OscMessage preset_reply(const std::string& name) {
+    return {fmt::format("{}preset", kOscRoot), {OscArg{'s', 0, name}}};
+}
+
 std::vector<std::string> osc_address_lines() {
     std::vector<std::string> lines;
     for (const ParamSpec& s : param_table()) {
         const std::string argument =
             s.choices.empty() ? range_text(s) : fmt::format("{}", fmt::join(s.choices, "|"));
-        lines.push_back(fmt::format("{}{} <{}>", kOscRoot, s.key, argument));
+        lines.push_back(fmt::format("{}{} [<{}>]", kOscRoot, s.key, argument));
     }
     lines.push_back(fmt::format("{}preset <name>", kOscRoot));
     lines.push_back(fmt::format("{}trigger [frequency_hz amplitude]", kOscRoot));

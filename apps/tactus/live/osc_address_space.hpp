@@ -1,14 +1,18 @@
 // The OSC address space of `tactus live`, generated from the parameter table
 // (docs/architecture.md, "The parameter table"):
 //   /tactus/<key> <value>                 every parameter (a number, or a choice's name)
+//   /tactus/<key>                         asks for its value
 //   /tactus/preset <name>                 a preset by name (no file path: untrusted input)
 //   /tactus/trigger [frequency_hz amplitude]   a pulse (without arguments: the mapping's
 //                                         highest frequency and amplitude)
 //   /tactus/actuator/<n>/gain <dB>        actuator n's trim (n from 1)
 // OSC input is untrusted network input: parse_osc() validates everything against the table
 // and throws std::invalid_argument with one line for anything else; nothing is applied here.
+// The server answers every message to a parameter's address (set, refused or asked) with
+// parameter_reply(), and a preset applied with preset_reply(), sent back to the sender.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -36,6 +40,9 @@ struct SetParameter {
     P id;
     double value;  // checked against the table
 };
+struct QueryParameter {
+    P id;
+};
 struct LoadPreset {
     std::string name;
 };
@@ -47,11 +54,19 @@ struct ActuatorGain {
     int actuator;  // from 0
     double gain_db;
 };
-using OscCommand = std::variant<SetParameter, LoadPreset, TriggerPulse, ActuatorGain>;
+using OscCommand =
+    std::variant<SetParameter, QueryParameter, LoadPreset, TriggerPulse, ActuatorGain>;
 
 // `actuators`: the engine's actuator outputs. Throws std::invalid_argument, one line naming the
 // address.
 OscCommand parse_osc(const OscMessage& message, int actuators);
+
+// The parameter an address names (refused messages included), if any.
+std::optional<P> parameter_of(std::string_view address);
+// /tactus/<key> with the value `settings` hold: a choice's name ('s'), else a number ('f').
+OscMessage parameter_reply(P id, const Settings& settings);
+// /tactus/preset <name>: the preset applied.
+OscMessage preset_reply(const std::string& name);
 
 // Every address, for help texts: one line each with the argument and its range.
 std::vector<std::string> osc_address_lines();

@@ -4,6 +4,7 @@
 #include <lo/lo.h>
 
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <stdexcept>
@@ -101,6 +102,28 @@ std::vector<OscMessage> decode_osc_packet(std::span<const std::byte> packet) {
     std::vector<OscMessage> messages;
     decode(packet, 0, messages);
     return messages;
+}
+
+std::vector<std::byte> encode_osc_message(const OscMessage& message) {
+    const std::unique_ptr<std::remove_pointer_t<lo_message>, decltype(&lo_message_free)> m(
+        lo_message_new(), &lo_message_free);
+    for (const OscArg& a : message.args) {
+        if (a.type == 'd')
+            lo_message_add_double(m.get(), a.number);
+        else if (a.type == 'i')
+            lo_message_add_int32(m.get(), static_cast<int32_t>(a.number));
+        else if (a.type == 's' || a.type == 'S')
+            lo_message_add_string(m.get(), a.text.c_str());
+        else
+            lo_message_add_float(m.get(), static_cast<float>(a.number));
+    }
+    size_t size = 0;
+    void* bytes = lo_message_serialise(m.get(), message.address.c_str(), nullptr, &size);
+    if (!bytes) throw std::runtime_error("osc: a reply liblo could not serialise");
+    std::vector<std::byte> out(static_cast<std::byte*>(bytes),
+                               static_cast<std::byte*>(bytes) + size);
+    std::free(bytes);
+    return out;
 }
 
 }  // namespace tactus::live

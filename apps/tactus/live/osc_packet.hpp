@@ -13,5 +13,8 @@ namespace tactus::live {
 
 // Throws std::invalid_argument with one line for a malformed packet (nothing of it applies).
 std::vector<OscMessage> decode_osc_packet(std::span<const std::byte> packet);
+// One message as a packet (liblo's serialiser): numbers as their type says ('f', 'd', 'i'),
+// text as 's'.
+std::vector<std::byte> encode_osc_message(const OscMessage& message);
 
 }  // namespace tactus::live

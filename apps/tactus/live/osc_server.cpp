@@ -42,7 +42,7 @@ OscEndpoint parse_endpoint(const std::string& text, const std::string& option,
 }
 
 void handle_osc_packets(std::span<const std::vector<std::byte>> packets, LiveControl& control,
-                        const std::function<void(const std::string&)>& report) {
+                        const OscReport& report, const OscReply& reply) {
     std::map<P, double> pending;  // the burst's parameter changes, the last of each
     const auto flush = [&] {
         for (const auto& [id, value] : pending) try {
@@ -52,17 +52,24 @@ void handle_osc_packets(std::span<const std::vector<std::byte>> packets, LiveCon
             }
         pending.clear();
     };
-    for (const auto& packet : packets) {
+    std::vector<std::pair<size_t, P>> asked;  // answered once the burst is applied
+    std::vector<std::pair<size_t, std::string>> presets;
+    for (size_t k = 0; k < packets.size(); ++k) {
         try {
-            for (const OscMessage& message : decode_osc_packet(packet)) {
+            for (const OscMessage& message : decode_osc_packet(packets[k])) {
+                if (const std::optional<P> id = parameter_of(message.address))
+                    asked.emplace_back(k, *id);
                 try {
                     const OscCommand command = parse_osc(message, control.actuators());
                     if (const auto* p = std::get_if<SetParameter>(&command)) {
                         pending[p->id] = p->value;
                         continue;
                     }
+                    if (std::holds_alternative<QueryParameter>(command)) continue;
                     flush();  // in order with the parameters before it
                     control.run(command);
+                    if (const auto* p = std::get_if<LoadPreset>(&command))
+                        presets.emplace_back(k, p->name);
                 } catch (const std::exception& e) {
                     report(e.what());
                 }
@@ -72,9 +79,16 @@ void handle_osc_packets(std::span<const std::vector<std::byte>> packets, LiveCon
         }
     }
     flush();
+    if (!reply) return;
+    const Settings now = control.settings();
+    for (const auto& [k, name] : presets) reply(k, preset_reply(name));
+    for (const auto& [k, id] : asked) reply(k, parameter_reply(id, now));
 }
 
-OscServer::OscServer(const OscEndpoint& endpoint, LiveControl& control) : control_(control) {
+OscServer::OscServer(const OscEndpoint& endpoint, LiveControl& control, OscReport report)
+    : control_(control), report_(std::move(report)) {
+    if (!report_)
+        report_ = [](const std::string& line) { std::cerr << "tactus: " << line << '\n'; };
     addrinfo hints{};
     hints.ai_family = AF_UNSPEC;
     hints.ai_socktype = SOCK_DGRAM;
@@ -116,18 +130,32 @@ void OscServer::start() {
 
 void OscServer::serve() {
     std::vector<std::vector<std::byte>> burst;
+    std::vector<sockaddr_storage> senders;
+    std::vector<socklen_t> sender_lengths;
     std::vector<std::byte> buffer(kMaxPacketBytes);
-    const auto report = [](const std::string& line) { std::cerr << "tactus: " << line << '\n'; };
+    const OscReply reply = [&](size_t packet, const OscMessage& message) {
+        const std::vector<std::byte> bytes = encode_osc_message(message);
+        // UDP: a sender that does not listen loses its answer; nothing to report.
+        ::sendto(socket_, bytes.data(), bytes.size(), MSG_DONTWAIT,
+                 reinterpret_cast<const sockaddr*>(&senders[packet]), sender_lengths[packet]);
+    };
     while (!stop_) {
         pollfd waiting{.fd = socket_, .events = POLLIN, .revents = 0};
         if (::poll(&waiting, 1, kPollMs) <= 0) continue;
         burst.clear();
+        senders.clear();
+        sender_lengths.clear();
         while (burst.size() < kMaxBurstPackets) {
-            const ssize_t n = ::recv(socket_, buffer.data(), buffer.size(), MSG_DONTWAIT);
+            sockaddr_storage from{};
+            socklen_t length = sizeof from;
+            const ssize_t n = ::recvfrom(socket_, buffer.data(), buffer.size(), MSG_DONTWAIT,
+                                         reinterpret_cast<sockaddr*>(&from), &length);
             if (n < 0) break;
             burst.emplace_back(buffer.begin(), buffer.begin() + n);
+            senders.push_back(from);
+            sender_lengths.push_back(length);
         }
-        handle_osc_packets(burst, control_, report);
+        handle_osc_packets(burst, control_, report_, reply);
     }
 }
 

@@ -3,22 +3,47 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
+#include "tactus/dsp/resampler.hpp"
 #include "tactus/io/audio_reader.hpp"
 
 namespace tactus::live {
+
+namespace {
+
+constexpr int kChunk = 65536;  // frames decoded or converted at a time
+
+// x at `from_hz`, as the same sound at `to_hz` (setup thread).
+std::vector<float> converted(const std::vector<float>& x, double from_hz, double to_hz) {
+    Resampler r;
+    r.prepare(from_hz, to_hz, kChunk, Resampler::Band::listening);
+    const double ratio = static_cast<double>(r.up()) / static_cast<double>(r.down());
+    const auto frames = static_cast<size_t>(std::llround(static_cast<double>(x.size()) * ratio));
+    std::vector<float> y, out(static_cast<size_t>(std::ceil(kChunk * ratio)) + 1);
+    const std::vector<float> tail(static_cast<size_t>(r.taps()), 0.0f);  // the last outputs' input
+    const auto feed = [&](const float* in, size_t count) {
+        for (size_t done = 0; done < count;) {
+            const int n = static_cast<int>(std::min<size_t>(count - done, kChunk));
+            const int made = r.process(in + done, n, out.data());
+            y.insert(y.end(), out.begin(), out.begin() + made);
+            done += static_cast<size_t>(n);
+        }
+    };
+    feed(x.data(), x.size());
+    while (y.size() < frames) feed(tail.data(), tail.size());
+    y.resize(frames);
+    return y;
+}
+
+}  // namespace
 
 Player::Player(const std::vector<std::filesystem::path>& files, double sample_rate_hz, bool loop)
     : loop_(loop) {
     if (files.empty()) throw std::runtime_error("play: no file");
     for (const auto& file : files) {
         AudioReader reader(file);
-        if (reader.sample_rate_hz() != sample_rate_hz)
-            throw std::runtime_error(fmt::format(
-                "{}: its rate is {:g} Hz but the device runs at {:g} Hz (give --rate {:g}, or "
-                "convert the file)",
-                file.string(), reader.sample_rate_hz(), sample_rate_hz, reader.sample_rate_hz()));
         if (channels_ == 0) {
             channels_ = reader.channels();
             samples_.resize(static_cast<size_t>(channels_));
@@ -26,16 +51,21 @@ Player::Player(const std::vector<std::filesystem::path>& files, double sample_ra
             throw std::runtime_error(fmt::format("{}: {} channels, but the first file has {}",
                                                  file.string(), reader.channels(), channels_));
         }
-        constexpr int kChunk = 65536;
-        std::vector<std::vector<float>> chunk(static_cast<size_t>(channels_),
-                                              std::vector<float>(kChunk));
+        std::vector<std::vector<float>> decoded(static_cast<size_t>(channels_)),
+            chunk(static_cast<size_t>(channels_), std::vector<float>(kChunk));
         std::vector<float*> pointers;
         for (auto& c : chunk) pointers.push_back(c.data());
         while (const int n = reader.read(pointers.data(), kChunk))
-            for (int c = 0; c < channels_; ++c)
-                samples_[static_cast<size_t>(c)].insert(samples_[static_cast<size_t>(c)].end(),
-                                                        chunk[static_cast<size_t>(c)].begin(),
-                                                        chunk[static_cast<size_t>(c)].begin() + n);
+            for (size_t c = 0; c < decoded.size(); ++c)
+                decoded[c].insert(decoded[c].end(), chunk[c].begin(), chunk[c].begin() + n);
+        if (reader.sample_rate_hz() != sample_rate_hz) {
+            for (auto& d : decoded) d = converted(d, reader.sample_rate_hz(), sample_rate_hz);
+            conversions_.push_back(fmt::format("{}: {:g} Hz, converted to the device's {:g} Hz",
+                                               file.string(), reader.sample_rate_hz(),
+                                               sample_rate_hz));
+        }
+        for (size_t c = 0; c < decoded.size(); ++c)
+            samples_[c].insert(samples_[c].end(), decoded[c].begin(), decoded[c].end());
     }
     if (frames() == 0) throw std::runtime_error(fmt::format("{}: no audio", files[0].string()));
 }

@@ -1,20 +1,26 @@
 // The player of `tactus live --play`: the paper's second display mode (§6, the Tactilicious Flute
 // Display playing breakbeats), where a file is both the sound and the source of the vibration.
-// Files are decoded whole into memory on the setup thread, so the audio thread only copies.
+// Files are decoded whole into memory on the setup thread, so the audio thread only copies; a
+// file at another rate than the device's is converted to it there (dsp/resampler.hpp,
+// Band::listening), so the engine hears what is played.
 #pragma once
 
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace tactus::live {
 
 class Player {
   public:
-    // Setup thread: decodes every file (each must have `sample_rate_hz` and the first file's
-    // channel count); throws std::runtime_error naming the file.
+    // Setup thread: decodes every file (each must have the first file's channel count),
+    // converting those at another rate to `sample_rate_hz`; throws std::runtime_error naming the
+    // file.
     Player(const std::vector<std::filesystem::path>& files, double sample_rate_hz, bool loop);
+    // One line for each file converted: its name and rate.
+    const std::vector<std::string>& conversions() const { return conversions_; }
     // The files' rate, when the device rate follows it.
     static double sample_rate_of(const std::filesystem::path& file);
 
@@ -31,6 +37,7 @@ class Player {
 
   private:
     std::vector<std::vector<float>> samples_;  // the files one after another, per channel
+    std::vector<std::string> conversions_;
     int channels_ = 0;
     bool loop_ = false;
     int64_t position_ = 0;

@@ -47,7 +47,9 @@ int vibration_delay_samples(const Settings& settings, double sample_rate_hz,
     std::vector<int64_t> delays;
     for (const int64_t at : hits) {
         const auto from = y.begin() + at,
-                   to = y.begin() + std::min<int64_t>(at + spacing, static_cast<int64_t>(y.size()));
+                   to = y.begin() +
+                        std::min<int64_t>(at + max_vibration_delay_samples(sample_rate_hz),
+                                          static_cast<int64_t>(y.size()));
         float peak = 0;
         for (auto i = from; i != to; ++i) peak = std::max(peak, std::abs(*i));
         if (peak <= 0) continue;
@@ -55,10 +57,31 @@ int vibration_delay_samples(const Settings& settings, double sample_rate_hz,
             from, to, [&](float v) { return std::abs(v) >= kPulseRiseFraction * peak; });
         delays.push_back(rise - from);
     }
-    if (delays.empty()) return engine.latency();  // settings that never pulse: the look-ahead
+    if (delays.empty())  // settings that never pulse: the look-ahead
+        return std::min(engine.latency(), max_vibration_delay_samples(sample_rate_hz));
     std::nth_element(delays.begin(), delays.begin() + static_cast<long>(delays.size() / 2),
                      delays.end());
     return static_cast<int>(delays[delays.size() / 2]);
+}
+
+int max_vibration_delay_samples(double sample_rate_hz) {
+    return static_cast<int>(kSpacingS * sample_rate_hz) - 1;
+}
+
+VibrationDelay::VibrationDelay(const Settings& settings, double sample_rate_hz,
+                               std::optional<ActuatorProfile> actuator)
+    : measured_(settings),
+      sample_rate_hz_(sample_rate_hz),
+      actuator_(std::move(actuator)),
+      samples_(vibration_delay_samples(settings, sample_rate_hz, actuator_)) {}
+
+bool VibrationDelay::follow(const Settings& running, double now_s) {
+    if (running == measured_ || now_s - measured_at_s_ < kRemeasurePeriodS) return false;
+    measured_ = running;
+    measured_at_s_ = now_s;
+    const int was = samples_;
+    samples_ = vibration_delay_samples(running, sample_rate_hz_, actuator_);
+    return samples_ != was;
 }
 
 }  // namespace tactus::live

@@ -1,10 +1,12 @@
-// Streaming sample-rate reduction to a fixed rate (or the same rate): a polyphase FIR whose taps
-// sample one continuous-time kernel, so the output is the same band-limited signal at every
-// input rate (the analysis reads it: engine.hpp, "Rates"). The kernel is a Kaiser-windowed sinc
-// (pass band to kPassEdge, stop band from kStopEdge of the output rate, kStopBandDb down; Kaiser
-// 1974, Oppenheim & Schafer 7.6) made minimum phase by the folded real cepstrum (Oppenheim &
-// Schafer 13.9.2): causal and front-loaded, it delays onsets by a fraction of a millisecond
-// where the linear-phase kernel would delay them by half its length.
+// Streaming sample-rate conversion: a polyphase FIR whose taps sample one continuous-time
+// kernel, so the output is the same band-limited signal at every input rate (the analysis reads
+// it, reduced to a fixed rate: engine.hpp, "Rates"). The kernel is a Kaiser-windowed sinc
+// (Band::analysis: pass band to kPassEdge, stop band from kStopEdge of the output rate,
+// kStopBandDb down; Kaiser 1974, Oppenheim & Schafer 7.6) made minimum phase by the folded real
+// cepstrum (Oppenheim & Schafer 13.9.2): causal and front-loaded, it delays onsets by a fraction
+// of a millisecond where the linear-phase kernel would delay them by half its length.
+// Band::listening is for sound someone hears (`tactus live` plays a file at the device's rate):
+// a wider pass band, kListening* of the lower of the two rates, either way.
 //
 // Output sample n stands at input sample position n * M / L (L / M the output / input rate ratio
 // in lowest terms, L <= kMaxPhases) and reads input up to index floor(n * M / L): constant
@@ -23,6 +25,10 @@ class Resampler {
     static constexpr double kStopEdge = 0.45;  // 7.2 kHz: above it, less than the input rates share
     static constexpr double kStopBandDb = 60;  // Kaiser design attenuation
     static constexpr int kMaxPhases = 1024;    // L at most; other ratios are approximated
+    static constexpr double kListeningPassEdge = 0.45;  // of the lower rate: 19.8 kHz at 44.1 kHz
+    static constexpr double kListeningStopEdge = 0.5;   // its Nyquist frequency
+    static constexpr double kListeningStopBandDb = 90;  // below 16-bit quantisation
+    enum class Band { analysis, listening };
 
     struct Ratio {
         int64_t up = 1, down = 1;  // L, M
@@ -30,10 +36,12 @@ class Resampler {
     // The ratio prepare() uses for these rates (see below).
     static Ratio ratio_for(double input_rate_hz, double output_rate_hz);
 
-    // Allocates. output_rate_hz <= input_rate_hz. The output rate is exactly
-    // input_rate_hz * L / M: output_rate_hz itself when the ratio reduces to L <= kMaxPhases,
-    // else within 1 / (2 kMaxPhases) of it. `max_block`: input samples per process() call.
-    void prepare(double input_rate_hz, double output_rate_hz, int max_block);
+    // Allocates. Band::analysis reduces the rate (output_rate_hz <= input_rate_hz);
+    // Band::listening converts either way. The output rate is exactly input_rate_hz * L / M:
+    // output_rate_hz itself when the ratio reduces to L <= kMaxPhases, else within
+    // 1 / (2 kMaxPhases) of it. `max_block`: input samples per process() call.
+    void prepare(double input_rate_hz, double output_rate_hz, int max_block,
+                 Band band = Band::analysis);
     void reset() noexcept;
 
     double output_rate_hz() const { return output_rate_hz_; }
@@ -48,8 +56,8 @@ class Resampler {
     // Input samples each output reads (the kernel's span, padded to a multiple of 8).
     int taps() const { return taps_; }
 
-    // count <= max_block input samples in; returns the output samples written to `out` (at
-    // most count, as the output rate is not above the input rate).
+    // count <= max_block input samples in; returns the output samples written to `out`: at most
+    // count reducing the rate, at most count * L / M + 1 raising it.
     int process(const float* in, int count, float* out) noexcept;
 
   private:
