@@ -22,7 +22,7 @@ constexpr double kMidEdgeHz = 1000;
 constexpr double kTopEdgeHz = 4000;
 // The shares that tell them apart, fitted on the tuning part of the music corpus
 // (eval/music_corpus.py; part accuracy on both parts in eval/results.md).
-constexpr double kHatAboveShare = 0.2, kHatLowShare = 0.2;
+constexpr double kHatAboveShare = 0.15, kHatLowShare = 0.2;
 constexpr double kKickLowPerMid = 1.0, kKickLowShare = 0.2;
 constexpr double kDrumAboveShare = 0.01;
 
@@ -98,7 +98,7 @@ void HitAnalysis::analyse(const Frame& frame, int64_t now, int64_t onset_start) 
 }
 
 // The shares of the added power (the fast spectrum's 10 ms window and the bands', weighted
-// alike) below 150 Hz, at 150 Hz-1 kHz and above 6 kHz decide: a hat adds a fifth or more above
+// alike) below 150 Hz, at 150 Hz-1 kHz and above 6 kHz decide: a hat adds 15 % or more above
 // 6 kHz and little below 150 Hz; a kick adds at least as much below 150 Hz as at 150 Hz-1 kHz;
 // what adds next to nothing above 6 kHz is no drum (a bass note, a chord, a voice: pitched sounds
 // have no noise up there); the rest is a snare.
