@@ -60,7 +60,7 @@ class TactusPlugin : public Plugin {
                               [](const Program& p) { return p.settings == tactus::Settings{}; });
         engine_.set_actuators(std::vector<tactus::ActuatorOutput>(kActuators));
         if (!isDummyInstance())
-            control_ = std::make_unique<tp::ControlThread>([this] { take_changes(); });
+            control_ = std::make_unique<tp::ControlThread>([this] { return take_changes(); });
     }
     ~TactusPlugin() override { control_.reset(); }  // before the engine it drives
 
@@ -154,7 +154,8 @@ class TactusPlugin : public Plugin {
             if (const std::optional<tactus::P> row = rows_[index]) host_.set_from_host(*row, value);
     }
 
-    // Any thread (LV2 hosts may select a program from their audio thread): atomics only.
+    // Any thread, atomics only: the control thread takes it at its next poll. (LV2 hosts load
+    // the programs as presets, lv2_entry.cpp: DPF's LV2 select_program would build the state.)
     void loadProgram(uint32_t index) override {
         if (index < programs_.size()) host_.set_all(programs_[index].settings);
     }
@@ -170,6 +171,7 @@ class TactusPlugin : public Plugin {
         if (!restored.error.empty())
             d_stderr2("tactus: state not restored, defaults instead: %s", restored.error.c_str());
         host_.set_all(restored.settings);
+        if (control_) control_->wake();  // never the audio thread: taken now, not at the poll
     }
 
     void activate() override {
@@ -236,11 +238,12 @@ class TactusPlugin : public Plugin {
     static constexpr uint32_t kVibrationGroup = 1;  // DPF's own groups are kPortGroupMono, Stereo
     static constexpr int kUpsamplerMarginSamples = 256;
 
-    // Control thread: the host's changes to the engine.
-    void take_changes() {
-        if (!host_.changed()) return;
+    // Control thread: the host's changes to the engine; whether there were any.
+    bool take_changes() {
+        if (!host_.changed()) return false;
         const std::lock_guard lock(engine_mutex_);
         apply_changes();
+        return true;
     }
     void apply_changes() {  // engine_mutex_ held; a program's changes build one pipeline
         tactus::Settings next = engine_.settings();

@@ -155,6 +155,12 @@ class Lv2Instance {
     float& control(const std::string& symbol) { return controls_.at(symbols_.at(symbol)); }
     bool has_control(const std::string& symbol) const { return symbols_.count(symbol) != 0; }
 
+    // The plugin's extension data for `uri` (nullptr when it has none), and its handle.
+    const void* extension_data(const char* uri) const {
+        return lilv_instance_get_extension_data(instance_, uri);
+    }
+    LV2_Handle handle() const { return lilv_instance_get_handle(instance_); }
+
     void activate() {
         lilv_instance_activate(instance_);
         active_ = true;

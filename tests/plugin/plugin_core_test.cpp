@@ -1,15 +1,22 @@
 // The plugin's format-neutral parts (apps/plugin): host parameters are the table's rows by
 // stable id, host values are clamped and rounded as the table wants them, a float echo of a
-// value keeps its double, changes reach the control thread once each, and the state is the
+// value keeps its double, changes reach the control thread once each, the control thread
+// sleeps while nothing changes yet takes a change within its bound, and the state is the
 // engine's preset text, refused as a whole (defaults and one line) when it is not valid.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cctype>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <set>
+#include <thread>
 #include <vector>
 
+#include "control_thread.hpp"
 #include "host_parameters.hpp"
 #include "plugin_params.hpp"
 #include "plugin_state.hpp"
@@ -65,6 +72,58 @@ TEST(HostParameters, AFloatEchoKeepsTheDoubleAndAChangeIsTakenOnce) {
     EXPECT_EQ(taken[0], std::make_pair(window, 30.0));
     host.take_changes([&](P id, double v) { taken.emplace_back(id, v); });
     EXPECT_EQ(taken.size(), 1u);
+}
+
+using Clock = std::chrono::steady_clock;
+using Ms = std::chrono::duration<double, std::milli>;
+
+// Idle, an instance's control thread wakes 1000 / kIdlePoll times a second (50), not 1000.
+TEST(ControlThread, IdleItWakesAtTheIdlePollOnly) {
+    std::atomic<int> runs{0};
+    {
+        ControlThread thread([&runs] {
+            ++runs;
+            return false;
+        });
+        std::this_thread::sleep_for(std::chrono::seconds(1));
+    }
+    std::printf("control thread idle: %d wake-ups in 1 s\n", runs.load());
+    EXPECT_LE(runs.load(), 1000 / ControlThread::kIdlePoll.count() + 5);
+    EXPECT_GE(runs.load(), 1000 / ControlThread::kIdlePoll.count() / 2);
+}
+
+// A change stored by the audio thread (an atomic, no signal) is taken within kIdlePoll when
+// idle, then within kBusyPoll while changes keep coming; wake() takes one at once. The bounds
+// allow for scheduling on a loaded machine: the least of several tries is held to them.
+TEST(ControlThread, AChangeIsTakenWithinThePoll) {
+    std::atomic<bool> pending{false};
+    std::atomic<Clock::rep> taken_at{0};
+    ControlThread thread([&] {
+        if (!pending.exchange(false)) return false;
+        taken_at = Clock::now().time_since_epoch().count();
+        return true;
+    });
+    const auto delay_ms = [&](bool wake) {
+        taken_at = 0;
+        const Clock::time_point start = Clock::now();
+        pending = true;
+        if (wake) thread.wake();
+        while (taken_at == 0) std::this_thread::sleep_for(std::chrono::microseconds(100));
+        return Ms(Clock::time_point(Clock::duration(taken_at.load())) - start).count();
+    };
+    double idle = 1e9, busy = 1e9, woken = 1e9;
+    for (int i = 0; i < 5; ++i) {
+        std::this_thread::sleep_for(ControlThread::kBusyFor + ControlThread::kIdlePoll);
+        idle = std::min(idle, delay_ms(false));
+        busy = std::min(busy, delay_ms(false));  // within kBusyFor of the last change
+        std::this_thread::sleep_for(ControlThread::kBusyFor + ControlThread::kIdlePoll);
+        woken = std::min(woken, delay_ms(true));
+    }
+    std::printf("change taken: idle %.2f ms, during a run %.2f ms, woken %.2f ms\n", idle, busy,
+                woken);
+    EXPECT_LE(idle, Ms(ControlThread::kIdlePoll).count() + 2);
+    EXPECT_LE(busy, Ms(ControlThread::kBusyPoll).count() + 2);
+    EXPECT_LE(woken, 2.0);
 }
 
 TEST(PluginState, RoundTripsBitForBit) {
