@@ -32,7 +32,9 @@
 #include <vector>
 
 #include "tactus/actuator/warnings.hpp"
+#include "tactus/dsp/delay_line.hpp"
 #include "tactus/engine/engine.hpp"
+#include "tactus/engine/max_latency.hpp"
 #include "tactus/engine/onset_decisions.hpp"
 #include "tactus/io/actuator_file.hpp"
 #include "tactus/io/preset.hpp"
@@ -92,8 +94,7 @@ class Object {
     t_sample* in_ = nullptr;
     std::vector<t_sample*> out_;
     t_sample* thru_out_ = nullptr;
-    std::vector<float> thru_ring_;  // the input, delayed by the latency for -thru
-    size_t thru_at_ = 0;
+    DelayLine thru_;  // -thru: the input, delayed by the engine's latency as it changes
 
     std::vector<t_outlet*> feature_outlets_;  // loudness, brightness, noisiness, pitch, onset
     OnsetDecisions decisions_;                // an onset waits there for its part
@@ -144,8 +145,8 @@ void Object::prepare(double sample_rate_hz, int block) {
     decisions_.reset();
     sample_rate_hz_ = sample_rate_hz;
     block_ = block;
-    thru_ring_.assign(static_cast<size_t>(engine_->latency()) + 1, 0.0f);
-    thru_at_ = 0;
+    // A structural change moves the latency without a new prepare: room for the longest.
+    thru_.prepare(1, max_latency_samples(sample_rate_hz), engine_->latency());
     stale_ = false;
 }
 
@@ -176,19 +177,17 @@ void Object::perform(int count) noexcept {
         if (thru_out_) std::fill_n(thru_out_, count, 0.0f);
         return;
     }
-    // Pd may hand the inlet's vector to an outlet too: the input is delayed before the engine
-    // writes, and the delayed input written after it.
-    float delayed[Engine::kMaxBlock];
-    if (thru_out_) {
-        const size_t size = thru_ring_.size();
-        for (int i = 0; i < count; ++i) {
-            thru_ring_[thru_at_] = in_[i];
-            thru_at_ = thru_at_ + 1 == size ? 0 : thru_at_ + 1;
-            delayed[i] = thru_ring_[thru_at_];  // the sample written latency() samples ago
-        }
-    }
+    // Pd may hand the inlet's vector to an outlet too: the input is copied before the engine
+    // writes, and delayed by the latency the engine has after this block (a structural change
+    // may have moved it), as the plugin does.
+    float input[Engine::kMaxBlock];
+    if (thru_out_) std::copy_n(in_, count, input);
     engine_->process(&in_, out_.data(), count);
-    if (thru_out_) std::copy_n(delayed, count, thru_out_);
+    if (thru_out_) {
+        const float* from = input;
+        thru_.set_delay_samples(engine_->latency());
+        thru_.process(&from, &thru_out_, count);
+    }
     if (options_.features) clock_delay(clock_, 0);
 }
 

@@ -25,11 +25,12 @@
 #include "control_thread.hpp"
 #include "factory_presets.hpp"
 #include "host_parameters.hpp"
-#include "pass_through_delay.hpp"
 #include "plugin_params.hpp"
 #include "plugin_state.hpp"
 #include "tactus/core/units.hpp"
+#include "tactus/dsp/delay_line.hpp"
 #include "tactus/engine/engine.hpp"
+#include "tactus/engine/max_latency.hpp"
 #include "tactus/io/preset.hpp"
 
 START_NAMESPACE_DISTRHO
@@ -189,11 +190,7 @@ class TactusPlugin : public Plugin {
         }
         input_.assign(kInputs, std::vector<float>(static_cast<size_t>(block)));
         block_ = block;
-        // The longest look-ahead the table allows, plus the upsampler's few samples.
-        const double lookahead_ms = tactus::spec(tactus::P::post_lookahead_ms).max;
-        delay_.prepare(kInputs,
-                       static_cast<int>(tactus::ms_to_samples(lookahead_ms, getSampleRate())) +
-                           kUpsamplerMarginSamples);
+        delay_.prepare(kInputs, tactus::max_latency_samples(getSampleRate()), engine_.latency());
         ramp_.prepare(getSampleRate());
         ramp_.reset(bypassed_.load());
         latency_samples_ = engine_.latency();
@@ -225,7 +222,8 @@ class TactusPlugin : public Plugin {
             for (int c = 0; c < kInputs; ++c) music[c] = outputs[kActuators + c] + done;
             engine_.process(in, vibration, count);
             ramp_.process(vibration, kActuators, count, bypassed);
-            delay_.process(in, music, count, engine_.latency());
+            delay_.set_delay_samples(engine_.latency());
+            delay_.process(in, music, count);
             done += static_cast<uint32_t>(count);
         }
         if (const int latency = engine_.latency(); latency != latency_samples_) {
@@ -236,7 +234,6 @@ class TactusPlugin : public Plugin {
 
   private:
     static constexpr uint32_t kVibrationGroup = 1;  // DPF's own groups are kPortGroupMono, Stereo
-    static constexpr int kUpsamplerMarginSamples = 256;
 
     // Control thread: the host's changes to the engine; whether there were any.
     bool take_changes() {
@@ -275,7 +272,7 @@ class TactusPlugin : public Plugin {
     int block_ = 0;
     int latency_samples_ = 0;
     std::vector<std::vector<float>> input_;
-    tp::PassThroughDelay delay_;
+    tactus::DelayLine delay_;  // the music, by the engine's latency
     tp::BypassRamp ramp_;
     std::unique_ptr<tp::ControlThread> control_;
 

@@ -16,6 +16,7 @@
 
 #include "support/run_cli.hpp"
 #include "support/sound_file.hpp"
+#include "tactus/core/units.hpp"
 #include "tactus/engine/engine.hpp"
 #include "tactus/io/audio_reader.hpp"
 #include "tactus/io/preset.hpp"
@@ -143,6 +144,35 @@ TEST_F(PdExternal, ThruIsTheInputDelayedByTheLatency) {
     ASSERT_GT(latency, 0u);
     for (size_t i = 0; i < input_.size(); ++i)
         ASSERT_EQ(pd[2][i], i < latency ? 0.0f : input_[i - latency]) << "sample " << i;
+}
+
+// post.lookahead_ms is structural: mid-file, it moves the engine's latency without a new
+// prepare, and the thru outlet follows it (the input delayed by the latency the engine reports
+// after each block), so the music stays aligned with the vibration.
+TEST_F(PdExternal, ThruFollowsTheLatencyWhenTheLookAheadChanges) {
+    constexpr int kBlock = 400;  // the change is due inside it (Pd delivers it before)
+    const double at_ms = (kBlock + 0.5) * kPdBlock / kRateHz * 1000;
+    const auto pd = run_pd({}, fmt::format("{:.6f} tactus-msg post.lookahead_ms 20;", at_ms));
+    ASSERT_EQ(pd.size(), 3u) << pd_log_;
+
+    Engine engine;
+    engine.prepare(kRateHz, kPdBlock);
+    const int before = engine.latency();
+    std::vector<float> vibration(input_.size()), thru(input_.size());
+    for (size_t done = 0; done < input_.size(); done += kPdBlock) {
+        if (done == static_cast<size_t>(kBlock) * kPdBlock) engine.set(P::post_lookahead_ms, 20);
+        const int n = static_cast<int>(std::min<size_t>(kPdBlock, input_.size() - done));
+        engine.process(input_.data() + done, vibration.data() + done, n);
+        const auto latency = static_cast<size_t>(engine.latency());
+        for (size_t i = done; i < done + static_cast<size_t>(n); ++i)
+            thru[i] = i < latency ? 0.0f : input_[i - latency];
+    }
+    const int after = engine.latency();
+    ASSERT_GT(after - before, ms_to_samples(19, kRateHz)) << "the look-ahead moved the latency";
+    const auto split = static_cast<ptrdiff_t>(kBlock) * kPdBlock;
+    EXPECT_TRUE(std::equal(pd[0].begin(), pd[0].begin() + split, vibration.begin()));
+    for (size_t i = 0; i < input_.size(); ++i)
+        ASSERT_EQ(pd[2][i], thru[i]) << "sample " << i << ", latency " << before << " -> " << after;
 }
 
 // A message in the middle of the file acts as Engine::set() at the block Pd delivers it before:

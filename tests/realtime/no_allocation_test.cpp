@@ -13,6 +13,7 @@
 #include <cerrno>
 #include <cstddef>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <limits>
@@ -25,6 +26,7 @@
 #include "support/allocation_counter.hpp"
 #include "support/live_values.hpp"
 #include "support/signals.hpp"
+#include "tactus/dsp/delay_line.hpp"
 #include "tactus/engine/engine.hpp"
 #include "tactus/io/actuator_file.hpp"
 #include "tactus/io/preset.hpp"
@@ -254,6 +256,32 @@ TEST(RealTime, LiveParameterChangesFittedToAnActuator) {
     for (const char* name : {"lra-175", "erm"})
         expect_live_changes_are_real_time_safe(Settings{}, 48000, 1,
                                                load_actuator(resolve_actuator(name)));
+}
+
+// The delay line of the pass-throughs (immediate moves) and of --sync (crossfaded moves): its
+// process() and a delay that moves every few blocks, on odd block sizes, in place or not.
+TEST(RealTime, DelayLineProcessAndDelayChanges) {
+    const std::vector<float> x = varied_input(48000);  // 12 s
+    for (const int fade_samples : {0, 480}) {
+        DelayLine delay;
+        delay.prepare(2, 1200, 300, fade_samples);
+        std::vector<float> left(x.size()), right = x;
+        reset_counts();
+        int block = 0;
+        for (size_t done = 0; done < x.size(); ++block) {
+            const int count = static_cast<int>(std::min<size_t>(37 + block % 300, x.size() - done));
+            Guard guard;
+            if (block % 7 == 0) delay.set_delay_samples(block % 14 == 0 ? 1100 : 5);
+            const float* in[] = {x.data() + done, right.data() + done};
+            float* out[] = {left.data() + done, right.data() + done};
+            delay.process(in, out, count);
+            done += static_cast<size_t>(count);
+        }
+        EXPECT_EQ(g_allocator_calls.load(), 0) << "fade of " << fade_samples << " samples";
+        EXPECT_EQ(g_mutex_locks.load(), 0) << "fade of " << fade_samples << " samples";
+        EXPECT_EQ(std::memcmp(left.data(), right.data(), left.size() * sizeof(float)), 0)
+            << "in place or not, the same (bit for bit: the input holds NaNs)";
+    }
 }
 
 // The sensation meter is an offline tool, but after prepare() it does not allocate either.

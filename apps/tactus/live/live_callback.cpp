@@ -39,16 +39,26 @@ LiveCallback::LiveCallback(Engine& engine, Player* player, Routing routing, int 
     if (player_) {
         played_.assign(static_cast<size_t>(sources), std::vector<float>(kChunk));
         for (auto& p : played_) played_pointers_.push_back(p.data());
+        // Only the channels heard are delayed.
+        const size_t heard = std::min(static_cast<size_t>(sources), routing_.sound_channels.size());
+        sound_pointers_.resize(heard);
         if (sync_delay_samples != kNoSync) {
             const double rate_hz = engine.sample_rate_hz();
-            delay_.emplace(sources, max_vibration_delay_samples(rate_hz), sync_delay_samples,
+            delay_.prepare(static_cast<int>(heard), max_vibration_delay_samples(rate_hz),
+                           sync_delay_samples,
                            static_cast<int>(Engine::kCrossfadeMs / 1000 * rate_hz));
-            sound_.assign(static_cast<size_t>(sources), std::vector<float>(kChunk));
-            for (auto& p : sound_) sound_pointers_.push_back(p.data());
+            sync_ = true;
+            sync_target_.store(delay_.delay_samples(), std::memory_order_relaxed);
         }
     }
     in_pointers_.resize(static_cast<size_t>(std::max(sources, 1)));
     out_pointers_.resize(routing_.actuator_channels.size());
+}
+
+void LiveCallback::set_sync_delay_samples(int samples) noexcept {
+    if (sync_)
+        sync_target_.store(std::clamp(samples, 0, delay_.max_delay_samples()),
+                           std::memory_order_relaxed);
 }
 
 void LiveCallback::process(const float* in, float* out, int frames) noexcept {
@@ -88,20 +98,19 @@ void LiveCallback::process_chunk(const float* in, int in_stride, float* out, int
     raise(input_peak_, in_peak);
 
     if (player_ && !routing_.sound_channels.empty()) {  // the sound, before the engine runs
-        const std::vector<std::vector<float>>* sound = &played_;
-        if (delay_) {
-            for (int c = 0; c < sources; ++c)
-                std::copy_n(played_[static_cast<size_t>(c)].data(), count,
-                            sound_[static_cast<size_t>(c)].data());
-            delay_->process(sound_pointers_.data(), count);
-            sound = &sound_;
+        const auto channel = [&](size_t s) {
+            return out + static_cast<ptrdiff_t>(routing_.sound_channels[s]) * out_stride + offset;
+        };
+        const size_t heard = sound_pointers_.size();
+        for (size_t s = 0; s < heard; ++s) sound_pointers_[s] = channel(s);
+        if (sync_) {  // delayed straight into the device's channels
+            delay_.set_delay_samples(sync_target_.load(std::memory_order_relaxed));
+            delay_.process(played_pointers_.data(), sound_pointers_.data(), count);
+        } else {
+            for (size_t s = 0; s < heard; ++s) std::copy_n(played_[s].data(), count, channel(s));
         }
-        for (size_t s = 0; s < routing_.sound_channels.size(); ++s) {
-            const float* from = (*sound)[s % static_cast<size_t>(sources)].data();
-            std::copy(
-                from, from + count,
-                out + static_cast<ptrdiff_t>(routing_.sound_channels[s]) * out_stride + offset);
-        }
+        for (size_t s = heard; s < routing_.sound_channels.size(); ++s)
+            std::copy_n(channel(s % heard), count, channel(s));
     }
 
     for (size_t a = 0; a < out_pointers_.size(); ++a)

@@ -3,7 +3,7 @@
 // (the second: a file as sound and vibration) feeds the engine; its N actuator outputs go to
 // their device channels; the player's sound goes to the sound channels, delayed with --sync by
 // the vibration's delay so onsets are felt as they are heard (a delay that moves when the
-// settings change: sound_delay.hpp). Meters for the status line are
+// settings change: a DelayLine that crossfades). Meters for the status line are
 // kept in atomics. Nothing here allocates, locks, throws or does I/O once constructed
 // (tests/realtime proves it).
 #pragma once
@@ -11,12 +11,11 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 #include "device_stream.hpp"
 #include "player.hpp"
-#include "sound_delay.hpp"
+#include "tactus/dsp/delay_line.hpp"
 #include "tactus/engine/engine.hpp"
 
 namespace tactus::live {
@@ -63,10 +62,8 @@ class LiveCallback final : public AudioCallback {
     const Routing& routing() const { return routing_; }
     // Any thread: --sync's delay (kNoSync without), and moving it (crossfaded, at the audio
     // thread's next block; ignored without --sync).
-    int sync_delay_samples() const { return delay_ ? delay_->delay_samples() : kNoSync; }
-    void set_sync_delay_samples(int samples) noexcept {
-        if (delay_) delay_->set_delay_samples(samples);
-    }
+    int sync_delay_samples() const { return sync_target_.load(std::memory_order_relaxed); }
+    void set_sync_delay_samples(int samples) noexcept;
 
   private:
     static constexpr int kChunk = Engine::kMaxBlock;
@@ -78,9 +75,12 @@ class LiveCallback final : public AudioCallback {
     Routing routing_;
     std::vector<std::vector<float>> played_;  // one chunk of the player's channels
     std::vector<float*> played_pointers_;
-    std::vector<std::vector<float>> sound_;  // --sync: the same, delayed
+    // The sound channels that play each of the player's channels first: the delay (or the
+    // copy) writes straight into them, and the other sound channels copy from them.
     std::vector<float*> sound_pointers_;
-    std::optional<SoundDelay> delay_;
+    bool sync_ = false;
+    DelayLine delay_;                        // --sync: the audio thread's, from sync_target_
+    std::atomic<int> sync_target_{kNoSync};  // the delay asked for, clamped to delay_'s ring
     std::vector<const float*> in_pointers_;
     std::vector<float*> out_pointers_;
     // Written by the audio thread: lock-free, or the callback would take a lock.

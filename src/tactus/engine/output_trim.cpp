@@ -31,15 +31,15 @@ void OutputTrim::prepare(const ProcessSpec& spec, const ActuatorOutput& output) 
     glide_samples_ =
         std::max<int>(1, static_cast<int>(ms_to_samples(kGainGlideMs, sample_rate_hz)));
     gain_target_ = db_to_gain(output.gain_db);
-    delay_.assign(static_cast<size_t>(ms_to_samples(output.delay_ms, sample_rate_hz)), 0.0f);
+    const auto delay = static_cast<int>(ms_to_samples(output.delay_ms, sample_rate_hz));
+    delay_.prepare(1, delay, delay);
     reset();
 }
 
 void OutputTrim::reset() noexcept {
     gain_ = gain_target_;
     gain_left_ = 0;
-    std::fill(delay_.begin(), delay_.end(), 0.0f);
-    slot_ = 0;
+    delay_.reset();
 }
 
 void OutputTrim::set_gain_db(double gain_db) noexcept {
@@ -55,12 +55,7 @@ void OutputTrim::process(float* samples, int count) noexcept {
             samples[i] = static_cast<float>(samples[i] * gain_);
         }
     }
-    if (!delay_.empty()) {
-        for (int i = 0; i < count; ++i) {
-            std::swap(samples[i], delay_[slot_]);
-            if (++slot_ == delay_.size()) slot_ = 0;
-        }
-    }
+    if (latency() > 0) delay_.process(&samples, count);
 }
 
 }  // namespace tactus

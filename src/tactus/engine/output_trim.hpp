@@ -5,9 +5,9 @@
 #pragma once
 
 #include <optional>
-#include <vector>
 
 #include "tactus/actuator/profile.hpp"
+#include "tactus/dsp/delay_line.hpp"
 #include "tactus/dsp/process_spec.hpp"
 
 namespace tactus {
@@ -34,13 +34,12 @@ class OutputTrim {
     void reset() noexcept;
     void set_gain_db(double gain_db) noexcept;  // audio thread
     void process(float* samples, int count) noexcept;
-    int latency() const { return static_cast<int>(delay_.size()); }  // the delay
+    int latency() const { return delay_.delay_samples(); }  // the delay
 
   private:
     double gain_ = 1, gain_target_ = 1, gain_step_ = 0;
     int gain_left_ = 0, glide_samples_ = 1;
-    std::vector<float> delay_;  // ring of latency() samples
-    size_t slot_ = 0;
+    DelayLine delay_;  // one channel, latency() samples
 };
 
 }  // namespace tactus

@@ -7,6 +7,7 @@
 #include <deque>
 #include <optional>
 
+#include "tactus/dsp/delay_line.hpp"
 #include "tactus/export/felt_envelope.hpp"
 #include "tactus/io/audio_reader.hpp"
 #include "tactus/perception/threshold.hpp"
@@ -64,8 +65,22 @@ HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engi
     double onset_carrier_hz = 0;  // the carrier on the frame of the onset waiting for its part
     int audio_channels = 0;
     int64_t latency = 0, skipped = 0, aligned = 0;
-    std::deque<float> audio;  // interleaved input frames the vibration has not reached yet
-    std::vector<std::vector<float>> audio_block, vibration_block;
+    DelayLine audio_delay;  // the input, by the latency: in step with the vibration
+    std::vector<std::vector<float>> audio_block, silence;
+    std::vector<const float*> audio_in;
+    std::vector<float*> audio_out;
+    // The input (null: silence, for the tail) delayed into audio_block.
+    const auto delay_audio = [&](const float* const* in, int frames) {
+        for (int c = 0; c < audio_channels; ++c) {
+            if (audio_block[c].size() < static_cast<size_t>(frames)) {
+                audio_block[c].resize(static_cast<size_t>(frames));
+                silence[c].resize(static_cast<size_t>(frames));
+            }
+            audio_in[c] = in ? in[c] : silence[c].data();
+            audio_out[c] = audio_block[c].data();
+        }
+        audio_delay.process(audio_in.data(), audio_out.data(), frames);
+    };
 
     const auto take_frames = [&] {
         for (AnalysisFrame frame; engine.pop_frame(frame);) {
@@ -94,14 +109,8 @@ HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engi
             done += chunk;
         }
         if (sink) {
-            for (int c = 0; c < audio_channels; ++c) audio_block[c].resize(count);
-            for (int i = 0; i < count; ++i)
-                for (int c = 0; c < audio_channels; ++c) {
-                    audio_block[c][i] = audio.empty() ? 0.0f : audio.front();
-                    if (!audio.empty()) audio.pop_front();
-                }
             std::vector<const float*> a(audio_channels), v(engine.actuators());
-            for (int c = 0; c < audio_channels; ++c) a[c] = audio_block[c].data();
+            for (int c = 0; c < audio_channels; ++c) a[c] = audio_block[c].data() + skip;
             for (int c = 0; c < engine.actuators(); ++c) v[c] = vibration[c] + skip;
             sink(a.data(), audio_channels, v.data(), engine.actuators(), count);
         }
@@ -115,18 +124,26 @@ HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engi
             out.emplace(engine.actuators(), kStreamBlockFrames);
             envelope.emplace(spec.sample_rate_hz);
             audio_channels = spec.channels;
-            audio_block.assign(audio_channels, {});
             latency = engine.latency();
+            audio_block.assign(audio_channels, {});
+            silence.assign(audio_channels, {});
+            audio_in.resize(audio_channels);
+            audio_out.resize(audio_channels);
+            if (sink)
+                audio_delay.prepare(audio_channels, static_cast<int>(latency),
+                                    static_cast<int>(latency));
         },
         [&](const float* const* in, int frames) {
-            if (sink)
-                for (int i = 0; i < frames; ++i)
-                    for (int c = 0; c < audio_channels; ++c) audio.push_back(in[c][i]);
+            if (sink) delay_audio(in, frames);
             engine.process(in, out->data(), frames);
             on_output(out->data(), frames);
         },
         callbacks);
-    summary.tail_frames = run_tail(engine, audio_channels, on_output);
+    summary.tail_frames =
+        run_tail(engine, audio_channels, [&](const float* const* vibration, int frames) {
+            if (sink) delay_audio(nullptr, frames);
+            on_output(vibration, frames);
+        });
     take_frames();
     decisions.finish(
         [&](const DecidedOnset& onset) { onsets.emplace_back(onset, onset_carrier_hz); });
