@@ -191,8 +191,7 @@ void Engine::apply(const Settings& next) {
     for (const ParamSpec& s : param_table()) {
         const P id = s.param;
         if (now[id] != sent[id]) {
-            Change change{
-                .kind = Change::Kind::parameter, .index = static_cast<int>(id), .value = now[id]};
+            Change change{.kind = Change::Kind::parameter, .param = id, .value = now[id]};
             if (shapes_flattening(id)) {
                 Settings designed = sent;
                 designed.assign(id, now[id]);
@@ -254,7 +253,8 @@ void Engine::set_actuator_gain_db(int actuator, double gain_db) {
     ActuatorOutput output = outputs_[static_cast<size_t>(actuator)];
     output.gain_db = gain_db;
     output.check(actuator);
-    if (prepared_) send({.kind = Change::Kind::actuator_gain, .index = actuator, .value = gain_db});
+    if (prepared_)
+        send({.kind = Change::Kind::actuator_gain, .actuator = actuator, .gain_db = gain_db});
     outputs_[static_cast<size_t>(actuator)] = output;
 }
 
@@ -290,7 +290,7 @@ void Engine::trigger(double frequency_hz, double amplitude) {
 void Engine::set_program_source(ProgramSource source) {
     const std::lock_guard lock(control_);
     source_ = source;
-    if (prepared_) send({.kind = Change::Kind::program_source, .index = static_cast<int>(source)});
+    if (prepared_) send({.kind = Change::Kind::program_source, .source = source});
 }
 
 bool Engine::pop_frame(AnalysisFrame& frame) {
@@ -311,21 +311,21 @@ void Engine::take_changes() noexcept {
         switch (c.kind) {
             case Change::Kind::parameter:
                 for (Pipeline* p : running)
-                    if (p) p->ask(static_cast<P>(c.index), c.value);
+                    if (p) p->ask(c.param, c.value);
                 break;
             case Change::Kind::flattening:
                 for (Pipeline* p : running)
                     if (p) {
-                        p->ask(static_cast<P>(c.index), c.value);
+                        p->ask(c.param, c.value);
                         p->glide_flattening(c.design);
                     }
                 break;
             case Change::Kind::actuator_gain:
-                trims_[static_cast<size_t>(c.index)].set_gain_db(c.value);
+                trims_[static_cast<size_t>(c.actuator)].set_gain_db(c.gain_db);
                 break;
             case Change::Kind::program_source:
                 for (Pipeline* p : running)
-                    if (p) p->set_source(static_cast<ProgramSource>(c.index));
+                    if (p) p->set_source(c.source);
                 break;
             case Change::Kind::pipeline:
                 retire(std::exchange(waiting_.pipeline, nullptr));  // superseded
