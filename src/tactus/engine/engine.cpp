@@ -136,7 +136,8 @@ FeatureSet Engine::extra_features() const {
     return frames_ ? read | FeatureSet{} : read;
 }
 
-void Engine::FrameSink::on_frame(const Features& features, const ControlFrame& control) noexcept {
+void Engine::FrameForwarder::on_frame(const Features& features,
+                                      const ControlFrame& control) noexcept {
     if (engine_.observer_) engine_.observer_->on_frame(features, control);
     if (engine_.frames_) engine_.frames_->try_enqueue({features, control});  // dropped when full
 }
@@ -305,7 +306,7 @@ void Engine::retire(Pipeline* pipeline) noexcept {
     if (pipeline) retired_.try_enqueue(pipeline);
 }
 
-void Engine::take_changes() noexcept {
+void Engine::apply_queued_changes() noexcept {
     for (Change c; changes_.try_dequeue(c);) {
         Pipeline* const running[] = {active_.get(), incoming_, waiting_.pipeline};
         switch (c.kind) {
@@ -367,7 +368,7 @@ const float* Engine::downmix(const float* const* in, int offset, int count) noex
 
 void Engine::process(const float* const* in, float* const* out, int count) noexcept {
     const ScopedFlushDenormals no_denormals;
-    take_changes();
+    apply_queued_changes();
     for (int done = 0; done < count;) {
         const int chunk = std::min(count - done, spec_.max_block);
         process_chunk(in, out, done, chunk);
@@ -389,9 +390,9 @@ void Engine::process_chunk(const float* const* in, float* const* out, int offset
     const size_t n = trims_.size();
     for (size_t k = 0; k < n; ++k) outs[k] = out[k] + offset;
     // While a new pipeline fades in, the frames are its own (primed: they go on seamlessly).
-    active_->process(mono, power, outs, count, incoming_ ? nullptr : &sink_);
+    active_->process(mono, power, outs, count, incoming_ ? nullptr : &forwarder_);
     if (incoming_) {
-        incoming_->process(mono, power, incoming_pointers_.data(), count, &sink_);
+        incoming_->process(mono, power, incoming_pointers_.data(), count, &forwarder_);
         for (size_t k = 0; k < n; ++k) {
             const float* next = incoming_pointers_[k];
             for (int i = 0; i < count; ++i) {

@@ -171,9 +171,9 @@ class Engine {
     static_assert(std::is_trivially_copyable_v<Change>);
 
     // Forwards the running pipeline's frames to the observer and the frame queue.
-    class FrameSink : public FrameObserver {
+    class FrameForwarder : public FrameObserver {
       public:
-        explicit FrameSink(Engine& engine) : engine_(engine) {}
+        explicit FrameForwarder(Engine& engine) : engine_(engine) {}
         void on_frame(const Features& features, const ControlFrame& control) noexcept override;
 
       private:
@@ -187,7 +187,7 @@ class Engine {
     void send(const Change& change);
     void free_retired();  // control thread
     FeatureSet extra_features() const;
-    void take_changes() noexcept;
+    void apply_queued_changes() noexcept;
     void start_crossfade() noexcept;
     void process_chunk(const float* const* in, float* const* out, int offset, int count) noexcept;
     const float* downmix(const float* const* in, int offset, int count) noexcept;
@@ -219,7 +219,7 @@ class Engine {
     bool summed_loudness_ = false;
     ChannelPower channel_power_;
     std::vector<float> power_, power_catch_up_;  // one chunk
-    FrameSink sink_{*this};
+    FrameForwarder forwarder_{*this};
     FrameObserver* observer_ = nullptr;
 
     moodycamel::ReaderWriterQueue<Change> changes_{kChangeCapacity};
