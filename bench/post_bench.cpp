@@ -9,7 +9,7 @@
 
 #include "bench_input.hpp"
 #include "tactus/core/units.hpp"
-#include "tactus/engine/upsampler.hpp"
+#include "tactus/dsp/upsampler.hpp"
 #include "tactus/post/band_limit.hpp"
 #include "tactus/post/flattening_filter.hpp"
 #include "tactus/post/peak_limiter.hpp"

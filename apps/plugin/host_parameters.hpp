@@ -37,7 +37,7 @@ class HostParameters {
 
     // Control thread: calls apply(id, value) for every value marked since the last call.
     template <class Apply>
-    void take_changes(Apply&& apply) {
+    void for_each_marked(Apply&& apply) {
         if (!any_.exchange(false, std::memory_order_acq_rel)) return;
         for (size_t i = 0; i < changed_.size(); ++i)
             if (changed_[i].exchange(false, std::memory_order_acq_rel))

@@ -244,7 +244,7 @@ class TactusPlugin : public Plugin {
     }
     void apply_changes() {  // engine_mutex_ held; a program's changes build one pipeline
         tactus::Settings next = engine_.settings();
-        host_.take_changes([&next](tactus::P id, double value) {
+        host_.for_each_marked([&next](tactus::P id, double value) {
             try {
                 next.set(id, value);
             } catch (const std::exception& e) {

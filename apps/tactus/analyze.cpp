@@ -140,7 +140,7 @@ void add_analyze(CLI::App& app) {
     options->pipeline.add_to(*command);
     command->callback([options] {
         for_each_input(*options, options->format == "json" ? ".features.json" : ".features.csv",
-                       "analyze", analyze);
+                       analyze);
     });
 }
 

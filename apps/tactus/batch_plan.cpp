@@ -30,10 +30,11 @@ bool is_sound_file(const fs::path& path) {
 
 void BatchOptions::add_to(CLI::App& command, const std::string& output_help,
                           const std::string& suffix) {
+    this->command = command.get_name();
     command.add_option("inputs", inputs, "audio files or folders (- for stdin); several need -O")
         ->required()
         ->type_name("FILE|DIR|-");
-    command.add_option("-o,--output", output, output_help);
+    if (!output_help.empty()) command.add_option("-o,--output", output, output_help);
     command.add_option("-O,--output-dir", output_dir,
                        "folder for the outputs: DIR/<input's folder below the given one>/<name "
                        "without extension>" +
@@ -51,6 +52,9 @@ std::vector<BatchJob> plan_batch(const BatchOptions& o, const std::string& suffi
     skipped = 0;
     if (!o.output.empty() && !o.output_dir.empty())
         throw std::runtime_error("give either -o FILE (one input) or -O DIR, not both");
+    if (o.output_needed && o.output.empty() && o.output_dir.empty())
+        throw std::runtime_error(
+            fmt::format("{}: give either -o FILE (one input) or -O DIR", o.command));
     // (input, its output's path below DIR without the suffix)
     std::vector<std::pair<fs::path, fs::path>> found;
     for (const fs::path given : o.inputs) check_input(given, true);
@@ -109,22 +113,31 @@ std::vector<BatchJob> plan_batch(const BatchOptions& o, const std::string& suffi
     return jobs;
 }
 
-void run_jobs(const BatchOptions& o, const std::vector<BatchJob>& jobs, const std::string& label,
-              const std::function<void(const BatchJob& job)>& one) {
+void run_jobs(const BatchOptions& o, const std::vector<BatchJob>& jobs, const JobTask& one,
+              const std::function<int64_t()>& total_frames) {
     for (const BatchJob& job : jobs)
         if (std::error_code error; !job.output.empty() && job.output.has_parent_path() &&
                                    !fs::is_directory(job.output.parent_path()) &&
                                    !fs::create_directories(job.output.parent_path(), error) &&
                                    error)
-            throw std::runtime_error(fmt::format("{}: cannot create the output folder: {}",
+            throw std::runtime_error(fmt::format("{}: cannot create the output directory: {}",
                                                  job.output.parent_path().string(),
                                                  error.message()));
-    if (jobs.size() == 1) return one(jobs[0]);
+    if (jobs.size() == 1 && !total_frames) {
+        if (const std::string line = one(jobs[0], [](int64_t) {}); !line.empty()) note(line);
+        return;
+    }
+    std::vector<std::string> lines(jobs.size());
+    // Each worker writes through one tracked temporary file.
     const std::vector<std::exception_ptr> errors = run_batch(
-        jobs.size(), std::min(o.jobs, kMaxTrackedTemporaries), [] { return int64_t{0}; },
-        fmt::format("{} {} files", label, jobs.size()),
-        [&](size_t i, const AddFrames&) { one(jobs[i]); });
-    report_failures(label, errors);
+        jobs.size(), std::min(o.jobs, kMaxTrackedTemporaries),
+        total_frames ? total_frames : std::function<int64_t()>([] { return int64_t{0}; }),
+        jobs.size() == 1 ? o.command : fmt::format("{} {} files", o.command, jobs.size()),
+        [&](size_t i, const AddFrames& add_frames) { lines[i] = one(jobs[i], add_frames); });
+    for (size_t i = 0; i < jobs.size(); ++i)
+        if (!errors[i] && !lines[i].empty()) note(lines[i]);
+    if (jobs.size() == 1 && errors[0]) std::rethrow_exception(errors[0]);
+    report_failures(o.command, errors);
 }
 
 void report_failures(const std::string& label, const std::vector<std::exception_ptr>& errors) {

@@ -10,7 +10,6 @@
 #include <iostream>
 #include <map>
 #include <optional>
-#include <thread>
 
 #include "actuator_option.hpp"
 #include "batch_plan.hpp"
@@ -32,18 +31,15 @@ constexpr int kMaxAndroidHapticChannels = 2;
 
 struct ExportOptions {
     std::string input, actuator;
-    std::vector<std::string> outputs;
+    std::vector<std::string> outputs;  // -o, repeatable: one input's outputs
     int channels = 1;
     bool force = false;
     std::string normalise = Normalisation{}.name();
     double gain_db = 0;
     PipelineOptions pipeline;
-    // A batch (batch_plan.hpp): inputs, -O DIR, the formats each input is written in.
-    std::vector<std::string> inputs;
-    std::string output_dir;
+    // A batch (batch_plan.hpp), and with -O the formats each input is written in.
+    BatchOptions batch;
     std::vector<std::string> formats{".ahap", ".haptic", ".android.json", ".ogg"};
-    bool skip_existing = false;
-    int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 };
 
 void export_files(const ExportOptions& o) {
@@ -127,43 +123,38 @@ void export_files(const ExportOptions& o) {
 
 }  // namespace
 
-// One input to -o, or every input (folders walked) to DIR/.../<name><format> for each --formats.
+// One input to -o (each of its outputs), or every input (folders walked) to
+// DIR/.../<name><format> for each of --formats: the one batch path, one render per input.
 void export_batch(const ExportOptions& o) {
-    for (const auto& input : o.inputs) check_input(input, true);
-    if (o.output_dir.empty() == o.outputs.empty())
-        throw std::runtime_error("export: give -o OUT (one input; repeatable) or -O DIR");
-    if (o.output_dir.empty()) {
-        if (o.inputs.size() != 1)
-            throw std::runtime_error(
-                fmt::format("-o names one input's outputs but {} inputs were given; use -O DIR",
-                            o.inputs.size()));
-        ExportOptions one = o;
-        one.input = o.inputs[0];
-        return export_files(one);
-    }
-    for (const auto& format : o.formats)
-        if (haptic_format_of(format) != format)
-            throw std::runtime_error(fmt::format(
-                "--formats: unknown format '{}' (.ahap, .haptic, .android.json, .ogg)", format));
-    BatchOptions batch{.inputs = o.inputs,
-                       .output = {},
-                       .output_dir = o.output_dir,
-                       .skip_existing = o.skip_existing,
-                       .force = o.force,
-                       .jobs = o.jobs};
+    BatchOptions batch = o.batch;
+    batch.output = o.outputs.empty() ? std::string() : o.outputs.front();
+    if (!batch.output_dir.empty())
+        for (const auto& format : o.formats)
+            if (haptic_format_of(format) != format)
+                throw std::runtime_error(fmt::format(
+                    "--formats: unknown format '{}' (.ahap, .haptic, .android.json, .ogg)",
+                    format));
+    // Without -O one job, to every -o; with it each input's outputs in every format.
     std::map<std::filesystem::path, std::vector<std::string>> outputs_of;
-    for (const auto& format : o.formats) {
-        size_t skipped = 0;
-        for (const BatchJob& job : plan_batch(batch, format, skipped))
-            outputs_of[job.input].push_back(job.output.string());
-    }
     std::vector<BatchJob> jobs;
-    for (const auto& [input, outputs] : outputs_of) jobs.push_back({input, outputs.front()});
-    run_jobs(batch, jobs, "export", [&](const BatchJob& job) {
+    for (const auto& format : batch.output_dir.empty() ? std::vector<std::string>{""} : o.formats) {
+        size_t skipped = 0;
+        for (const BatchJob& job : plan_batch(batch, format, skipped)) {
+            auto& outputs = outputs_of[job.input];
+            if (outputs.empty()) jobs.push_back(job);
+            if (batch.output_dir.empty())
+                outputs = o.outputs;
+            else
+                outputs.push_back(job.output.string());
+        }
+    }
+    run_jobs(batch, jobs, [&](const BatchJob& job, const AddFrames&) {
         ExportOptions one = o;
         one.input = job.input.string();
         one.outputs = outputs_of.at(job.input);
+        one.force = o.batch.force;
         export_files(one);
+        return std::string();
     });
 }
 
@@ -171,24 +162,16 @@ void add_export(CLI::App& app) {
     auto options = std::make_shared<ExportOptions>();
     CLI::App* command = app.add_subcommand(
         "export", "write the vibration as haptic files: .ahap, .haptic, .android.json, .ogg");
-    command->add_option("inputs", options->inputs, "audio files or folders (- for stdin)")
-        ->required()
-        ->type_name("FILE|DIR|-");
+    options->batch.output_needed = true;
+    options->batch.add_to(*command, {}, "<format> for each of --formats");
     command->add_option(
         "-o,--output", options->outputs,
         "OUT.ahap (Core Haptics), OUT.haptic (Meta Haptics SDK), OUT.android.json "
         "(VibrationEffect.createWaveform, API 26), OUT.ogg (sound + haptic channels, "
         "ANDROID_HAPTIC); repeat -o for several from one render");
-    command->add_option("-O,--output-dir", options->output_dir,
-                        "folder for the outputs: DIR/<input's folder below the given one>/<name "
-                        "without extension><format> for each of --formats (created if missing)");
     command->add_option("--formats", options->formats, "with -O: the formats to write")
         ->delimiter(',')
         ->capture_default_str();
-    command->add_option("-j,--jobs", options->jobs, "files exported at once, one per thread")
-        ->check(CLI::Range(1, 1024));
-    command->add_flag("--skip-existing", options->skip_existing,
-                      "with -O: leave outputs that exist (resume a batch)");
     command->add_option("--normalise,--normalize", options->normalise, normalisation_help())
         ->check([](const std::string& text) {
             try {
@@ -221,7 +204,6 @@ void add_export(CLI::App& app) {
     add_actuator_option(*command, options->actuator,
                         "actuator profile (name in actuators/ or FILE.toml) the vibration is "
                         "rendered for");
-    add_force_option(*command, options->force);
     options->pipeline.add_to(*command);
     command->callback([options] { export_batch(*options); });
 }

@@ -123,7 +123,7 @@ void add_meter(CLI::App& app) {
         ->check(CLI::Range(spec(P::perception_contact_area_cm2).min,
                            spec(P::perception_contact_area_cm2).max))
         ->capture_default_str();
-    command->callback([options] { for_each_input(*options, ".meter.csv", "meter", meter); });
+    command->callback([options] { for_each_input(*options, ".meter.csv", meter); });
 }
 
 }  // namespace tactus::cli

@@ -55,7 +55,7 @@ void add_onsets(CLI::App& app) {
         "onsets", "print one onset per line: onset_s decided_s strength_db part");
     options->batch.add_to(*command, "file to write, one input (default: stdout)", ".onsets.txt");
     options->pipeline.add_to(*command);
-    command->callback([options] { for_each_input(*options, ".onsets.txt", "onsets", onsets); });
+    command->callback([options] { for_each_input(*options, ".onsets.txt", onsets); });
 }
 
 }  // namespace tactus::cli

@@ -11,7 +11,6 @@
 #include <thread>
 
 #include "actuator_option.hpp"
-#include "batch.hpp"
 #include "batch_plan.hpp"
 #include "commands.hpp"
 #include "common.hpp"
@@ -26,8 +25,6 @@
 
 namespace tactus::cli {
 namespace {
-
-namespace fs = std::filesystem;
 
 constexpr const char* kOutputSuffix = ".vibration.wav";
 
@@ -63,8 +60,6 @@ class RenderStats final : public FrameObserver {
 // folders mirrored, DIR/.../<stem>.vibration.wav), each in a container libsndfile writes; all
 // refused before any audio is read.
 std::vector<Job> plan(const RenderOptions& o) {
-    if (o.batch.output.empty() && o.batch.output_dir.empty())
-        throw std::runtime_error("render: give either -o FILE (one input) or -O DIR");
     size_t skipped = 0;
     std::vector<Job> jobs = plan_batch(o.batch, kOutputSuffix, skipped);
     for (const Job& job : jobs) writable_sound_format(job.output, o.sample_format);
@@ -141,31 +136,17 @@ void render(const RenderOptions& o) {
     std::optional<ActuatorProfile> actuator;
     if (!o.actuator.empty()) actuator = load_actuator_for(o.actuator, settings);
     const RenderInfo how = o.pipeline.render_info({}, actuator ? actuator->name : std::string());
-    for (const Job& job : jobs)
-        if (std::error_code error; job.output.has_parent_path() &&
-                                   !fs::is_directory(job.output.parent_path()) &&
-                                   !fs::create_directories(job.output.parent_path(), error))
-            throw std::runtime_error(fmt::format("{}: cannot create the output directory: {}",
-                                                 job.output.parent_path().string(),
-                                                 error.message()));
-    std::vector<std::string> summaries(jobs.size());
-    // Each worker writes through one tracked temporary file.
-    const std::vector<std::exception_ptr> errors = run_batch(
-        jobs.size(), std::min(o.batch.jobs, kMaxTrackedTemporaries),
-        [&] { return total_frames(jobs); },
-        jobs.size() == 1 ? "render" : fmt::format("render {} files", jobs.size()),
-        [&](size_t i, const AddFrames& add_frames) {
+    run_jobs(
+        o.batch, jobs,
+        [&](const Job& job, const AddFrames& add_frames) {
             int64_t reported = 0;
-            summaries[i] = render_one(jobs[i], settings, actuator, o.channels, o.sample_format, how,
-                                      [&](int64_t done, int64_t) {
-                                          add_frames(done - reported);
-                                          reported = done;
-                                      });
-        });
-    for (size_t i = 0; i < jobs.size(); ++i)
-        if (!errors[i]) note(summaries[i]);
-    if (jobs.size() == 1 && errors[0]) std::rethrow_exception(errors[0]);
-    report_failures("render", errors);
+            return render_one(job, settings, actuator, o.channels, o.sample_format, how,
+                              [&](int64_t done, int64_t) {
+                                  add_frames(done - reported);
+                                  reported = done;
+                              });
+        },
+        [&] { return total_frames(jobs); });
 }
 
 }  // namespace
@@ -173,6 +154,7 @@ void render(const RenderOptions& o) {
 void add_render(CLI::App& app) {
     auto options = std::make_shared<RenderOptions>();
     CLI::App* command = app.add_subcommand("render", "render the vibration for audio files");
+    options->batch.output_needed = true;
     options->batch.add_to(*command,
                           "vibration file to write, one input: its extension names the format (" +
                               writable_sound_extensions() + "); - writes WAV to stdout",

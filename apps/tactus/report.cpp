@@ -225,7 +225,7 @@ void add_report(CLI::App& app) {
                         "actuator profile (name or FILE.toml): render for it and meter through it "
                         "(default: none, metered through voice-coil)");
     options->pipeline.add_to(*command);
-    command->callback([options] { for_each_input(*options, ".report.html", "report", report); });
+    command->callback([options] { for_each_input(*options, ".report.html", report); });
 }
 
 }  // namespace tactus::cli

@@ -24,8 +24,6 @@ struct SimulateOptions {
 };
 
 void simulate(const SimulateOptions& o) {
-    if (o.output.empty())
-        throw std::runtime_error("simulate: give either -o FILE (one input) or -O DIR");
     check_output(o.input, o.output, o.force);
     writable_sound_format(o.output, SampleFormat::float32);
     const ActuatorProfile actuator = actuator_of_vibration(o.actuator, o.input, "simulated");
@@ -77,6 +75,7 @@ void add_simulate(CLI::App& app) {
         "simulate",
         "what an actuator does with a vibration file: its displacement through the profile's "
         "model (an LRA's resonance, an ERM's spin-up and speed-tied frequency)");
+    options->batch.output_needed = true;
     options->batch.add_to(*command,
                           "displacement file to write (float), one input: full scale = the "
                           "profile's displacement_um",
@@ -85,8 +84,7 @@ void add_simulate(CLI::App& app) {
         *command, options->actuator,
         "actuator profile (name in actuators/ or FILE.toml; default: the one the file was "
         "rendered for, as its comment says, else voice-coil)");
-    command->callback(
-        [options] { for_each_input(*options, ".displacement.wav", "simulate", simulate); });
+    command->callback([options] { for_each_input(*options, ".displacement.wav", simulate); });
 }
 
 }  // namespace tactus::cli

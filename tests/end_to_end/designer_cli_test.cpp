@@ -281,3 +281,40 @@ TEST_F(Cli, EveryCommandBatchesMirroringFoldersAndSkippingExistingOutputs) {
 }
 
 }  // namespace
+
+namespace {
+
+// Every command that takes several inputs says a batch's mistakes in the same words, before any
+// audio is read: one batch path for all of them.
+TEST_F(Cli, EveryCommandSaysBatchMistakesInTheSameWords) {
+    const std::string both = "-o names one output but 2 inputs were given; use -O DIR";
+    const std::string either = "give either -o FILE (one input) or -O DIR, not both";
+    std::ofstream(dir_ / "file") << "not a folder";
+    const fs::path blocked = dir_ / "file" / "out";
+    for (const char* command :
+         {"render", "analyze", "onsets", "meter", "simulate", "export", "report"}) {
+        const std::string c = command;
+        const Result many = run(c + " " + kTick + " " + kTick + " -o x.ahap");
+        EXPECT_NE(many.exit_code, 0) << c;
+        EXPECT_NE(many.err.find("tactus: error: " + both), std::string::npos) << c << many.err;
+        const Result two = run(c + " " + kTick + " -o x.ahap -O " + dir_.string());
+        EXPECT_NE(two.exit_code, 0) << c;
+        EXPECT_NE(two.err.find("tactus: error: " + either), std::string::npos) << c << two.err;
+        const Result folder = run(c + " " + kTick + " -O " + blocked.string());
+        EXPECT_NE(folder.exit_code, 0) << c;
+        EXPECT_NE(folder.err.find(": cannot create the output directory: "), std::string::npos)
+            << c << folder.err;
+    }
+    // The commands that write a file, never stdout, say so in the same words.
+    for (const char* command : {"render", "simulate", "export"}) {
+        const Result none = run(std::string(command) + " " + kTick);
+        EXPECT_NE(none.exit_code, 0) << command;
+        EXPECT_NE(none.err.find(std::string("tactus: error: ") + command +
+                                ": give either -o FILE (one input) or -O DIR"),
+                  std::string::npos)
+            << command << none.err;
+    }
+    expect_no_temporaries();
+}
+
+}  // namespace

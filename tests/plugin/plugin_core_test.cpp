@@ -67,10 +67,10 @@ TEST(HostParameters, AFloatEchoKeepsTheDoubleAndAChangeIsTakenOnce) {
     host.set_from_host(window, 30.0f);
     EXPECT_TRUE(host.changed());
     std::vector<std::pair<P, double>> taken;
-    host.take_changes([&](P id, double v) { taken.emplace_back(id, v); });
+    host.for_each_marked([&](P id, double v) { taken.emplace_back(id, v); });
     ASSERT_EQ(taken.size(), 1u);
     EXPECT_EQ(taken[0], std::make_pair(window, 30.0));
-    host.take_changes([&](P id, double v) { taken.emplace_back(id, v); });
+    host.for_each_marked([&](P id, double v) { taken.emplace_back(id, v); });
     EXPECT_EQ(taken.size(), 1u);
 }
 

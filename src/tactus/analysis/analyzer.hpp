@@ -18,7 +18,6 @@
 
 #include "tactus/analysis/band_power.hpp"
 #include "tactus/analysis/brightness.hpp"
-#include "tactus/analysis/dc_blocker.hpp"
 #include "tactus/analysis/features.hpp"
 #include "tactus/analysis/hit_analysis.hpp"
 #include "tactus/analysis/loudness.hpp"
@@ -26,6 +25,7 @@
 #include "tactus/analysis/onset_detector.hpp"
 #include "tactus/analysis/pitch_yin.hpp"
 #include "tactus/analysis/stft_frame.hpp"
+#include "tactus/dsp/dc_blocker.hpp"
 #include "tactus/dsp/process_spec.hpp"
 #include "tactus/dsp/resampler.hpp"
 #include "tactus/dsp/sample_history.hpp"

@@ -1,4 +1,4 @@
-// FIR design shared by the resamplers (dsp/resampler.hpp, engine/upsampler.hpp): the Kaiser
+// FIR design shared by the resamplers (dsp/resampler.hpp, dsp/upsampler.hpp): the Kaiser
 // window (Kaiser 1974; Oppenheim & Schafer 7.6) and the minimum-phase filter of a magnitude
 // response by the folded real cepstrum (Oppenheim & Schafer 13.9.2). Setup only: both allocate.
 #pragma once

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "tactus/actuator/profile.hpp"
-#include "tactus/engine/upsampler.hpp"
+#include "tactus/dsp/upsampler.hpp"
 #include "tactus/params/params.hpp"
 #include "tactus/post/post_chain.hpp"
 

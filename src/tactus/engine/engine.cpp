@@ -136,7 +136,8 @@ FeatureSet Engine::extra_features() const {
     return frames_ ? read | FeatureSet{} : read;
 }
 
-void Engine::FrameSink::on_frame(const Features& features, const ControlFrame& control) noexcept {
+void Engine::FrameForwarder::on_frame(const Features& features,
+                                      const ControlFrame& control) noexcept {
     if (engine_.observer_) engine_.observer_->on_frame(features, control);
     if (engine_.frames_) engine_.frames_->try_enqueue({features, control});  // dropped when full
 }
@@ -191,8 +192,7 @@ void Engine::apply(const Settings& next) {
     for (const ParamSpec& s : param_table()) {
         const P id = s.param;
         if (now[id] != sent[id]) {
-            Change change{
-                .kind = Change::Kind::parameter, .index = static_cast<int>(id), .value = now[id]};
+            Change change{.kind = Change::Kind::parameter, .param = id, .value = now[id]};
             if (shapes_flattening(id)) {
                 Settings designed = sent;
                 designed.assign(id, now[id]);
@@ -254,7 +254,8 @@ void Engine::set_actuator_gain_db(int actuator, double gain_db) {
     ActuatorOutput output = outputs_[static_cast<size_t>(actuator)];
     output.gain_db = gain_db;
     output.check(actuator);
-    if (prepared_) send({.kind = Change::Kind::actuator_gain, .index = actuator, .value = gain_db});
+    if (prepared_)
+        send({.kind = Change::Kind::actuator_gain, .actuator = actuator, .gain_db = gain_db});
     outputs_[static_cast<size_t>(actuator)] = output;
 }
 
@@ -290,7 +291,7 @@ void Engine::trigger(double frequency_hz, double amplitude) {
 void Engine::set_program_source(ProgramSource source) {
     const std::lock_guard lock(control_);
     source_ = source;
-    if (prepared_) send({.kind = Change::Kind::program_source, .index = static_cast<int>(source)});
+    if (prepared_) send({.kind = Change::Kind::program_source, .source = source});
 }
 
 bool Engine::pop_frame(AnalysisFrame& frame) {
@@ -305,27 +306,27 @@ void Engine::retire(Pipeline* pipeline) noexcept {
     if (pipeline) retired_.try_enqueue(pipeline);
 }
 
-void Engine::take_changes() noexcept {
+void Engine::apply_queued_changes() noexcept {
     for (Change c; changes_.try_dequeue(c);) {
         Pipeline* const running[] = {active_.get(), incoming_, waiting_.pipeline};
         switch (c.kind) {
             case Change::Kind::parameter:
                 for (Pipeline* p : running)
-                    if (p) p->ask(static_cast<P>(c.index), c.value);
+                    if (p) p->ask(c.param, c.value);
                 break;
             case Change::Kind::flattening:
                 for (Pipeline* p : running)
                     if (p) {
-                        p->ask(static_cast<P>(c.index), c.value);
+                        p->ask(c.param, c.value);
                         p->glide_flattening(c.design);
                     }
                 break;
             case Change::Kind::actuator_gain:
-                trims_[static_cast<size_t>(c.index)].set_gain_db(c.value);
+                trims_[static_cast<size_t>(c.actuator)].set_gain_db(c.gain_db);
                 break;
             case Change::Kind::program_source:
                 for (Pipeline* p : running)
-                    if (p) p->set_source(static_cast<ProgramSource>(c.index));
+                    if (p) p->set_source(c.source);
                 break;
             case Change::Kind::pipeline:
                 retire(std::exchange(waiting_.pipeline, nullptr));  // superseded
@@ -367,7 +368,7 @@ const float* Engine::downmix(const float* const* in, int offset, int count) noex
 
 void Engine::process(const float* const* in, float* const* out, int count) noexcept {
     const ScopedFlushDenormals no_denormals;
-    take_changes();
+    apply_queued_changes();
     for (int done = 0; done < count;) {
         const int chunk = std::min(count - done, spec_.max_block);
         process_chunk(in, out, done, chunk);
@@ -389,9 +390,9 @@ void Engine::process_chunk(const float* const* in, float* const* out, int offset
     const size_t n = trims_.size();
     for (size_t k = 0; k < n; ++k) outs[k] = out[k] + offset;
     // While a new pipeline fades in, the frames are its own (primed: they go on seamlessly).
-    active_->process(mono, power, outs, count, incoming_ ? nullptr : &sink_);
+    active_->process(mono, power, outs, count, incoming_ ? nullptr : &forwarder_);
     if (incoming_) {
-        incoming_->process(mono, power, incoming_pointers_.data(), count, &sink_);
+        incoming_->process(mono, power, incoming_pointers_.data(), count, &forwarder_);
         for (size_t k = 0; k < n; ++k) {
             const float* next = incoming_pointers_[k];
             for (int i = 0; i < count; ++i) {

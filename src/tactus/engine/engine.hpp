@@ -47,6 +47,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 #include "tactus/engine/channel_power.hpp"
@@ -154,18 +155,25 @@ class Engine {
     int64_t clipped_samples() const { return active_ ? active_->clipped_samples() : 0; }
 
   private:
-    struct Change {  // control -> audio, in the order made
+    // One change from a control thread to the audio thread, in the order made. Each kind has
+    // its own fields; the queue copies it as bytes, never allocating.
+    struct Change {
         enum class Kind { parameter, flattening, actuator_gain, program_source, pipeline } kind;
-        int index = 0;  // P, actuator or ProgramSource
-        double value = 0;
+        P param{};                          // parameter, flattening: which one
+        double value = 0;                   // parameter, flattening: its new value
         FlatteningFilter::Design design{};  // flattening: for the pipeline running then
-        Pipeline* pipeline = nullptr;       // a structural change, primed up to `primed_to`
-        int64_t primed_to = 0;
+        int actuator = 0;                   // actuator_gain: which one
+        double gain_db = 0;                 // actuator_gain: its new gain
+        ProgramSource source{};             // program_source: what drives the vibration
+        Pipeline* pipeline = nullptr;       // pipeline: a structural change, primed up to
+        int64_t primed_to = 0;              // `primed_to`
     };
+    static_assert(std::is_trivially_copyable_v<Change>);
+
     // Forwards the running pipeline's frames to the observer and the frame queue.
-    class FrameSink : public FrameObserver {
+    class FrameForwarder : public FrameObserver {
       public:
-        explicit FrameSink(Engine& engine) : engine_(engine) {}
+        explicit FrameForwarder(Engine& engine) : engine_(engine) {}
         void on_frame(const Features& features, const ControlFrame& control) noexcept override;
 
       private:
@@ -179,7 +187,7 @@ class Engine {
     void send(const Change& change);
     void free_retired();  // control thread
     FeatureSet extra_features() const;
-    void take_changes() noexcept;
+    void apply_queued_changes() noexcept;
     void start_crossfade() noexcept;
     void process_chunk(const float* const* in, float* const* out, int offset, int count) noexcept;
     const float* downmix(const float* const* in, int offset, int count) noexcept;
@@ -211,7 +219,7 @@ class Engine {
     bool summed_loudness_ = false;
     ChannelPower channel_power_;
     std::vector<float> power_, power_catch_up_;  // one chunk
-    FrameSink sink_{*this};
+    FrameForwarder forwarder_{*this};
     FrameObserver* observer_ = nullptr;
 
     moodycamel::ReaderWriterQueue<Change> changes_{kChangeCapacity};

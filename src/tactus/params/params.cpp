@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
@@ -10,6 +11,7 @@
 
 #include "tactus/core/nearest.hpp"
 #include "tactus/core/printable.hpp"
+#include "tactus/params/mapping_rows.hpp"
 #include "tactus/perception/channels.hpp"
 
 namespace tactus {
@@ -19,24 +21,24 @@ using enum ParamType;
 using enum ParamChange;
 using enum ParamCurve;
 
-constexpr std::span<const std::string_view> kSources{kFeatureSourceNames};
-constexpr std::span<const std::string_view> kCurves{kCurveNames};
+using params_detail::joined_rows;
+using params_detail::mapping_rows;
+
 constexpr std::span<const std::string_view> kSwitch{kSwitchNames};
 
-constexpr double kLastSource = kFeatureSourceNames.size() - 1;
 // The default mapping reads what each hit added above what was sounding (its loudness and its
 // brightness; analysis/hit_analysis.hpp), so a mix's bed neither strengthens nor brightens it;
 // presets/tfd.toml is the paper's, on the whole mix.
 constexpr double kHitDb = static_cast<double>(FeatureSource::hit_db);
 constexpr double kHitBrightness = static_cast<double>(FeatureSource::hit_brightness_hz);
-constexpr double kLastCurve = kCurveNames.size() - 1;
 
 // Channel bands (paper Table 1) that bound the flutter and pressure settings.
 constexpr double kNpiHighHz = perception::info(perception::Channel::NPI).range_high_hz;
 constexpr double kNpiLowHz = perception::info(perception::Channel::NPI).range_low_hz;
 
 // clang-format off
-constexpr ParamSpec kTable[] = {
+constexpr auto kTable = joined_rows(
+    std::to_array<ParamSpec>({
     // Analysis (paper §6, Figure 4: feature extraction).
     {P::analysis_window_ms, 1, "analysis.window_ms", "ms", real, 5, 100, 23.2, log, structural, 0,
      "STFT window for brightness, noisiness (nearest fast FFT size at the 16 kHz analysis rate)"},
@@ -63,48 +65,24 @@ constexpr ParamSpec kTable[] = {
     // Mapping (paper §6): features -> the vibration program.
     {P::mapping_gate_db, 12, "mapping.gate_db", "dB", real, -120, 0, -70, lin, live, 20,
      "below this loudness the vibration is silent and mapped parameters hold"},
-    {P::amplitude_source, 13, "mapping.amplitude.source", "", choice, 0, kLastSource, kHitDb, lin, live, 0,
-     "feature mapped to vibration amplitude", kSources},
-    {P::amplitude_in_min, 14, "mapping.amplitude.in_min", "", real, -1e6, 1e6, -60, lin, live, 20,
-     "source value mapped to out_min"},
-    {P::amplitude_in_max, 15, "mapping.amplitude.in_max", "", real, -1e6, 1e6, 0, lin, live, 20,
-     "source value mapped to out_max"},
-    {P::amplitude_out_min, 16, "mapping.amplitude.out_min", "", real, 0, 1, 0.03, lin, live, 20,
-     "amplitude at in_min (full scale 1)"},
-    {P::amplitude_out_max, 17, "mapping.amplitude.out_max", "", real, 0, 1, 1, lin, live, 20,
-     "amplitude at in_max (full scale 1)"},
-    {P::amplitude_curve, 18, "mapping.amplitude.curve", "", choice, 0, kLastCurve, 2, lin, live, 0,
-     "lin, log (ratio to ratio) or exp (dB to amplitude)", kCurves},
-    {P::amplitude_smoothing_ms, 19, "mapping.amplitude.smoothing_ms", "ms", real, 0, 1000, 0, lin, live, 0,
-     "one-pole time constant applied to the mapped amplitude"},
-    {P::frequency_source, 20, "mapping.frequency.source", "", choice, 0, kLastSource, kHitBrightness, lin, live, 0,
-     "feature mapped to vibration frequency", kSources},
-    {P::frequency_in_min, 21, "mapping.frequency.in_min", "", real, -1e6, 1e6, 100, lin, live, 20,
-     "source value mapped to out_min"},
-    {P::frequency_in_max, 22, "mapping.frequency.in_max", "", real, -1e6, 1e6, 300, lin, live, 20,
-     "source value mapped to out_max"},
-    {P::frequency_out_min, 23, "mapping.frequency.out_min", "Hz", real, 1, 1000, 40, log, live, 20,
-     "vibration frequency at in_min"},
-    {P::frequency_out_max, 24, "mapping.frequency.out_max", "Hz", real, 1, 1000, 400, log, live, 20,
-     "vibration frequency at in_max"},
-    {P::frequency_curve, 25, "mapping.frequency.curve", "", choice, 0, kLastCurve, 1, lin, live, 0,
-     "lin, log (ratio to ratio) or exp (dB to amplitude)", kCurves},
-    {P::frequency_smoothing_ms, 26, "mapping.frequency.smoothing_ms", "ms", real, 0, 1000, 5, lin, live, 0,
-     "one-pole time constant applied to the mapped frequency"},
-    {P::square_mix_source, 27, "mapping.square_mix.source", "", choice, 0, kLastSource, 3, lin, live, 0,
-     "feature mapped to the sine (0) / square (1) mix", kSources},
-    {P::square_mix_in_min, 28, "mapping.square_mix.in_min", "", real, -1e6, 1e6, 0.3, lin, live, 20,
-     "source value mapped to out_min"},
-    {P::square_mix_in_max, 29, "mapping.square_mix.in_max", "", real, -1e6, 1e6, 0.9, lin, live, 20,
-     "source value mapped to out_max"},
-    {P::square_mix_out_min, 30, "mapping.square_mix.out_min", "", real, 0, 1, 0, lin, live, 20,
-     "square mix at in_min"},
-    {P::square_mix_out_max, 31, "mapping.square_mix.out_max", "", real, 0, 1, 1, lin, live, 20,
-     "square mix at in_max"},
-    {P::square_mix_curve, 32, "mapping.square_mix.curve", "", choice, 0, kLastCurve, 0, lin, live, 0,
-     "lin, log (ratio to ratio) or exp (dB to amplitude)", kCurves},
-    {P::square_mix_smoothing_ms, 33, "mapping.square_mix.smoothing_ms", "ms", real, 0, 1000, 20, lin, live, 0,
-     "one-pole time constant applied to the mapped square mix"},
+    }),
+    // The mapping groups: seven rows each (source, in_min ... smoothing_ms; mapping_rows.hpp).
+    mapping_rows<"amplitude", "amplitude", " (full scale 1)", "amplitude">(
+     {.source = P::amplitude_source, .source_id = 13, .source_default = kHitDb,
+      .source_help = "feature mapped to vibration amplitude", .in_min = -60, .in_max = 0,
+      .out_unit = "", .out_low = 0, .out_high = 1, .out_curve = lin, .out_min = 0.03, .out_max = 1,
+      .curve = 2, .smoothing_max_ms = 1000, .smoothing_ms = 0}),
+    mapping_rows<"frequency", "vibration frequency", "", "frequency">(
+     {.source = P::frequency_source, .source_id = 20, .source_default = kHitBrightness,
+      .source_help = "feature mapped to vibration frequency", .in_min = 100, .in_max = 300,
+      .out_unit = "Hz", .out_low = 1, .out_high = 1000, .out_curve = log, .out_min = 40, .out_max = 400,
+      .curve = 1, .smoothing_max_ms = 1000, .smoothing_ms = 5}),
+    mapping_rows<"square_mix", "square mix", "", "square mix">(
+     {.source = P::square_mix_source, .source_id = 27, .source_default = 3,
+      .source_help = "feature mapped to the sine (0) / square (1) mix", .in_min = 0.3, .in_max = 0.9,
+      .out_unit = "", .out_low = 0, .out_high = 1, .out_curve = lin, .out_min = 0, .out_max = 1,
+      .curve = 0, .smoothing_max_ms = 1000, .smoothing_ms = 20}),
+    std::to_array<ParamSpec>({
     // Synthesis: AD envelope retriggered by onsets (paper §6, bonk~ driving an envelope).
     {P::envelope_attack_ms, 34, "envelope.attack_ms", "ms", real, 0.1, 100, 1, log, live, 0,
      "rise time from trigger to peak"},
@@ -118,53 +96,30 @@ constexpr ParamSpec kTable[] = {
     {P::flutter_equalize, 38, "flutter.equalize", "", toggle, 0, 1, 0, lin, live, 20,
      "scale the flutter by the P/NPI innervation ratio 21/140 (-16.5 dB) so both channels are "
      "engaged about equally loudly (paper 5.2)", kSwitch},
-    {P::flutter_level_source, 39, "mapping.flutter_level.source", "", choice, 0, kLastSource, 0, lin, live, 0,
-     "feature mapped to the flutter level", kSources},
-    {P::flutter_level_in_min, 40, "mapping.flutter_level.in_min", "", real, -1e6, 1e6, -60, lin, live, 20,
-     "source value mapped to out_min"},
-    {P::flutter_level_in_max, 41, "mapping.flutter_level.in_max", "", real, -1e6, 1e6, 0, lin, live, 20,
-     "source value mapped to out_max"},
-    {P::flutter_level_out_min, 42, "mapping.flutter_level.out_min", "", real, 0, 1, 0.03, lin, live, 20,
-     "flutter level at in_min (0 ... 1)"},
-    {P::flutter_level_out_max, 43, "mapping.flutter_level.out_max", "", real, 0, 1, 1, lin, live, 20,
-     "flutter level at in_max (0 ... 1)"},
-    {P::flutter_level_curve, 44, "mapping.flutter_level.curve", "", choice, 0, kLastCurve, 2, lin, live, 0,
-     "lin, log (ratio to ratio) or exp (dB to amplitude)", kCurves},
-    {P::flutter_level_smoothing_ms, 45, "mapping.flutter_level.smoothing_ms", "ms", real, 0, 1000, 40, lin, live, 0,
-     "one-pole time constant applied to the mapped flutter level"},
-    {P::flutter_rate_source, 46, "mapping.flutter_rate.source", "", choice, 0, kLastSource, 1, lin, live, 0,
-     "feature mapped to the flutter rate", kSources},
-    {P::flutter_rate_in_min, 47, "mapping.flutter_rate.in_min", "", real, -1e6, 1e6, 100, lin, live, 20,
-     "source value mapped to out_min"},
-    {P::flutter_rate_in_max, 48, "mapping.flutter_rate.in_max", "", real, -1e6, 1e6, 6000, lin, live, 20,
-     "source value mapped to out_max"},
-    {P::flutter_rate_out_min, 49, "mapping.flutter_rate.out_min", "Hz", real, kNpiLowHz, kNpiHighHz, 8, log, live, 20,
-     "flutter rate at in_min (inside NPI's 2-40 Hz)"},
-    {P::flutter_rate_out_max, 50, "mapping.flutter_rate.out_max", "Hz", real, kNpiLowHz, kNpiHighHz, 30, log, live, 20,
-     "flutter rate at in_max (inside NPI's 2-40 Hz)"},
-    {P::flutter_rate_curve, 51, "mapping.flutter_rate.curve", "", choice, 0, kLastCurve, 1, lin, live, 0,
-     "lin, log (ratio to ratio) or exp (dB to amplitude)", kCurves},
-    {P::flutter_rate_smoothing_ms, 52, "mapping.flutter_rate.smoothing_ms", "ms", real, 0, 1000, 20, lin, live, 0,
-     "one-pole time constant applied to the mapped flutter rate"},
+    }),
+    mapping_rows<"flutter_level", "flutter level", " (0 ... 1)", "flutter level">(
+     {.source = P::flutter_level_source, .source_id = 39, .source_default = 0,
+      .source_help = "feature mapped to the flutter level", .in_min = -60, .in_max = 0,
+      .out_unit = "", .out_low = 0, .out_high = 1, .out_curve = lin, .out_min = 0.03, .out_max = 1,
+      .curve = 2, .smoothing_max_ms = 1000, .smoothing_ms = 40}),
+    mapping_rows<"flutter_rate", "flutter rate", " (inside NPI's 2-40 Hz)", "flutter rate">(
+     {.source = P::flutter_rate_source, .source_id = 46, .source_default = 1,
+      .source_help = "feature mapped to the flutter rate", .in_min = 100, .in_max = 6000,
+      .out_unit = "Hz", .out_low = kNpiLowHz, .out_high = kNpiHighHz, .out_curve = log, .out_min = 8,
+      .out_max = 30, .curve = 1, .smoothing_max_ms = 1000, .smoothing_ms = 20}),
+    std::to_array<ParamSpec>({
     {P::pressure_weight, 53, "pressure.weight", "", real, 0, 0.5, 0, lin, live, 20,
      "NPIII pressure offset at mapped level 1, as a fraction of the output ceiling; the vibration "
      "gives up this much headroom (0 = off; needs actuator.dc; paper 5.4)"},
     {P::pressure_steps, 54, "pressure.steps", "", integer, 0, 8, 0, lin, live, 0,
      "sustained pressure levels above 0, rounded (0 = continuous; paper 5.4 step functions)"},
-    {P::pressure_level_source, 55, "mapping.pressure_level.source", "", choice, 0, kLastSource, 0, lin, live, 0,
-     "feature mapped to the pressure level", kSources},
-    {P::pressure_level_in_min, 56, "mapping.pressure_level.in_min", "", real, -1e6, 1e6, -60, lin, live, 20,
-     "source value mapped to out_min"},
-    {P::pressure_level_in_max, 57, "mapping.pressure_level.in_max", "", real, -1e6, 1e6, 0, lin, live, 20,
-     "source value mapped to out_max"},
-    {P::pressure_level_out_min, 58, "mapping.pressure_level.out_min", "", real, 0, 1, 0, lin, live, 20,
-     "pressure level at in_min (0 ... 1)"},
-    {P::pressure_level_out_max, 59, "mapping.pressure_level.out_max", "", real, 0, 1, 1, lin, live, 20,
-     "pressure level at in_max (0 ... 1)"},
-    {P::pressure_level_curve, 60, "mapping.pressure_level.curve", "", choice, 0, kLastCurve, 0, lin, live, 0,
-     "lin, log (ratio to ratio) or exp (dB to amplitude)", kCurves},
-    {P::pressure_level_smoothing_ms, 61, "mapping.pressure_level.smoothing_ms", "ms", real, 0, 5000, 300, lin, live, 0,
-     "one-pole time constant applied to the mapped pressure level"},
+    }),
+    mapping_rows<"pressure_level", "pressure level", " (0 ... 1)", "pressure level">(
+     {.source = P::pressure_level_source, .source_id = 55, .source_default = 0,
+      .source_help = "feature mapped to the pressure level", .in_min = -60, .in_max = 0,
+      .out_unit = "", .out_low = 0, .out_high = 1, .out_curve = lin, .out_min = 0, .out_max = 1,
+      .curve = 0, .smoothing_max_ms = 5000, .smoothing_ms = 300}),
+    std::to_array<ParamSpec>({
     // Actuator capabilities.
     {P::actuator_dc, 62, "actuator.dc", "", toggle, 0, 1, 0, lin, structural, 0,
      "the actuator holds a sustained offset (DC); without it the pressure component is silent "
@@ -246,7 +201,7 @@ constexpr ParamSpec kTable[] = {
      "brightness any other onset (bass, chords, voice)'s pulse is mapped from once its part is decided, through the frequency mapping (0 = its own)"},
     {P::parts_other_decay_ms, 93, "parts.other.decay_ms", "ms", real, 0, 5000, 0, lin, live, 0,
      "decay of any other onset (bass, chords, voice)'s pulse once its part is decided (0 = envelope.decay_ms)"},
-};
+    }));
 // clang-format on
 
 // Row i describes P(i), and no two rows share a stable id: checked at compile time, so the

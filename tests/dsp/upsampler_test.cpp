@@ -2,7 +2,7 @@
 // unity; a sine well inside the internal band keeps its level within 0.05 dB, and its images
 // around the internal rate are at least 60 dB down; the output does not depend on how the
 // stream is split into blocks.
-#include "tactus/engine/upsampler.hpp"
+#include "tactus/dsp/upsampler.hpp"
 
 #include <gtest/gtest.h>
 

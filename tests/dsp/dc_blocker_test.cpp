@@ -1,6 +1,6 @@
 // DcBlocker: a step (DC switched on) decays away with the corner's time constant, a tone above
 // the corner passes unchanged, silence stays exact silence.
-#include "tactus/analysis/dc_blocker.hpp"
+#include "tactus/dsp/dc_blocker.hpp"
 
 #include <gtest/gtest.h>
 

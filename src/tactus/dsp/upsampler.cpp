@@ -1,4 +1,4 @@
-#include "tactus/engine/upsampler.hpp"
+#include "tactus/dsp/upsampler.hpp"
 
 #include <algorithm>
 #include <cmath>
