@@ -9,8 +9,8 @@
 #include <cstdio>
 #include <thread>
 
-#include "lv2_host.hpp"
 #include "lv2/lv2_programs.h"  // DPF's copy of KXStudio's programs extension
+#include "lv2_host.hpp"
 #include "plugin_reference.hpp"
 #include "support/allocation_counter.hpp"
 #include "support/run_cli.hpp"
