@@ -12,6 +12,7 @@
 #include "tactus/core/nearest.hpp"
 #include "tactus/core/printable.hpp"
 #include "tactus/params/mapping_rows.hpp"
+#include "tactus/params/part_rows.hpp"
 #include "tactus/perception/channels.hpp"
 
 namespace tactus {
@@ -23,6 +24,7 @@ using enum ParamCurve;
 
 using params_detail::joined_rows;
 using params_detail::mapping_rows;
+using params_detail::part_rows;
 
 constexpr std::span<const std::string_view> kSwitch{kSwitchNames};
 
@@ -175,33 +177,13 @@ constexpr auto kTable = joined_rows(
     {P::onset_low_weight, 81, "onset.low_weight", "", real, 0, 200, 5, lin, live, 0,
      "weight, in spectrum bins, of the rise of the input below 150 Hz in the onset detection "
      "function (kicks; 0 = the spectrum's own bins alone)"},
+    }),
     // Mapping by drum part (analysis/hit_analysis.hpp, mapping/mapper.hpp): each part's pulse
-    // its own strength, pitch and length once its part is decided.
-    {P::parts_kick_gain_db, 82, "parts.kick.gain_db", "dB", real, -60, 12, 0, lin, live, 20,
-     "gain of a kick's pulse once its part is decided (-60 = off)"},
-    {P::parts_kick_brightness_hz, 83, "parts.kick.brightness_hz", "Hz", real, 0, 8000, 0, lin, live, 0,
-     "brightness a kick's pulse is mapped from once its part is decided, through the frequency mapping (0 = its own)"},
-    {P::parts_kick_decay_ms, 84, "parts.kick.decay_ms", "ms", real, 0, 5000, 0, lin, live, 0,
-     "decay of a kick's pulse once its part is decided (0 = envelope.decay_ms)"},
-    {P::parts_snare_gain_db, 85, "parts.snare.gain_db", "dB", real, -60, 12, 0, lin, live, 20,
-     "gain of a snare's pulse once its part is decided (-60 = off)"},
-    {P::parts_snare_brightness_hz, 86, "parts.snare.brightness_hz", "Hz", real, 0, 8000, 0, lin, live, 0,
-     "brightness a snare's pulse is mapped from once its part is decided, through the frequency mapping (0 = its own)"},
-    {P::parts_snare_decay_ms, 87, "parts.snare.decay_ms", "ms", real, 0, 5000, 0, lin, live, 0,
-     "decay of a snare's pulse once its part is decided (0 = envelope.decay_ms)"},
-    {P::parts_hat_gain_db, 88, "parts.hat.gain_db", "dB", real, -60, 12, 0, lin, live, 20,
-     "gain of a hi-hat or cymbal's pulse once its part is decided (-60 = off)"},
-    {P::parts_hat_brightness_hz, 89, "parts.hat.brightness_hz", "Hz", real, 0, 8000, 0, lin, live, 0,
-     "brightness a hi-hat or cymbal's pulse is mapped from once its part is decided, through the frequency mapping (0 = its own)"},
-    {P::parts_hat_decay_ms, 90, "parts.hat.decay_ms", "ms", real, 0, 5000, 0, lin, live, 0,
-     "decay of a hi-hat or cymbal's pulse once its part is decided (0 = envelope.decay_ms)"},
-    {P::parts_other_gain_db, 91, "parts.other.gain_db", "dB", real, -60, 12, 0, lin, live, 20,
-     "gain of any other onset (bass, chords, voice)'s pulse once its part is decided (-60 = off)"},
-    {P::parts_other_brightness_hz, 92, "parts.other.brightness_hz", "Hz", real, 0, 8000, 0, lin, live, 0,
-     "brightness any other onset (bass, chords, voice)'s pulse is mapped from once its part is decided, through the frequency mapping (0 = its own)"},
-    {P::parts_other_decay_ms, 93, "parts.other.decay_ms", "ms", real, 0, 5000, 0, lin, live, 0,
-     "decay of any other onset (bass, chords, voice)'s pulse once its part is decided (0 = envelope.decay_ms)"},
-    }));
+    // its own strength, pitch and length once its part is decided (part_rows.hpp).
+    part_rows<"kick", "a kick">(P::parts_kick_gain_db, 82),
+    part_rows<"snare", "a snare">(P::parts_snare_gain_db, 85),
+    part_rows<"hat", "a hi-hat or cymbal">(P::parts_hat_gain_db, 88),
+    part_rows<"other", "any other onset (bass, chords, voice)">(P::parts_other_gain_db, 91));
 // clang-format on
 
 // Row i describes P(i), and no two rows share a stable id: checked at compile time, so the
