@@ -69,8 +69,8 @@ std::vector<RtAudio::DeviceInfo> probe_devices(RtAudio& audio) {
     return infos;
 }
 
-Device find_device(RtAudio& audio, const std::string& name, bool output) {
-    const std::vector<RtAudio::DeviceInfo> infos = probe_devices(audio);
+Device find_device(RtAudio& audio, const std::vector<RtAudio::DeviceInfo>& infos,
+                   const std::string& name, bool output) {
     const auto found = [&](unsigned int i) { return Device{i, infos[i]}; };
     if (name.empty()) {
         const unsigned int id =
@@ -107,11 +107,12 @@ DeviceStream::DeviceStream(const StreamRequest& request) {
     try {
         audio_ = std::make_unique<RtAudio>(request.backend);
         audio_->showWarnings(false);
-        if (audio_->getDeviceCount() == 0)
+        const std::vector<RtAudio::DeviceInfo> devices = probe_devices(*audio_);
+        if (devices.empty())
             throw std::runtime_error(fmt::format("{}: no devices (is the server running?)",
                                                  RtAudio::getApiName(audio_->getCurrentApi())));
         RtAudio::StreamParameters out_params, in_params;
-        const auto [out_id, out_info] = find_device(*audio_, request.output_device, true);
+        const auto [out_id, out_info] = find_device(*audio_, devices, request.output_device, true);
         out_params.deviceId = out_id;
         out_params.nChannels = static_cast<unsigned int>(request.output_channels);
         output_name_ = out_info.name;
@@ -121,7 +122,8 @@ DeviceStream::DeviceStream(const StreamRequest& request) {
                                                  request.output_channels));
         const bool with_input = request.input_channels != 0;
         if (with_input) {
-            const auto [in_id, in_info] = find_device(*audio_, request.input_device, false);
+            const auto [in_id, in_info] =
+                find_device(*audio_, devices, request.input_device, false);
             in_params.deviceId = in_id;
             input_channels_ = request.input_channels < 0 ? static_cast<int>(in_info.inputChannels)
                                                          : request.input_channels;

@@ -96,8 +96,11 @@ struct Device {
     RtAudio::DeviceInfo info;
 };
 
-// Device `name` of `audio` (control thread): an exact name, an index, or the only device whose
-// name contains it; the default one for "". Throws std::runtime_error listing what there is.
-Device find_device(RtAudio& audio, const std::string& name, bool output);
+// Device `name` among `devices` (probe_devices(audio), probed once for every lookup: each JACK
+// probe is a client of its own), control thread: an exact name, an index, or the only device
+// whose name contains it; the default one for "". Throws std::runtime_error listing what there
+// is.
+Device find_device(RtAudio& audio, const std::vector<RtAudio::DeviceInfo>& devices,
+                   const std::string& name, bool output);
 
 }  // namespace tactus::live
