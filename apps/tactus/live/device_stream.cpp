@@ -194,8 +194,11 @@ void DeviceStream::start(AudioCallback& callback) {
 void DeviceStream::stop() noexcept {
     if (!started_) return;
     started_ = false;
+    // Aborted, not drained: RtAudio's JACK stopStream() waits for its callback's signal on a
+    // condition without holding the mutex, and misses it when the callback runs first (the
+    // program then hangs on exit). Every caller lets the tail play out before it stops.
     try {
-        if (audio_->isStreamRunning()) audio_->stopStream();
+        if (audio_->isStreamRunning()) audio_->abortStream();
     } catch (const RtAudioError&) {
     }
 }
