@@ -27,6 +27,7 @@
 #include "live/osc_server.hpp"
 #include "live/player.hpp"
 #include "live/preset_watcher.hpp"
+#include "live/reconnector.hpp"
 #include "live/status_line.hpp"
 #include "live/sync_delay.hpp"
 #include "pipeline_options.hpp"
@@ -217,8 +218,7 @@ void live_run(const LiveOptions& o) {
     auto last_status = start;
     std::optional<Clock::time_point> finished_at;
     int64_t onsets_before = 0;
-    bool lost = false;
-    auto next_retry = start;
+    std::optional<live::Reconnector> reconnector;  // while the device is lost
     while (!g_stop) {
         std::this_thread::sleep_for(kTick);
         const auto now = Clock::now();
@@ -234,28 +234,29 @@ void live_run(const LiveOptions& o) {
                 std::chrono::duration<double>(kTailS + 4.0 * onset_to_pulse.samples() / rate_hz))
                 break;
         }
-        if (!lost && stream->lost()) {
-            lost = true;
+        if (!reconnector && stream->lost()) {
             console.message(fmt::format(
                 "the audio device stopped after {:.2f} s of audio; retrying every second until it "
                 "returns (Ctrl-C stops)",
                 callback.frames() / rate_hz));
+            reconnector.emplace(
+                std::move(stream),
+                [&] {
+                    auto again =
+                        std::make_unique<live::DeviceStream>(stream_request(o, routing, rate_hz));
+                    if (again->sample_rate_hz() != rate_hz)
+                        throw std::runtime_error("the device came back at another rate");
+                    again->start(callback);
+                    return again;
+                },
+                kRetryPeriod);
         }
-        if (lost && now >= next_retry) {
-            next_retry = now + kRetryPeriod;
-            try {
-                stream.reset();
-                stream = std::make_unique<live::DeviceStream>(stream_request(o, routing, rate_hz));
-                if (stream->sample_rate_hz() != rate_hz)
-                    throw std::runtime_error("the device came back at another rate");
-                stream->start(callback);
-                lost = false;
-                console.message("the audio device is back");
-            } catch (const std::exception&) {
-                stream.reset();
-            }
+        if (reconnector) {
+            stream = reconnector->take();
+            if (!stream) continue;
+            reconnector.reset();
+            console.message("the audio device is back");
         }
-        if (lost && !stream) continue;
         const double since_status_s = std::chrono::duration<double>(now - last_status).count();
         if (console.terminal() && since_status_s >= kStatusPeriodS) {
             const int64_t onsets = monitor.onsets();
@@ -265,6 +266,7 @@ void live_run(const LiveOptions& o) {
             last_status = now;
         }
     }
+    reconnector.reset();
     if (stream) stream->stop();
     const live::Meters meters = callback.take_meters();
     console.keep_status();

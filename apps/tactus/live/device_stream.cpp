@@ -174,6 +174,11 @@ std::string DeviceStream::runs() const {
 }
 
 DeviceStream::~DeviceStream() {
+    // A lost stream may still be closing on RtAudio's thread: closing it here as well would race.
+    for (auto waited = std::chrono::milliseconds(0);
+         lost_ && audio_ && audio_->isStreamOpen() && waited < kSilentDevice;
+         waited += std::chrono::milliseconds(20))
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
     stop();
     try {
         if (audio_ && audio_->isStreamOpen()) audio_->closeStream();
@@ -186,6 +191,7 @@ void DeviceStream::start(AudioCallback& callback) {
     try {
         audio_->startStream();
         started_ = true;
+        callbacks_seen_at_ = std::chrono::steady_clock::now();
     } catch (const RtAudioError& e) {
         throw std::runtime_error(e.getMessage());
     }
@@ -203,8 +209,16 @@ void DeviceStream::stop() noexcept {
     }
 }
 
-bool DeviceStream::lost() const {
-    return started_ && !audio_->isStreamRunning();
+bool DeviceStream::lost() {
+    if (!started_) return false;
+    const auto now = std::chrono::steady_clock::now();
+    if (const uint64_t calls = callbacks_.load(std::memory_order_relaxed);
+        calls != callbacks_seen_) {
+        callbacks_seen_ = calls;
+        callbacks_seen_at_ = now;
+    }
+    lost_ = lost_ || !audio_->isStreamRunning() || now - callbacks_seen_at_ >= kSilentDevice;
+    return lost_;
 }
 
 long DeviceStream::device_latency_frames() {
@@ -218,6 +232,7 @@ long DeviceStream::device_latency_frames() {
 int DeviceStream::on_audio(void* out, void* in, unsigned int frames, double,
                            RtAudioStreamStatus status, void* self) noexcept {
     auto& stream = *static_cast<DeviceStream*>(self);
+    stream.callbacks_.fetch_add(1, std::memory_order_relaxed);
     if (status != 0) stream.callback_->note_xrun();
     stream.callback_->process(static_cast<const float*>(in), static_cast<float*>(out),
                               static_cast<int>(frames));

@@ -6,6 +6,8 @@
 #include <RtAudio.h>
 
 #include <atomic>
+#include <chrono>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -63,8 +65,11 @@ class DeviceStream {
     // Calls `callback` from the device's thread until stop() or destruction.
     void start(AudioCallback& callback);
     void stop() noexcept;
-    // Control thread: the stream stopped without stop() (the device or server went away).
-    bool lost() const;
+    // Control thread: the stream stopped without stop() (the device or server went away), or
+    // its callback has not been called for kSilentDevice (RtAudio's JACK backend closes a stream
+    // whose server died on a thread of its own, and that close can hang in libjack).
+    bool lost();
+    static constexpr std::chrono::seconds kSilentDevice{2};
 
     double sample_rate_hz() const { return sample_rate_hz_; }
     int block_frames() const { return static_cast<int>(block_frames_); }
@@ -84,6 +89,10 @@ class DeviceStream {
     double sample_rate_hz_ = 0;
     unsigned int block_frames_ = 0;
     bool started_ = false;
+    bool lost_ = false;
+    std::atomic<uint64_t> callbacks_{0};  // written by the device's thread
+    uint64_t callbacks_seen_ = 0;
+    std::chrono::steady_clock::time_point callbacks_seen_at_;
     std::string output_name_;
 };
 
