@@ -1,8 +1,11 @@
 #include "tactus/dsp/real_fft.hpp"
 
+#include <algorithm>
 #include <map>
 #include <mutex>
 #include <new>
+
+#include "tactus/dsp/fft_wisdom.hpp"
 
 namespace tactus {
 namespace {
@@ -11,9 +14,10 @@ namespace {
 std::mutex planner_mutex;
 
 // One pair of plans per size for the whole process, made when the size is first prepared and
-// kept to the end (planning costs 10^7 instructions a size; every RealFft of that size shares
-// them through FFTW's new-array execute functions, which are thread-safe). The buffers they are
-// made on come from fftwf_alloc_*, aligned as every RealFft's are. planner_mutex held.
+// kept to the end (planning costs 10^7 instructions a size, 10^6 with the build's wisdom; every
+// RealFft of that size shares them through FFTW's new-array execute functions, which are
+// thread-safe). The buffers they are made on come from fftwf_alloc_*, aligned as every RealFft's
+// are. planner_mutex held.
 struct Plans {
     fftwf_plan forward = nullptr, inverse = nullptr;
 };
@@ -21,6 +25,11 @@ const Plans& plans_for(int size) {
     static auto* const plans = new std::map<int, Plans>;  // never freed: plans outlive statics
     auto found = plans->find(size);
     if (found != plans->end()) return found->second;
+    // The build's wisdom for the size, if any: the planner takes the plan it records.
+    const FftWisdom* const end = kFftWisdom + kFftWisdomEntries;
+    const FftWisdom* entry = std::lower_bound(kFftWisdom, end, size,
+                                              [](const FftWisdom& w, int n) { return w.size < n; });
+    if (entry != end && entry->size == size) fftwf_import_wisdom_from_string(entry->wisdom);
     float* time = fftwf_alloc_real(static_cast<size_t>(size));
     fftwf_complex* spectrum = fftwf_alloc_complex(static_cast<size_t>(size / 2 + 1));
     if (!time || !spectrum) throw std::bad_alloc();

@@ -1,6 +1,7 @@
 // Real-input FFT of a fixed size (fast for sizes with prime factors 2, 3 and 5) on FFTW3 single
 // precision. Buffers are made in prepare(), which takes the process's plans for the size (made
-// once, the first time the size is prepared); forward()/inverse() are real-time safe.
+// once, the first time the size is prepared, from the wisdom recorded at build time when the
+// build has it: dsp/fft_wisdom.hpp); forward()/inverse() are real-time safe.
 #pragma once
 
 #include <fftw3.h>
