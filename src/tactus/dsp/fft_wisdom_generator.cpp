@@ -58,6 +58,7 @@ int main(int argc, char** argv) {
         ++entries;
     }
     std::fprintf(f, "};\nconst int kFftWisdomEntries = %d;\n\n}  // namespace tactus\n", entries);
+    fftwf_cleanup();
     if (std::fclose(f) != 0 || std::rename(partial.c_str(), path.c_str()) != 0) {
         std::fprintf(stderr, "%s: cannot write %s\n", argv[0], path.c_str());
         return 1;
