@@ -4,7 +4,7 @@ JOBS ?= $(shell nproc)
 AMEN := /usr/share/sonic-pi/samples/loop_amen_full.flac
 TACTUS := $(BUILD)/bin/tactus
 
-.PHONY: setup build demo test test-asan fuzz eval bench bench-compare format format-check clean
+.PHONY: setup build demo test test-asan fuzz eval bench bench-compare bench-instructions format format-check clean
 
 setup:
 	bash scripts/setup.sh
@@ -47,6 +47,11 @@ eval: build
 
 bench: build
 	$(BUILD)/bin/tactus_bench
+
+# Start-up cost in instructions (callgrind): a 10 ms render, Engine::prepare, Engine::process per
+# audio second, a structural swap (bench/instructions.sh).
+bench-instructions: build
+	bash bench/instructions.sh $(BUILD)
 
 bench-compare: build
 	/usr/bin/python3 bench/compare.py $(BUILD) --out bench/results.md

@@ -159,7 +159,10 @@ def main():
     report = "\n".join(lines)
     print(report)
     if args.out:
-        args.out.write_text(report)
+        # Sections after this report's own (other benchmarks' records) are kept.
+        old = args.out.read_text() if args.out.exists() else ""
+        at = old.find("\n# ")
+        args.out.write_text(report + (old[at:] if at >= 0 else ""))
     return 0
 
 

@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config clang-format clang libclang-rt-14-dev
   libsndfile1-dev libvorbis-dev libogg-dev libfftw3-dev libtomlplusplus-dev libreaderwriterqueue-dev nlohmann-json3-dev libcli11-dev libfmt-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev libbenchmark-dev valgrind
   sonic-pi-samples aubio-tools sox lame puredata-core puredata-extra puredata-dev time
   python3 python3-numpy python3-scipy python3-soundfile python3-mir-eval
   fluidsynth fluid-soundfont-gm musescore-general-soundfont-small timgm6mb-soundfont espeak-ng

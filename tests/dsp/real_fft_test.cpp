@@ -1,13 +1,17 @@
-// RealFft: a cosine on bin k reads N/2 there and ~0 elsewhere; inverse(forward(x)) = N x; sizes.
+// RealFft: a cosine on bin k reads N/2 there and ~0 elsewhere; inverse(forward(x)) = N x; sizes;
+// the build's FFTW wisdom.
 #include "tactus/dsp/real_fft.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <complex>
+#include <cstdlib>
+#include <string>
 #include <vector>
 
 #include "support/signals.hpp"
+#include "tactus/dsp/fft_wisdom.hpp"
 
 namespace tactus {
 namespace {
@@ -41,6 +45,46 @@ TEST(RealFft, PrepareAgainChangesSize) {
     fft.prepare(1024);
     EXPECT_EQ(fft.size(), 1024);
     EXPECT_EQ(fft.bins(), 513);
+}
+
+}  // namespace
+}  // namespace tactus
+
+namespace tactus {
+namespace {
+
+// The plan FFTW makes for a size (FFTW_ESTIMATE, forward then inverse), as text.
+std::string plans_made(int size) {
+    float* time = fftwf_alloc_real(static_cast<size_t>(size));
+    fftwf_complex* spectrum = fftwf_alloc_complex(static_cast<size_t>(size / 2 + 1));
+    std::string text;
+    for (fftwf_plan p : {fftwf_plan_dft_r2c_1d(size, time, spectrum, FFTW_ESTIMATE),
+                         fftwf_plan_dft_c2r_1d(size, spectrum, time, FFTW_ESTIMATE)}) {
+        char* printed = fftwf_sprint_plan(p);
+        text += printed;
+        std::free(printed);
+        fftwf_destroy_plan(p);
+    }
+    fftwf_free(time);
+    fftwf_free(spectrum);
+    return text;
+}
+
+// The wisdom recorded at build time (fft_wisdom_generator.cpp) is taken by this FFTW and leads
+// its planner to the plans it makes without it: the same transforms, bit for bit.
+TEST(FftWisdom, EachEntryGivesThePlansFftwMakesWithout) {
+    ASSERT_GT(kFftWisdomEntries, 100);
+    for (int i = 0; i < kFftWisdomEntries; ++i) {
+        const FftWisdom& entry = kFftWisdom[i];
+        if (i > 0) {
+            ASSERT_GT(entry.size, kFftWisdom[i - 1].size) << "in increasing order";
+        }
+        fftwf_forget_wisdom();
+        const std::string without = plans_made(entry.size);
+        fftwf_forget_wisdom();
+        ASSERT_EQ(fftwf_import_wisdom_from_string(entry.wisdom), 1) << "size " << entry.size;
+        EXPECT_EQ(plans_made(entry.size), without) << "size " << entry.size;
+    }
 }
 
 }  // namespace

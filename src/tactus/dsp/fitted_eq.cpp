@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "tactus/dsp/biquad_cascade.hpp"
+#include "tactus/dsp/design_memo.hpp"
 
 namespace tactus {
 namespace {
@@ -35,6 +36,13 @@ std::vector<double> solve(std::vector<double> a, std::vector<double> b, int n) {
     return x;
 }
 
+// A fit's exact inputs: the rate, the band and the target on its grid.
+struct FitKey {
+    double sample_rate_hz, low_hz, high_hz;
+    std::vector<double> target;  // dB
+    bool operator==(const FitKey&) const = default;
+};
+
 }  // namespace
 
 std::vector<double> FittedEq::grid(const FitBand& band) {
@@ -50,8 +58,20 @@ FittedEq::Design FittedEq::fit(double sample_rate_hz, const FitBand& band,
     const double low_hz = band.low_hz;
     const double high_hz = highest_fitted_hz(band.high_hz, sample_rate_hz);
     const std::vector<double> frequencies = grid({.low_hz = low_hz, .high_hz = high_hz});
-    std::vector<double> target(kGridPoints);
-    for (int i = 0; i < kGridPoints; ++i) target[i] = target_db(frequencies[i]);
+    FitKey key{sample_rate_hz, low_hz, high_hz, std::vector<double>(kGridPoints)};
+    for (int i = 0; i < kGridPoints; ++i) key.target[i] = target_db(frequencies[i]);
+    static DesignMemo<FitKey, Design> fits;
+    return fits.get(key, [&] {
+        return fit_on_grid(sample_rate_hz, {.low_hz = low_hz, .high_hz = high_hz}, frequencies,
+                           key.target);
+    });
+}
+
+// Gauss-Newton on the band's grid `frequencies` towards `target` (dB there).
+FittedEq::Design FittedEq::fit_on_grid(double sample_rate_hz, const FitBand& band,
+                                       const std::vector<double>& frequencies,
+                                       const std::vector<double>& target) {
+    const double low_hz = band.low_hz, high_hz = band.high_hz;
 
     // Half-octave centres across the band.
     std::vector<double> centres;
@@ -62,25 +82,36 @@ FittedEq::Design FittedEq::fit(double sample_rate_hz, const FitBand& band,
     const int unknowns = sections + 1;  // section gains and an overall gain, dB
 
     std::vector<double> gains_db(static_cast<size_t>(unknowns), 0.0);
-    auto response_db = [&](const std::vector<double>& g, double f) {
-        double db = g[sections];
-        for (int s = 0; s < sections; ++s)
-            db += BiquadCoefficients::peaking(centres[s], kSectionQ, g[s], sample_rate_hz)
-                      .magnitude_db(f, sample_rate_hz);
+    // Each section's response in dB on the grid, at its gain and at its gain plus the probe: a
+    // probe moves one gain, so the others' terms are those of the current response. The sums
+    // below add the same terms in the same order as summing every section anew would.
+    constexpr double kProbeDb = 0.01, kDamping = 1e-4;
+    std::vector<double> term(static_cast<size_t>(sections * kGridPoints));
+    std::vector<double> probed(term.size());
+    auto section_db = [&](int s, double gain_db, std::vector<double>& into) {
+        const BiquadCoefficients c =
+            BiquadCoefficients::peaking(centres[s], kSectionQ, gain_db, sample_rate_hz);
+        for (int i = 0; i < kGridPoints; ++i)
+            into[s * kGridPoints + i] = c.magnitude_db(frequencies[i], sample_rate_hz);
+    };
+    // The response at grid point i with gain u probed (u < 0: none).
+    auto response_db = [&](int i, int u) {
+        double db = u == sections ? gains_db[sections] + kProbeDb : gains_db[sections];
+        for (int s = 0; s < sections; ++s) db += (s == u ? probed : term)[s * kGridPoints + i];
         return db;
     };
-    constexpr double kProbeDb = 0.01, kDamping = 1e-4;
     for (int iteration = 0; iteration < kIterations; ++iteration) {
+        for (int s = 0; s < sections; ++s) {
+            section_db(s, gains_db[s], term);
+            section_db(s, gains_db[s] + kProbeDb, probed);
+        }
         std::vector<double> jacobian(static_cast<size_t>(kGridPoints * unknowns));
         std::vector<double> error(kGridPoints);
         for (int i = 0; i < kGridPoints; ++i) {
-            const double now = response_db(gains_db, frequencies[i]);
+            const double now = response_db(i, -1);
             error[i] = target[i] - now;
-            for (int u = 0; u < unknowns; ++u) {
-                std::vector<double> probe = gains_db;
-                probe[u] += kProbeDb;
-                jacobian[i * unknowns + u] = (response_db(probe, frequencies[i]) - now) / kProbeDb;
-            }
+            for (int u = 0; u < unknowns; ++u)
+                jacobian[i * unknowns + u] = (response_db(i, u) - now) / kProbeDb;
         }
         std::vector<double> normal(static_cast<size_t>(unknowns * unknowns), 0.0);
         std::vector<double> rhs(static_cast<size_t>(unknowns), 0.0);

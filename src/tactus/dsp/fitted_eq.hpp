@@ -56,7 +56,8 @@ class FittedEq {
     }
 
     // Allocates. The target is sampled on the grid of the band, its top at most
-    // highest_fitted_hz().
+    // highest_fitted_hz(). Any thread but an audio one: a fit with the same rate, band and
+    // target samples as one made before in the process returns that one's design.
     static Design fit(double sample_rate_hz, const FitBand& band,
                       const std::function<double(double frequency_hz)>& target_db);
     // The rate magnitude_db() reads, then set() and reset().
@@ -76,6 +77,9 @@ class FittedEq {
     double magnitude_db(double frequency_hz) const;  // what it achieves now
 
   private:
+    static Design fit_on_grid(double sample_rate_hz, const FitBand& band,
+                              const std::vector<double>& frequencies,
+                              const std::vector<double>& target);
     void step_glide() noexcept;
     double sample_rate_hz_ = 48000;
     std::array<Biquad, kMaxSections> sections_;

@@ -1,5 +1,7 @@
 // Real-input FFT of a fixed size (fast for sizes with prime factors 2, 3 and 5) on FFTW3 single
-// precision. Plans and buffers are made in prepare(); forward()/inverse() are real-time safe.
+// precision. Buffers are made in prepare(), which takes the process's plans for the size (made
+// once, the first time the size is prepared, from the wisdom recorded at build time when the
+// build has it: dsp/fft_wisdom.hpp); forward()/inverse() are real-time safe.
 #pragma once
 
 #include <fftw3.h>
@@ -22,15 +24,17 @@ class RealFft {
     float* time() { return time_; }
     std::complex<float>* spectrum() { return reinterpret_cast<std::complex<float>*>(spectrum_); }
 
-    void forward() noexcept { fftwf_execute(forward_); }  // time() -> spectrum()
-    void inverse() noexcept { fftwf_execute(inverse_); }  // spectrum() -> time(), scaled by size
+    // time() -> spectrum()
+    void forward() noexcept { fftwf_execute_dft_r2c(forward_, time_, spectrum_); }
+    // spectrum() -> time(), scaled by size
+    void inverse() noexcept { fftwf_execute_dft_c2r(inverse_, spectrum_, time_); }
 
   private:
     void release();
     int size_ = 0;
     float* time_ = nullptr;
     fftwf_complex* spectrum_ = nullptr;
-    fftwf_plan forward_ = nullptr;
+    fftwf_plan forward_ = nullptr;  // shared: the process's plans for size_
     fftwf_plan inverse_ = nullptr;
 };
 

@@ -5,81 +5,16 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "tactus/core/units.hpp"
-#include "tactus/dsp/fir_design.hpp"
+#include "tactus/dsp/resampler_kernel.hpp"
 
 namespace tactus {
 namespace {
 
-constexpr int kPointsPerOutput = 64;  // kernel table resolution; linear interpolation between
-constexpr int kFftSize = 1 << 16;     // cepstrum length: ~28 times the kernel, little aliasing
-// Band::listening: the table's linear interpolation and the tail's end under its stop band
-// (64 points leave images near -70 dB), with the cepstrum as much longer than the kernel.
-constexpr int kListeningPointsPerOutput = 256;
-constexpr int kListeningFftSize = 1 << 19;
-constexpr double kListeningTailEnergy = 1e-11;
-constexpr double kFloorDb = -140;     // log-magnitude floor of the stop band's nulls
-constexpr double kTailEnergy = 1e-8;  // the minimum-phase kernel ends where less is left
-constexpr int kLanes = 8;             // taps padded to a multiple: the dot product vectorises
-
-// The minimum-phase kernel, kPointsPerOutput points per sample of the lower rate (the output's,
-// reducing it), unit sum over the points divided by kPointsPerOutput (unit DC gain in
-// continuous time). Rate-independent: made once per band.
-struct Kernel {
-    std::vector<double> points;
-    int points_per_unit = kPointsPerOutput;
-    double delay_output_samples = 0;
-};
-
-Kernel design_kernel(double pass_edge, double stop_edge, double stop_band_db,
-                     int points_per_unit = kPointsPerOutput, int fft_size = kFftSize,
-                     double tail_energy = kTailEnergy) {
-    const double transition = stop_edge - pass_edge;  // cycles/sample
-    const double cutoff = 0.5 * (stop_edge + pass_edge);
-    const double beta = 0.1102 * (stop_band_db - 8.7);
-    const double length = (stop_band_db - 8) / (2.285 * 2 * kPi * transition);
-    const int half = static_cast<int>(std::ceil(0.5 * length * points_per_unit));
-    std::vector<double> h(static_cast<size_t>(2 * half + 1));
-    for (int k = -half; k <= half; ++k) {
-        const double t = static_cast<double>(k) / points_per_unit;  // output samples
-        const double arg = 2 * cutoff * t;
-        const double sinc = k == 0 ? 1.0 : std::sin(kPi * arg) / (kPi * arg);
-        h[static_cast<size_t>(k + half)] =
-            2 * cutoff * sinc * kaiser_window(static_cast<double>(k) / half, beta);
-    }
-    h = minimum_phase(h, fft_size, kFloorDb);
-    double energy = 0;
-    for (double v : h) energy += v * v;
-    size_t end = h.size();
-    for (double tail = 0; end > 1 && tail + h[end - 1] * h[end - 1] < tail_energy * energy;)
-        tail += h[end - 1] * h[end - 1], --end;
-    h.resize(end);
-    const double sum = std::accumulate(h.begin(), h.end(), 0.0);
-    double moment = 0, energy_kept = 0;
-    for (size_t k = 0; k < h.size(); ++k) {
-        h[k] *= points_per_unit / sum;
-        moment += static_cast<double>(k) * h[k] * h[k];
-        energy_kept += h[k] * h[k];
-    }
-    return {h, points_per_unit, moment / energy_kept / points_per_unit};
-}
-
-const Kernel& kernel(Resampler::Band band) {  // thread-safe initialisation, each when first used
-    if (band == Resampler::Band::listening) {
-        static const Kernel listening =
-            design_kernel(Resampler::kListeningPassEdge, Resampler::kListeningStopEdge,
-                          Resampler::kListeningStopBandDb, kListeningPointsPerOutput,
-                          kListeningFftSize, kListeningTailEnergy);
-        return listening;
-    }
-    static const Kernel analysis =
-        design_kernel(Resampler::kPassEdge, Resampler::kStopEdge, Resampler::kStopBandDb);
-    return analysis;
-}
+constexpr int kLanes = 8;  // taps padded to a multiple: the dot product vectorises
 
 // The kernel at `t` samples (of the lower rate) after its start (0 outside it), linearly
 // interpolated.
-double kernel_at(const Kernel& k, double t) {
+double kernel_at(const ResamplerKernelView& k, double t) {
     const double x = t * k.points_per_unit;
     if (x < 0) return 0;
     const auto i = static_cast<size_t>(x);
@@ -119,7 +54,7 @@ void Resampler::prepare(double input_rate_hz, double output_rate_hz, int max_blo
     up_ = r.up;
     down_ = r.down;
     output_rate_hz_ = input_rate_hz * static_cast<double>(up_) / static_cast<double>(down_);
-    const Kernel& k = kernel(band);
+    const ResamplerKernelView k = resampler_kernel_table(band);  // designed at build time
     // Input samples per output sample: down / up. Tap i reads the input i samples before the
     // newest, at (phase / up + i) input samples = (phase / up + i) up / down output samples;
     // the kernel's unit is a sample of the lower rate: the output's, unless the rate rises.

@@ -9,9 +9,8 @@ void InputRing::prepare(int lanes, int64_t capacity) {
     reset();
 }
 
+// No sample is cleared: read() gives only samples written since.
 void InputRing::reset() noexcept {
-    for (int64_t i = 0; i < lanes_ * capacity_; ++i)
-        samples_[i].store(0.0f, std::memory_order_relaxed);
     written_.store(0, std::memory_order_release);
 }
 

@@ -1,7 +1,9 @@
 #include "tactus/post/flattening_filter.hpp"
 
 #include <algorithm>
+#include <utility>
 
+#include "tactus/dsp/design_memo.hpp"
 #include "tactus/perception/sensation.hpp"
 
 namespace tactus {
@@ -23,6 +25,14 @@ double FlatteningFilter::target_db(double frequency_hz) const {
 
 FlatteningFilter::Design FlatteningFilter::design(double sample_rate_hz,
                                                   const FlatteningDesign& inputs) {
+    static DesignMemo<std::pair<double, FlatteningDesign>, Design> designs;
+    return designs.get({sample_rate_hz, inputs},
+                       [&] { return make_design(sample_rate_hz, inputs); });
+}
+
+// The contour's reference scan (thousands of threshold evaluations) and the fit.
+FlatteningFilter::Design FlatteningFilter::make_design(double sample_rate_hz,
+                                                       const FlatteningDesign& inputs) {
     const double low_hz = inputs.low_hz;
     double high_hz = inputs.high_hz;
     FlatteningFilter filter;

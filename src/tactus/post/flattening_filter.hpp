@@ -22,6 +22,7 @@ struct FlatteningDesign {
     double range_db = 30.0;  // largest attenuation
     double contact_area_cm2 = perception::kReferenceAreaCm2;
     double level_db = 0.0;  // SL of the equal-sensation contour (0: threshold)
+    bool operator==(const FlatteningDesign&) const = default;
 };
 
 class FlatteningFilter {
@@ -32,7 +33,8 @@ class FlatteningFilter {
         double reference_db = 0;
         FittedEq::Design eq;
     };
-    // Allocates (the fit).
+    // Allocates (the fit). Control and setup threads: the same rate and inputs as a design made
+    // before in the process give that design (dsp/design_memo.hpp).
     static Design design(double sample_rate_hz, const FlatteningDesign& inputs);
     void prepare(const ProcessSpec& spec, const FlatteningDesign& inputs);  // may allocate
     void reset() noexcept { eq_.reset(); }
@@ -49,6 +51,7 @@ class FlatteningFilter {
     double magnitude_db(double frequency_hz) const { return eq_.magnitude_db(frequency_hz); }
 
   private:
+    static Design make_design(double sample_rate_hz, const FlatteningDesign& inputs);
     double contour_db(double frequency_hz) const;
     FlatteningDesign design_;
     double reference_db_ = 0;
