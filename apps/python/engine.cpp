@@ -5,8 +5,10 @@
 // generated from the parameter table, with unit, range and help in their docstrings.
 #include <fmt/format.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <mutex>
+#include <optional>
 
 #include "audio_view.hpp"
 #include "parts.hpp"
@@ -47,34 +49,37 @@ class PyEngine {
         const std::unique_lock running(processing_, std::try_to_lock);
         if (!running.owns_lock())
             throw py::value_error("process(): already running in another thread");
-        // Made without a channel count, the engine takes the first block's: nothing has been
-        // processed, so preparing it again (settings as set, pending changes folded in) loses
-        // nothing.
-        if (in.channels != channels_ && !channels_given_ && !processed_)
-            prepare(engine_->sample_rate_hz(), in.channels);
-        if (in.channels != channels_)
-            throw py::value_error(fmt::format(
-                "block: {} channel(s), the engine was made for {} ({}); make another with "
-                "Engine(rate, channels={})",
-                in.channels, channels_,
-                channels_given_ ? fmt::format("channels={}", channels_) : "its first block's",
-                in.channels));
+        take_channels(in.channels, "block");
         processed_ = processed_ || in.frames > 0;
         AudioOutput out = audio_output(in.frames, actuators_);
-        {
-            const py::gil_scoped_release unlocked;
-            // Frames are taken off the engine's queue between blocks, as a live front end does.
-            std::vector<const float*> from(in.pointers.size());
-            std::vector<float*> to(out.pointers.size());
-            for (int done = 0; done < in.frames; done += kStreamBlockFrames) {
-                const int count = std::min(kStreamBlockFrames, in.frames - done);
-                for (size_t c = 0; c < from.size(); ++c) from[c] = in.pointers[c] + done;
-                for (size_t c = 0; c < to.size(); ++c) to[c] = out.pointers[c] + done;
-                engine_->process(from.data(), to.data(), count);
-                if (keep_frames_)
-                    for (AnalysisFrame f; engine_->pop_frame(f);) frames_.push_back(f);
-            }
-        }
+        if (in.frames == 0) return out.array;
+        BufferSource source(in.pointers, in.frames, engine_->sample_rate_hz(), "block");
+        int64_t done = 0;
+        run(source, RunTail::none, [&](const float* const* vibration, int count) {
+            for (size_t c = 0; c < out.pointers.size(); ++c)
+                std::copy_n(vibration[c], count, out.pointers[c] + done);
+            done += count;
+        });
+        return out.array;
+    }
+
+    // Every frame of `source` (its tail too with ring_out), as process() runs a block: the
+    // run loop of the command line (io/run_file.hpp). Returns float32 (frames, actuators).
+    py::array_t<float> stream(AudioSource& source, bool ring_out) {
+        const std::unique_lock running(processing_, std::try_to_lock);
+        if (!running.owns_lock())
+            throw py::value_error("stream: the engine is running in another thread");
+        take_channels(source.channels(), source.name());
+        processed_ = true;
+        std::vector<std::vector<float>> vibration(static_cast<size_t>(actuators_));
+        run(source, ring_out ? RunTail::ring_out : RunTail::none,
+            [&](const float* const* v, int count) {
+                for (size_t c = 0; c < vibration.size(); ++c)
+                    vibration[c].insert(vibration[c].end(), v[c], v[c] + count);
+            });
+        AudioOutput out = audio_output(static_cast<int>(vibration[0].size()), actuators_);
+        for (size_t c = 0; c < vibration.size(); ++c)
+            std::copy(vibration[c].begin(), vibration[c].end(), out.pointers[c]);
         return out.array;
     }
 
@@ -136,6 +141,38 @@ class PyEngine {
     int actuators() const { return actuators_; }
 
   private:
+    // Made without a channel count, the engine takes the first input's: nothing has been
+    // processed, so preparing it again (settings as set, pending changes folded in) loses
+    // nothing.
+    void take_channels(int channels, const std::string& what) {
+        if (channels != channels_ && !channels_given_ && !processed_)
+            prepare(engine_->sample_rate_hz(), channels);
+        if (channels != channels_)
+            throw py::value_error(fmt::format(
+                "{}: {} channel(s), the engine was made for {} ({}); make another with "
+                "Engine(rate, channels={})",
+                what, channels, channels_,
+                channels_given_ ? fmt::format("channels={}", channels_) : "its first block's",
+                channels));
+    }
+
+    // The run loop over `source` with the GIL released, frames taken off the engine's queue
+    // between blocks, as a live front end does; its errors as ValueError.
+    void run(AudioSource& source, RunTail tail,
+             const std::function<void(const float* const*, int)>& on_output) {
+        const auto take = [&](const float* const* vibration, int count) {
+            on_output(vibration, count);
+            if (keep_frames_)
+                for (AnalysisFrame f; engine_->pop_frame(f);) frames_.push_back(f);
+        };
+        try {
+            const py::gil_scoped_release unlocked;
+            run_source(source, *engine_, {.on_output = take}, tail, RunPrepare::none);
+        } catch (const std::runtime_error& e) {
+            throw py::value_error(e.what());
+        }
+    }
+
     void prepare(double sample_rate_hz, int channels) {
         try {
             engine_->prepare({.sample_rate_hz = sample_rate_hz,
@@ -229,6 +266,33 @@ attribute named by its key with dots as underscores (engine.envelope_decay_ms).)
         .def_property_readonly("actuators", &PyEngine::actuators, "Actuator outputs.")
         .def_property_readonly("settings", &PyEngine::settings,
                                "Every parameter as last set: {key: value}.");
+    m.def(
+        "stream_file",
+        [](PyEngine& engine, const std::filesystem::path& path, bool ring_out) {
+            std::optional<FileSource> source;
+            try {
+                source.emplace(path, kStreamBlockFrames);
+            } catch (const std::runtime_error& e) {
+                throw py::value_error(e.what());
+            }
+            return engine.stream(*source, ring_out);
+        },
+        arg("engine"), arg("path"), arg("ring_out") = false,
+        R"(The engine run over an audio file, block by block as `tactus render` reads it: the
+vibration, float32 (frames, actuators), as process() on the file's samples returns it. The file
+must have the engine's sample rate (and its channel count, as process()). ring_out: silence fed
+after the file until the vibration has died away, as `tactus render` does.)");
+    m.def(
+        "stream_buffer",
+        [](PyEngine& engine, const py::handle& x, bool ring_out) {
+            const AudioView in = audio_view(x);
+            if (in.frames == 0) throw py::value_error("audio: no audio frames");
+            BufferSource source(in.pointers, in.frames, engine.engine().sample_rate_hz(), "audio");
+            return engine.stream(source, ring_out);
+        },
+        arg("engine"), arg("x"), arg("ring_out") = false,
+        R"(stream_file() on audio in memory, (frames,) or (frames, channels) at the engine's
+sample rate: the same loop, the same output.)");
     for (const ParamSpec& s : param_table()) {
         const P id = s.param;
         engine.def_property(

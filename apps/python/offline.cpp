@@ -13,13 +13,12 @@
 #include "audio_view.hpp"
 #include "parts.hpp"
 #include "settings.hpp"
-#include "tactus/actuator/drive_meter.hpp"
-#include "tactus/dsp/downmix.hpp"
 #include "tactus/engine/analysis_rows.hpp"
 #include "tactus/engine/onset_decisions.hpp"
 #include "tactus/io/actuator_file.hpp"
 #include "tactus/io/audio_reader.hpp"
 #include "tactus/io/audio_writer.hpp"
+#include "tactus/io/meter_run.hpp"
 #include "tactus/io/preset.hpp"
 #include "tactus/io/run_file.hpp"
 #include "tactus/perception/meter.hpp"
@@ -39,6 +38,23 @@ ProcessSpec spec_for(double sample_rate_hz, const AudioView& in) {
         throw py::value_error(e.what());
     }
     return {.sample_rate_hz = sample_rate_hz, .max_block = kBlock, .channels = in.channels};
+}
+
+// The audio as the library's run loop reads it (io/audio_source.hpp): the command line's loop,
+// on samples in memory.
+BufferSource source_of(const AudioView& in, double sample_rate_hz) {
+    return BufferSource(in.pointers, in.frames, sample_rate_hz, "audio");
+}
+
+// Runs `run` with the GIL released, a run loop's error as a ValueError.
+template <typename Run>
+void unlocked(const Run& run) {
+    try {
+        const py::gil_scoped_release released;
+        run();
+    } catch (const std::runtime_error& e) {
+        throw py::value_error(e.what());
+    }
 }
 
 void prepare(Engine& engine, const ProcessSpec& spec) {
@@ -81,16 +97,16 @@ py::object render(const py::handle& x, double sample_rate_hz, const std::string&
     const auto most =
         static_cast<int>(in.frames + std::ceil(kMaxTailS * sample_rate_hz) + Engine::kMaxBlock);
     AudioOutput out = audio_output(most, actuators);
-    int64_t frames = in.frames;
-    {
-        const py::gil_scoped_release unlocked;
-        engine.process(in.pointers.data(), out.pointers.data(), in.frames);
-        run_tail(engine, spec.channels, [&](const float* const* vibration, int count) {
-            for (size_t c = 0; c < out.pointers.size(); ++c)
-                std::copy_n(vibration[c], count, out.pointers[c] + frames);
-            frames += count;
-        });
-    }
+    int64_t frames = 0;
+    BufferSource source = source_of(in, sample_rate_hz);
+    const auto on_output = [&](const float* const* vibration, int count) {
+        for (size_t c = 0; c < out.pointers.size(); ++c)
+            std::copy_n(vibration[c], count, out.pointers[c] + frames);
+        frames += count;
+    };
+    unlocked([&] {
+        run_source(source, engine, {.on_output = on_output}, RunTail::ring_out, RunPrepare::none);
+    });
     return out.array[py::slice(0, static_cast<py::ssize_t>(frames), 1)];
 }
 
@@ -113,21 +129,18 @@ py::dict analyze(const py::handle& x, double sample_rate_hz, const std::string& 
     AnalysisRows table(engine, metered, [&](const AnalysisRows::Row& row) { rows.push_back(row); });
     engine.enable_frame_queue();
     prepare(engine, spec);
-    {
-        const py::gil_scoped_release unlocked;
+    BufferSource source = source_of(in, sample_rate_hz);
+    unlocked([&] {  // as `tactus analyze`
         table.start(sample_rate_hz);
-        std::vector<float> vibration(kBlock);
-        float* out = vibration.data();
-        std::vector<const float*> block(in.pointers.size());
-        for (int done = 0; done < in.frames; done += kBlock) {  // as run_file reads a file
-            const int count = std::min(kBlock, in.frames - done);
-            for (size_t c = 0; c < block.size(); ++c) block[c] = in.pointers[c] + done;
-            engine.process(block.data(), &out, count);
-            table.take_frames(engine);
-            table.vibration(out, count);
-        }
+        run_source(source, engine,
+                   {.on_output =
+                        [&](const float* const* v, int n) {
+                            table.take_frames(engine);
+                            table.vibration(v[0], n);
+                        }},
+                   RunTail::none, RunPrepare::none);
         table.finish();
-    }
+    });
     py::dict out = columns(AnalysisRows::kColumns, rows);
     out["part"] = part_names(out["part"]);
     return out;
@@ -139,31 +152,19 @@ py::dict onsets(const py::handle& x, double sample_rate_hz, const std::string& p
     const AudioView in = audio_view(x);
     const ProcessSpec spec = spec_for(sample_rate_hz, in);
     Analyzer analyzer;
-    BlockAnalysis analysis(analyzer);
-    try {
-        analysis.prepare(spec, settings, OnsetDecisions::reads());
-    } catch (const std::invalid_argument& e) {
-        throw py::value_error(e.what());
-    }
     std::vector<std::array<double, 4>> rows;  // the part as its index
-    {
-        const py::gil_scoped_release unlocked;
-        OnsetDecisions decisions;
-        const auto add = [&](const DecidedOnset& o) {
-            rows.push_back({static_cast<double>(o.onset_sample) / sample_rate_hz,
-                            static_cast<double>(o.decided_sample) / sample_rate_hz, o.strength_db,
-                            static_cast<double>(o.part)});
-        };
-        std::vector<const float*> block(in.pointers.size());
-        const auto on_frame = [&](const Features& f) { decisions.add(f, add); };
-        for (int done = 0; done < in.frames; done += kBlock) {
-            const int count = std::min(kBlock, in.frames - done);
-            for (size_t c = 0; c < block.size(); ++c) block[c] = in.pointers[c] + done;
-            analysis.process(block.data(), count, on_frame);
-        }
-        analysis.finish(on_frame);
+    OnsetDecisions decisions;
+    const auto add = [&](const DecidedOnset& o) {
+        rows.push_back({static_cast<double>(o.onset_sample) / sample_rate_hz,
+                        static_cast<double>(o.decided_sample) / sample_rate_hz, o.strength_db,
+                        static_cast<double>(o.part)});
+    };
+    BufferSource source = source_of(in, spec.sample_rate_hz);
+    unlocked([&] {  // as `tactus onsets`
+        analyse_source(source, analyzer, settings, OnsetDecisions::reads(),
+                       [&](const Features& f) { decisions.add(f, add); });
         decisions.finish(add);
-    }
+    });
     constexpr std::array<std::string_view, 4> kNames = {"onset_s", "decided_s", "strength_db",
                                                         "part"};
     py::dict out = columns(kNames, rows);
@@ -183,22 +184,13 @@ py::dict meter(const py::handle& vibration, double sample_rate_hz, const std::st
     const AudioView in = audio_view(vibration);
     const ProcessSpec spec = spec_for(sample_rate_hz, in);
     std::vector<std::array<double, 6>> rows;
-    {
-        const py::gil_scoped_release unlocked;
-        DriveMeter meter;
-        meter.prepare(spec.sample_rate_hz, actuator, contact_area_cm2);
-        const auto on_reading = [&](const perception::MeterReading& r) {
+    BufferSource source = source_of(in, spec.sample_rate_hz);
+    unlocked([&] {  // as `tactus meter`
+        meter_source(source, actuator, contact_area_cm2, [&](const perception::MeterReading& r) {
             rows.push_back({r.time_s, r.level_db[0], r.level_db[1], r.level_db[2], r.level_db[3],
                             r.combined_db});
-        };
-        std::vector<float> mono(kBlock);
-        for (int done = 0; done < in.frames; done += kBlock) {  // the actuators' mean
-            const int count = std::min(kBlock, in.frames - done);
-            downmix_mean(in.pointers.data(), in.channels, done, mono.data(), count);
-            meter.write(mono.data(), count, on_reading);
-        }
-        meter.finish(on_reading);
-    }
+        });
+    });
     std::vector<std::string> names = {"time_s"};
     for (const auto& c : perception::kChannels) names.push_back(std::string(c.name) + "_sl_db");
     names.push_back("combined_sl_db");

@@ -13,10 +13,9 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "global_options.hpp"
-#include "tactus/actuator/drive_meter.hpp"
-#include "tactus/dsp/downmix.hpp"
 #include "tactus/io/actuator_file.hpp"
 #include "tactus/io/audio_reader.hpp"
+#include "tactus/io/meter_run.hpp"
 #include "tactus/io/render_info.hpp"
 #include "tactus/io/text_output.hpp"
 
@@ -76,23 +75,10 @@ void meter(const MeterOptions& o) {
         for (double v : r.level_db) out << fmt::format(",{:.2f}", v);
         out << fmt::format(",{:.2f}\n", r.combined_db);
     };
-    DriveMeter meter;
     Progress progress("meter");
-    std::vector<float> mono;
-    int input_channels = 1;
-    const RunSummary run = stream_file(
-        o.input,
-        [&](const ProcessSpec& spec) {
-            meter.prepare(spec.sample_rate_hz, actuator, o.contact_area_cm2);
-            input_channels = spec.channels;
-            mono.resize(kStreamBlockFrames);
-        },
-        [&](const float* const* in, int frames) {  // the actuators' mean
-            downmix_mean(in, input_channels, 0, mono.data(), frames);
-            meter.write(mono.data(), frames, on_reading);
-        },
-        with_progress(progress));
-    meter.finish(on_reading);
+    FileSource vibration(o.input, kStreamBlockFrames);
+    const RunSummary run =
+        meter_source(vibration, actuator, o.contact_area_cm2, on_reading, with_progress(progress));
     if (csv) csv->commit();
     // The summary is data, on stdout, unless the CSV went there; written at once, so files
     // metered in parallel do not mix their lines.

@@ -16,6 +16,7 @@
 #include "global_options.hpp"
 #include "pipeline_options.hpp"
 #include "tactus/actuator/drive_meter.hpp"
+#include "tactus/dsp/downmix.hpp"
 #include "tactus/export/haptic_track.hpp"
 #include "tactus/export/html_report.hpp"
 #include "tactus/export/thin_rows.hpp"
@@ -109,10 +110,10 @@ void report(const ReportOptions& o) {
             meter.prepare(engine.sample_rate_hz(), metered,
                           settings[P::perception_contact_area_cm2]);
         }
+        mono.resize(static_cast<size_t>(frames));
+        downmix_mean(audio, audio_channels, 0, mono.data(), frames);  // as the engine hears it
         for (int i = 0; i < frames; ++i) {
-            float sum = 0;
-            for (int c = 0; c < audio_channels; ++c) sum += audio[c][i];
-            sound->add(sum / static_cast<float>(audio_channels));
+            sound->add(mono[i]);
             vibration->add(vib[0][i]);
         }
         meter.write(vib[0], frames, on_reading);

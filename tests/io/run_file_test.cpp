@@ -1,7 +1,7 @@
 // run_file: streams a file through an Engine in blocks; the output equals processing the whole
 // file in one go, every frame reaches on_output, progress ends at the total, a file at an
 // unsupported rate or without frames is rejected naming the file. analyse_file gives the
-// engine's features, and only the onsets when asked for none.
+// engine's features, and only the onsets when asked for none. Audio in memory runs as the file.
 #include "tactus/io/run_file.hpp"
 
 #include <gmock/gmock.h>
@@ -154,6 +154,50 @@ TEST_F(RunFileTest, RejectsEmptyFiles) {
     } catch (const std::runtime_error& e) {
         EXPECT_THAT(e.what(), HasSubstr(path.string()));
         EXPECT_THAT(e.what(), HasSubstr("no audio frames"));
+    }
+}
+
+// The same samples in memory (BufferSource) run as the file does, tail included; on_input sees
+// every block the engine takes, the file's then the tail's silence; an engine run as prepared
+// keeps its state, and a source at another rate is refused naming both.
+TEST_F(RunFileTest, ABufferRunsAsTheFileAndOnInputSeesEveryBlock) {
+    const double fs = 44100;
+    const test::DrumSignal drums = test::drum_pattern(fs, 1.5, 5);
+    const fs::path path = write("drums.wav", drums.audio, fs);
+    const auto run = [&](AudioSource& source, RunPrepare prepare, Engine& engine) {
+        std::vector<float> out, in;
+        const RunSummary summary =
+            run_source(source, engine,
+                       {.on_output = [&](const float* const* v,
+                                         int n) { out.insert(out.end(), v[0], v[0] + n); },
+                        .on_input = [&](const float* const* x,
+                                        int n) { in.insert(in.end(), x[0], x[0] + n); }},
+                       RunTail::ring_out, prepare);
+        EXPECT_EQ(static_cast<int64_t>(in.size()), summary.frames + summary.tail_frames);
+        EXPECT_EQ(in.size(), out.size());
+        EXPECT_TRUE(std::equal(drums.audio.begin(), drums.audio.end(), in.begin()));
+        EXPECT_TRUE(std::all_of(in.begin() + static_cast<int64_t>(drums.audio.size()), in.end(),
+                                [](float x) { return x == 0.0f; }));
+        return out;
+    };
+    Engine from_file, from_buffer, prepared;
+    FileSource file(path, kStreamBlockFrames);
+    BufferSource buffer({drums.audio.data()}, static_cast<int64_t>(drums.audio.size()), fs,
+                        "drums");
+    const std::vector<float> expected = run(file, RunPrepare::engine, from_file);
+    EXPECT_GT(expected.size(), drums.audio.size());
+    EXPECT_EQ(run(buffer, RunPrepare::engine, from_buffer), expected);
+    prepared.prepare({.sample_rate_hz = fs, .max_block = kStreamBlockFrames, .channels = 1});
+    BufferSource again({drums.audio.data()}, static_cast<int64_t>(drums.audio.size()), fs, "drums");
+    EXPECT_EQ(run(again, RunPrepare::none, prepared), expected);
+
+    BufferSource other_rate({drums.audio.data()}, 100, 48000, "drums");
+    try {
+        run_source(other_rate, prepared, {}, RunTail::none, RunPrepare::none);
+        ADD_FAILURE() << "accepted a source at another rate than the engine's";
+    } catch (const std::runtime_error& e) {
+        EXPECT_THAT(e.what(),
+                    HasSubstr("drums: sample rate 48000 Hz, the engine runs at 44100 Hz"));
     }
 }
 

@@ -66,20 +66,16 @@ HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engi
     int audio_channels = 0;
     int64_t latency = 0, skipped = 0, aligned = 0;
     DelayLine audio_delay;  // the input, by the latency: in step with the vibration
-    std::vector<std::vector<float>> audio_block, silence;
-    std::vector<const float*> audio_in;
+    std::vector<std::vector<float>> audio_block;
     std::vector<float*> audio_out;
-    // The input (null: silence, for the tail) delayed into audio_block.
+    // The input (the tail's silence included) delayed into audio_block.
     const auto delay_audio = [&](const float* const* in, int frames) {
         for (int c = 0; c < audio_channels; ++c) {
-            if (audio_block[c].size() < static_cast<size_t>(frames)) {
+            if (audio_block[c].size() < static_cast<size_t>(frames))
                 audio_block[c].resize(static_cast<size_t>(frames));
-                silence[c].resize(static_cast<size_t>(frames));
-            }
-            audio_in[c] = in ? in[c] : silence[c].data();
             audio_out[c] = audio_block[c].data();
         }
-        audio_delay.process(audio_in.data(), audio_out.data(), frames);
+        audio_delay.process(in, audio_out.data(), frames);
     };
 
     const auto take_frames = [&] {
@@ -116,34 +112,21 @@ HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engi
         }
         aligned += count;
     };
-    std::optional<ChannelBlock> out;
-    RunSummary summary = stream_file(
-        input,
-        [&](const ProcessSpec& spec) {
-            engine.prepare(spec);
-            out.emplace(engine.actuators(), kStreamBlockFrames);
-            envelope.emplace(spec.sample_rate_hz);
-            audio_channels = spec.channels;
-            latency = engine.latency();
-            audio_block.assign(audio_channels, {});
-            silence.assign(audio_channels, {});
-            audio_in.resize(audio_channels);
-            audio_out.resize(audio_channels);
-            if (sink)
-                audio_delay.prepare(audio_channels, static_cast<int>(latency),
-                                    static_cast<int>(latency));
-        },
-        [&](const float* const* in, int frames) {
-            if (sink) delay_audio(in, frames);
-            engine.process(in, out->data(), frames);
-            on_output(out->data(), frames);
-        },
-        callbacks);
-    summary.tail_frames =
-        run_tail(engine, audio_channels, [&](const float* const* vibration, int frames) {
-            if (sink) delay_audio(nullptr, frames);
-            on_output(vibration, frames);
-        });
+    RunCallbacks run = callbacks;
+    run.on_start = [&](double sample_rate_hz, int channels) {
+        envelope.emplace(sample_rate_hz);
+        audio_channels = channels;
+        latency = engine.latency();
+        audio_block.assign(audio_channels, {});
+        audio_out.resize(audio_channels);
+        if (sink)
+            audio_delay.prepare(audio_channels, static_cast<int>(latency),
+                                static_cast<int>(latency));
+        if (callbacks.on_start) callbacks.on_start(sample_rate_hz, channels);
+    };
+    if (sink) run.on_input = delay_audio;
+    run.on_output = on_output;
+    const RunSummary summary = run_file(input, engine, run, RunTail::ring_out);
     take_frames();
     decisions.finish(
         [&](const DecidedOnset& onset) { onsets.emplace_back(onset, onset_carrier_hz); });

@@ -10,48 +10,49 @@
 
 #include "tactus/dsp/denormals.hpp"
 #include "tactus/dsp/downmix.hpp"
-#include "tactus/io/audio_reader.hpp"
 
 namespace tactus {
 namespace {
 constexpr int kBlock = kStreamBlockFrames;
 }  // namespace
 
-RunSummary stream_file(const std::filesystem::path& input,
-                       const std::function<void(const ProcessSpec& spec)>& prepare,
-                       const std::function<void(const float* const* channels, int frames)>& process,
-                       const RunCallbacks& callbacks) {
-    AudioReader reader(input);
+RunSummary stream_source(AudioSource& source, const PrepareRun& prepare, const ProcessRun& process,
+                         const RunCallbacks& callbacks) {
     try {
-        prepare({.sample_rate_hz = reader.sample_rate_hz(),
+        prepare({.sample_rate_hz = source.sample_rate_hz(),
                  .max_block = kStreamBlockFrames,
-                 .channels = reader.channels()});
+                 .channels = source.channels()});
     } catch (const std::invalid_argument& e) {
-        throw std::runtime_error(fmt::format("{}: {}", input.string(), e.what()));
+        throw std::runtime_error(fmt::format("{}: {}", source.name(), e.what()));
     }
-    if (callbacks.on_start) callbacks.on_start(reader.sample_rate_hz(), reader.channels());
-    ChannelBlock in(reader.channels(), kBlock);
-    RunSummary summary{reader.sample_rate_hz(), reader.channels(), 0};
-    const int64_t report_every = std::max<int64_t>(kBlock, reader.frames() / 100);
+    if (callbacks.on_start) callbacks.on_start(source.sample_rate_hz(), source.channels());
+    RunSummary summary{source.sample_rate_hz(), source.channels(), 0};
+    const int64_t report_every = std::max<int64_t>(kBlock, source.frames() / 100);
     int64_t next_report = 0;
     for (;;) {
-        const int got = reader.read(in.data(), kBlock);
+        const float* const* in = nullptr;
+        const int got = source.next(kBlock, in);
         if (got == 0) break;
-        process(in.data(), got);
+        process(in, got);
         summary.frames += got;
         if (callbacks.on_progress && summary.frames >= next_report) {
-            callbacks.on_progress(summary.frames, reader.frames());
+            callbacks.on_progress(summary.frames, source.frames());
             next_report = summary.frames + report_every;
         }
     }
     if (summary.frames == 0)
-        throw std::runtime_error(fmt::format("{}: no audio frames", input.string()));
+        throw std::runtime_error(fmt::format("{}: no audio frames", source.name()));
     if (callbacks.on_progress) callbacks.on_progress(summary.frames, summary.frames);
     return summary;
 }
 
-int64_t run_tail(Engine& engine, int input_channels,
-                 const std::function<void(const float* const* vibration, int frames)>& on_output) {
+RunSummary stream_file(const std::filesystem::path& input, const PrepareRun& prepare,
+                       const ProcessRun& process, const RunCallbacks& callbacks) {
+    FileSource source(input, kBlock);
+    return stream_source(source, prepare, process, callbacks);
+}
+
+int64_t run_tail(Engine& engine, int input_channels, const RunCallbacks& callbacks) {
     const double rate_hz = engine.sample_rate_hz();
     const int block = std::max(1, static_cast<int>(rate_hz * 0.005));  // 5 ms
     const int64_t silent_needed = static_cast<int64_t>(std::ceil(kTailSilenceS * rate_hz));
@@ -61,34 +62,47 @@ int64_t run_tail(Engine& engine, int input_channels,
     for (int c = 0; c < input_channels; ++c) std::fill_n(in[c], block, 0.0f);
     int64_t fed = 0, silent = 0;
     while (fed < max_frames && (fed < min_frames || silent < silent_needed)) {
+        if (callbacks.on_input) callbacks.on_input(in.data(), block);
         engine.process(in.data(), out.data(), block);
         fed += block;
         float peak = 0.0f;
         for (int c = 0; c < engine.actuators(); ++c)
             for (int i = 0; i < block; ++i) peak = std::max(peak, std::abs(out[c][i]));
         silent = peak < kTailSilenceLevel ? silent + block : 0;
-        if (on_output) on_output(out.data(), block);
+        if (callbacks.on_output) callbacks.on_output(out.data(), block);
     }
     return fed;
 }
 
-RunSummary run_file(const std::filesystem::path& input, Engine& engine,
-                    const RunCallbacks& callbacks, RunTail tail) {
+RunSummary run_source(AudioSource& source, Engine& engine, const RunCallbacks& callbacks,
+                      RunTail tail, RunPrepare prepare) {
     std::optional<ChannelBlock> out;
-    RunSummary summary = stream_file(
-        input,
+    RunSummary summary = stream_source(
+        source,
         [&](const ProcessSpec& spec) {
-            engine.prepare(spec);
+            if (prepare == RunPrepare::engine)
+                engine.prepare(spec);
+            else if (spec.sample_rate_hz != engine.sample_rate_hz())
+                throw std::invalid_argument(
+                    fmt::format("sample rate {:g} Hz, the engine runs at {:g} Hz",
+                                spec.sample_rate_hz, engine.sample_rate_hz()));
             out.emplace(engine.actuators(), kBlock);
         },
         [&](const float* const* in, int frames) {
+            if (callbacks.on_input) callbacks.on_input(in, frames);
             engine.process(in, out->data(), frames);
             if (callbacks.on_output) callbacks.on_output(out->data(), frames);
         },
         callbacks);
     if (tail == RunTail::ring_out)
-        summary.tail_frames = run_tail(engine, summary.input_channels, callbacks.on_output);
+        summary.tail_frames = run_tail(engine, summary.input_channels, callbacks);
     return summary;
+}
+
+RunSummary run_file(const std::filesystem::path& input, Engine& engine,
+                    const RunCallbacks& callbacks, RunTail tail) {
+    FileSource source(input, kBlock);
+    return run_source(source, engine, callbacks, tail);
 }
 
 void BlockAnalysis::prepare(const ProcessSpec& spec, const Settings& settings,
@@ -133,19 +147,26 @@ void BlockAnalysis::analyse(const float* mono, const float* power, int frames,
     }
 }
 
-RunSummary analyse_file(const std::filesystem::path& input, Analyzer& analyzer,
-                        const Settings& settings, FeatureSet features,
-                        const std::function<void(const Features&)>& on_frame,
-                        const RunCallbacks& callbacks) {
+RunSummary analyse_source(AudioSource& source, Analyzer& analyzer, const Settings& settings,
+                          FeatureSet features, const std::function<void(const Features&)>& on_frame,
+                          const RunCallbacks& callbacks) {
     BlockAnalysis analysis(analyzer);
-    const RunSummary summary = stream_file(
-        input, [&](const ProcessSpec& spec) { analysis.prepare(spec, settings, features); },
+    const RunSummary summary = stream_source(
+        source, [&](const ProcessSpec& spec) { analysis.prepare(spec, settings, features); },
         [&](const float* const* channels, int frames) {
             analysis.process(channels, frames, on_frame);
         },
         callbacks);
     analysis.finish(on_frame);
     return summary;
+}
+
+RunSummary analyse_file(const std::filesystem::path& input, Analyzer& analyzer,
+                        const Settings& settings, FeatureSet features,
+                        const std::function<void(const Features&)>& on_frame,
+                        const RunCallbacks& callbacks) {
+    FileSource source(input, kBlock);
+    return analyse_source(source, analyzer, settings, features, on_frame, callbacks);
 }
 
 }  // namespace tactus

@@ -1,5 +1,6 @@
-// Streams one audio file in fixed blocks, through an Engine or through the analysis alone: the
-// offline driver every command shares. Memory is constant in the file's length.
+// Streams one audio file, or audio in memory (audio_source.hpp), in fixed blocks, through an
+// Engine or through the analysis alone: the offline driver every command and the Python module
+// share. Memory is constant in a file's length.
 #pragma once
 
 #include <cstdint>
@@ -9,28 +10,32 @@
 #include "tactus/dsp/process_spec.hpp"
 #include "tactus/engine/channel_power.hpp"
 #include "tactus/engine/engine.hpp"
+#include "tactus/io/audio_source.hpp"
 
 namespace tactus {
 
-// Frames stream_file reads and hands on at a time (large reads: fewer system calls).
+// Frames stream_source reads and hands on at a time (large reads: fewer system calls).
 inline constexpr int kStreamBlockFrames = Engine::kMaxBlock;
 
 struct RunCallbacks {
     // Each block of vibration as it is produced, one buffer per actuator (may be empty;
-    // run_file only).
+    // run_source only).
     std::function<void(const float* const* vibration, int frames)> on_output{};
     // Frames done and the total (total <= 0 when unknown), about every 1 % of the file.
     std::function<void(int64_t done, int64_t total)> on_progress{};
     // Once the file is open and the engine or analyzer prepared, before any audio (may be
     // empty).
     std::function<void(double sample_rate_hz, int channels)> on_start{};
+    // Each block of input just before the engine takes it, the tail's silence included (may be
+    // empty; run_source only).
+    std::function<void(const float* const* input, int frames)> on_input{};
 };
 
 struct RunSummary {
     double sample_rate_hz = 0;
     int input_channels = 0;
     int64_t frames = 0;       // input frames
-    int64_t tail_frames = 0;  // silence fed after them (run_file with RunTail::ring_out)
+    int64_t tail_frames = 0;  // silence fed after them (run_source with RunTail::ring_out)
 };
 
 // What follows the input's last frame. ring_out feeds silence until the vibration has died
@@ -45,39 +50,52 @@ inline constexpr double kTailSilenceLevel = 1e-4;
 inline constexpr double kTailSilenceS = 0.05;
 inline constexpr double kMaxTailS = 10.0;
 
-// Feeds `engine` (prepared, input_channels wide) the tail, handing every block to on_output;
-// returns the frames fed.
-int64_t run_tail(Engine& engine, int input_channels,
-                 const std::function<void(const float* const* vibration, int frames)>& on_output);
+// Feeds `engine` (prepared, input_channels wide) the tail, handing every block to on_input and
+// on_output; returns the frames fed.
+int64_t run_tail(Engine& engine, int input_channels, const RunCallbacks& callbacks);
 
-// Opens `input`, calls prepare(its sample rate and channel count, blocks of
-// kStreamBlockFrames) (an std::invalid_argument becomes a std::runtime_error naming the file),
-// then process(channels, frames) for every block to the end; a file without frames is an
-// error. The driver under run_file and analyse_file.
-RunSummary stream_file(const std::filesystem::path& input,
-                       const std::function<void(const ProcessSpec& spec)>& prepare,
-                       const std::function<void(const float* const* channels, int frames)>& process,
-                       const RunCallbacks& callbacks = {});
+// Calls prepare(the source's sample rate and channel count, blocks of kStreamBlockFrames) (an
+// std::invalid_argument becomes a std::runtime_error naming the source), then
+// process(channels, frames) for every block to the end; a source without frames is an error.
+// The driver under run_source and analyse_source.
+using PrepareRun = std::function<void(const ProcessSpec& spec)>;
+using ProcessRun = std::function<void(const float* const* channels, int frames)>;
+RunSummary stream_source(AudioSource& source, const PrepareRun& prepare, const ProcessRun& process,
+                         const RunCallbacks& callbacks = {});
+// stream_source of the file `input`.
+RunSummary stream_file(const std::filesystem::path& input, const PrepareRun& prepare,
+                       const ProcessRun& process, const RunCallbacks& callbacks = {});
 
-// Opens `input`, prepares `engine` at the file's sample rate and channel count (the engine
-// downmixes), runs it to the end, then through the tail.
+// Whether run_source prepares the engine at the source's rate and channel count (a command's
+// engine), or takes it as prepared (a host's engine, running since before: its state kept; the
+// source must have the rate it was prepared at, and the channel count).
+enum class RunPrepare { engine, none };
+
+// Prepares `engine` at the source's sample rate and channel count (the engine downmixes),
+// runs it to the end, then through the tail.
+RunSummary run_source(AudioSource& source, Engine& engine, const RunCallbacks& callbacks = {},
+                      RunTail tail = RunTail::none, RunPrepare prepare = RunPrepare::engine);
+// run_source of the file `input`.
 RunSummary run_file(const std::filesystem::path& input, Engine& engine,
                     const RunCallbacks& callbacks = {}, RunTail tail = RunTail::none);
 
-// Opens `input`, prepares `analyzer` at the file's sample rate with `settings` and computes
-// `features` (and the onsets) of the channels' mean, and calls on_frame for every analysis
-// frame: the features of run_file's engine without its synthesis.
+// Prepares `analyzer` at the source's sample rate with `settings` and computes `features` (and
+// the onsets) of the channels' mean, and calls on_frame for every analysis frame: the features
+// of run_source's engine without its synthesis. Then BlockAnalysis::finish.
+RunSummary analyse_source(AudioSource& source, Analyzer& analyzer, const Settings& settings,
+                          FeatureSet features, const std::function<void(const Features&)>& on_frame,
+                          const RunCallbacks& callbacks = {});
+// analyse_source of the file `input`.
 RunSummary analyse_file(const std::filesystem::path& input, Analyzer& analyzer,
                         const Settings& settings, FeatureSet features,
                         const std::function<void(const Features&)>& on_frame,
                         const RunCallbacks& callbacks = {});
 
-// analyse_file's work on blocks of audio (also the Python module's onsets(), on audio in
-// memory): the channels read as the engine reads them, their mean analysed and their loudness
-// summed as BS.1770 sums it (engine/channel_power.hpp). prepare() allocates and throws
-// std::invalid_argument for a bad rate or setting; process() takes up to spec.max_block frames;
-// finish() feeds silence for parts.settle_ms and one hop, so that the last onset's part and
-// strength are decided, as a render's tail decides them.
+// analyse_source's work on blocks of audio: the channels read as the engine reads them, their mean
+// analysed and their loudness summed as BS.1770 sums it (engine/channel_power.hpp). prepare()
+// allocates and throws std::invalid_argument for a bad rate or setting; process() takes up to
+// spec.max_block frames; finish() feeds silence for parts.settle_ms and one hop, so that the last
+// onset's part and strength are decided, as a render's tail decides them.
 class BlockAnalysis {
   public:
     using OnFrame = std::function<void(const Features&)>;
