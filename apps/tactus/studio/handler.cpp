@@ -30,8 +30,13 @@ struct Refused : std::runtime_error {
     int status;
 };
 
+// Names and messages may hold any bytes (a file's name): invalid UTF-8 is replaced, not thrown.
+std::string text_of_json(const json& body) {
+    return body.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
 StudioResponse json_response(const json& body) {
-    return {.body = body.dump()};
+    return {.body = text_of_json(body)};
 }
 
 std::vector<std::string> preset_names() {
@@ -47,7 +52,7 @@ std::vector<std::string> actuator_names() {
 }
 
 std::string text_of(const json& value) {
-    return value.is_string() ? value.get<std::string>() : value.dump();
+    return value.is_string() ? value.get<std::string>() : text_of_json(value);
 }
 
 // A string field of the body; `fallback` when it is missing.
@@ -246,7 +251,7 @@ StudioResponse route(StudioSession& session, const StudioRequest& request) {
 }
 
 StudioResponse error(int status, const std::string& what) {
-    return {.status = status, .body = json{{"error", what}}.dump()};
+    return {.status = status, .body = text_of_json(json{{"error", what}})};
 }
 
 }  // namespace
