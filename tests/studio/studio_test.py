@@ -304,6 +304,16 @@ def test_answers_are_not_compressed(server):
     assert json.loads(body)["frames"] > 0
 
 
+def test_port_in_use(server, clip):
+    """A second studio on the first one's port is refused, not let in beside it."""
+    port = urllib.parse.urlsplit(server).port
+    run = subprocess.run([TACTUS, "studio", clip, "--port", str(port), "--no-browser"],
+                         capture_output=True, text=True, timeout=30)
+    assert run.returncode == 1 and run.stdout == ""
+    assert run.stderr == (f"tactus: error: 127.0.0.1:{port}: cannot listen there (address in use "
+                          "or not this machine's)\n"), run.stderr
+
+
 def test_command_line_errors(tmp_path):
     run = subprocess.run([TACTUS, "studio", tmp_path / "missing.wav", "--no-browser"],
                          capture_output=True, text=True, timeout=30)

@@ -4,6 +4,7 @@
 #include <httplib.h>
 #include <pthread.h>
 #include <signal.h>
+#include <sys/socket.h>
 
 #include <thread>
 
@@ -32,6 +33,12 @@ void serve_studio(StudioSession& session, const std::string& host, int port,
     pthread_sigmask(SIG_BLOCK, &signals, nullptr);
 
     httplib::Server server;
+    // SO_REUSEADDR only: cpp-httplib's default SO_REUSEPORT would let a second server (another
+    // session) bind the same port and take half of this one's connections.
+    server.set_socket_options([](int socket) {
+        const int yes = 1;
+        setsockopt(socket, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+    });
     server.set_payload_max_length(StudioSession::kMaxUploadBytes + (1u << 20));
     const auto handler = [&session](const httplib::Request& req, httplib::Response& res) {
         const StudioResponse out = handle_request(session, request_of(req));
