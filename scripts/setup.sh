@@ -15,6 +15,7 @@ packages=(
   vamp-plugin-sdk vamp-examples
   libjs-dygraphs chromium python3-pil
   librtaudio-dev liblo-dev libjack-jackd2-dev libasound2-dev
+  libcpp-httplib-dev chromium-driver python3-selenium
 )
 
 missing=()

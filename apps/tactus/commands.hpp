@@ -15,6 +15,7 @@ void add_simulate(CLI::App& app);
 void add_export(CLI::App& app);
 void add_actuators(CLI::App& app);
 void add_report(CLI::App& app);
+void add_studio(CLI::App& app);     // studio/, with cpp-httplib
 void add_live(CLI::App& app);       // live.cpp, with the live front end (live/)
 void add_devices(CLI::App& app);    // devices.cpp, with it
 void add_calibrate(CLI::App& app);  // calibrate.cpp, with it

@@ -3,6 +3,8 @@
 // (Android VibrationEffect.createWaveform), .ogg (the sound with the vibration as its last
 // channels and ANDROID_HAPTIC=<n>, for Android's haptic-coupled playback). One render feeds
 // every output (src/tactus/export), normalised as --normalise and --gain-db say.
+#include "export.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -29,18 +31,7 @@ namespace {
 // Android plays at most two haptic channels (AudioFormat haptic channel masks A and B).
 constexpr int kMaxAndroidHapticChannels = 2;
 
-struct ExportOptions {
-    std::string input, actuator;
-    std::vector<std::string> outputs;  // -o, repeatable: one input's outputs
-    int channels = 1;
-    bool force = false;
-    std::string normalise = Normalisation{}.name();
-    double gain_db = 0;
-    PipelineOptions pipeline;
-    // A batch (batch_plan.hpp), and with -O the formats each input is written in.
-    BatchOptions batch;
-    std::vector<std::string> formats{".ahap", ".haptic", ".android.json", ".ogg"};
-};
+}  // namespace
 
 void export_files(const ExportOptions& o) {
     const Settings settings = o.pipeline.resolve();
@@ -120,8 +111,6 @@ void export_files(const ExportOptions& o) {
                                                             engine.sample_rate_hz(), o.channels)
                                               : std::string()));
 }
-
-}  // namespace
 
 // One input to -o (each of its outputs), or every input (folders walked) to
 // DIR/.../<name><format> for each of --formats: the one batch path, one render per input.

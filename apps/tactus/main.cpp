@@ -25,6 +25,9 @@ int main(int argc, char** argv) {
     tactus::cli::add_export(app);
     tactus::cli::add_actuators(app);
     tactus::cli::add_report(app);
+#ifdef TACTUS_STUDIO
+    tactus::cli::add_studio(app);
+#endif
 #ifdef TACTUS_LIVE
     tactus::cli::add_live(app);
     tactus::cli::add_devices(app);

@@ -29,4 +29,10 @@ RenderInfo PipelineOptions::render_info(const std::string& input,
             .version = TACTUS_VERSION};
 }
 
+std::string PipelineOptions::description() const {
+    std::string text = "from " + preset;
+    for (const auto& a : assignments) text += " " + a;
+    return text;
+}
+
 }  // namespace tactus::cli

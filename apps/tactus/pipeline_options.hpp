@@ -20,6 +20,8 @@ struct PipelineOptions {
     Settings resolve() const;  // throws with a one-line message
     // How an output of `input` was made with these options, for its metadata.
     RenderInfo render_info(const std::string& input, const std::string& actuator) const;
+    // A saved preset's description: "from <preset> key=value ...".
+    std::string description() const;
 };
 
 }  // namespace tactus::cli

@@ -63,11 +63,8 @@ void save_preset(const Options& o) {
     const std::filesystem::path source = resolve_preset(o.pipeline.preset);
     if (!is_stdout(o.save)) check_output(source, o.save, o.force);
     const Settings settings = o.pipeline.resolve();
-    std::string description = o.description;
-    if (description.empty()) {
-        description = "from " + o.pipeline.preset;
-        for (const auto& a : o.pipeline.assignments) description += " " + a;
-    }
+    const std::string description =
+        o.description.empty() ? o.pipeline.description() : o.description;
     TextOutput out(o.save);
     out.stream() << preset_text(settings, description);
     out.commit();

@@ -1,0 +1,136 @@
+#include "report_render.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tactus/actuator/drive_meter.hpp"
+#include "tactus/dsp/downmix.hpp"
+#include "tactus/export/haptic_track.hpp"
+#include "tactus/export/thin_rows.hpp"
+#include "tactus/io/actuator_file.hpp"
+
+namespace tactus::cli {
+namespace {
+
+constexpr size_t kMaxPlotRows = 4000;  // per plot: enough for a screen, light to zoom
+
+// Min and max of a signal per bucket, at most kMaxPlotRows buckets: the waveform plots.
+std::vector<std::vector<double>> waveform_rows(const std::vector<float>& samples, double rate) {
+    const size_t bucket = std::max<size_t>(1, (samples.size() + kMaxPlotRows - 1) / kMaxPlotRows);
+    std::vector<std::vector<double>> out;
+    for (size_t i = 0; i < samples.size(); i += bucket) {
+        const auto end = std::min(samples.size(), i + bucket);
+        const auto [lo, hi] = std::minmax_element(samples.begin() + static_cast<ptrdiff_t>(i),
+                                                  samples.begin() + static_cast<ptrdiff_t>(end));
+        out.push_back({static_cast<double>(i) / rate, *lo, *hi});
+    }
+    return out;
+}
+
+// At most about kMaxPlotRows, every series' extremes kept.
+std::vector<std::vector<double>> thinned(const std::vector<std::vector<double>>& rows) {
+    return thin_rows(rows, kMaxPlotRows);
+}
+
+ReportPlot plot(std::string id, std::string title, std::string y_label,
+                std::vector<std::string> labels, std::vector<std::vector<double>> rows) {
+    ReportPlot p;
+    p.id = std::move(id), p.title = std::move(title), p.y_label = std::move(y_label);
+    p.labels = std::move(labels), p.rows = std::move(rows);
+    return p;
+}
+
+}  // namespace
+
+ReportRender render_report(const std::string& input, const Settings& settings,
+                           const std::optional<ActuatorProfile>& actuator,
+                           const RunCallbacks& callbacks) {
+    const ActuatorProfile metered =
+        actuator ? *actuator : load_actuator(resolve_actuator(kDefaultActuator));
+    ReportRender out;
+    out.metered_name = metered.name;
+    Engine engine(settings);
+    engine.set_actuator(actuator);
+    DriveMeter meter;
+    perception::MeterSummariser summariser;
+    std::vector<std::vector<double>> features, program, levels;
+    const auto on_reading = [&](const perception::MeterReading& r) {
+        summariser.add(r);
+        levels.push_back(
+            {r.time_s, r.level_db[0], r.level_db[1], r.level_db[2], r.level_db[3], r.combined_db});
+    };
+    bool started = false;
+    const AlignedSink sink = [&](const float* const* audio, int audio_channels,
+                                 const float* const* vib, int, int frames) {
+        if (!started) {
+            started = true;
+            meter.prepare(engine.sample_rate_hz(), metered,
+                          settings[P::perception_contact_area_cm2]);
+        }
+        const size_t at = out.sound.size();
+        out.sound.resize(at + static_cast<size_t>(frames));
+        downmix_mean(audio, audio_channels, 0, out.sound.data() + at, frames);  // as heard
+        out.vibration.insert(out.vibration.end(), vib[0], vib[0] + frames);
+        meter.write(vib[0], frames, on_reading);
+    };
+    const FrameSink on_frame = [&](const AnalysisFrame& f) {
+        const double t = static_cast<double>(f.features.frame_end_sample) / engine.sample_rate_hz();
+        const bool pitched = f.features.pitch_confidence > 0 && f.features.pitch_hz > 0;
+        features.push_back({t, f.features.loudness_db, f.features.brightness_hz,
+                            f.features.noisiness, pitched ? f.features.pitch_hz : NAN});
+        program.push_back({t, f.control.frequency_hz, f.control.amplitude});
+    };
+    const HapticTrack track = render_haptic_track(input, engine, sink, callbacks, on_frame);
+    meter.finish(on_reading);
+    out.summary = summariser.summary();
+    out.sample_rate_hz = engine.sample_rate_hz();
+    out.latency_frames = engine.latency();
+    const double rate = out.sample_rate_hz;
+    // The meter's last readings cover its windows past the end: the plots stop at the end.
+    const double end_s = static_cast<double>(out.sound.size()) / rate;
+    std::erase_if(levels, [&](const std::vector<double>& r) { return r[0] > end_s; });
+    for (const auto& onset : track.onsets) out.onsets.push_back({onset.time_s, onset.part});
+
+    std::vector<std::vector<double>> felt;
+    for (size_t i = 0; i < track.intensity.size(); ++i)
+        felt.push_back({static_cast<double>(i) * HapticTrack::kStepS, track.intensity[i]});
+    const auto column = [&](size_t c) {
+        std::vector<std::vector<double>> rows;
+        for (const auto& f : features) rows.push_back({f[0], f[c]});
+        return thinned(rows);
+    };
+    ReportPlot waveform = plot("waveform", "Sound, with its onsets", "full scale", {"sound"},
+                               waveform_rows(out.sound, rate));
+    waveform.onsets = waveform.band = true;
+    ReportPlot loudness = plot("loudness", "Loudness", "dB LKFS", {"loudness_db"}, column(1));
+    loudness.onsets = true;
+    ReportPlot brightness =
+        plot("brightness", "Brightness (spectral centroid)", "Hz", {"brightness_hz"}, column(2));
+    brightness.log_y = true;
+    ReportPlot pitch = plot("pitch", "Pitch (where found)", "Hz", {"pitch_hz"}, column(4));
+    pitch.log_y = pitch.points = true;
+    ReportPlot vibration_program = plot("program", "Vibration program: frequency and amplitude",
+                                        "Hz", {"frequency_hz", "amplitude"}, thinned(program));
+    vibration_program.right_axis = {"amplitude"};
+    ReportPlot drive = plot("vibration", "Vibration (the actuator's drive)", "full scale",
+                            {"vibration"}, waveform_rows(out.vibration, rate));
+    drive.onsets = drive.band = true;
+    ReportPlot felt_plot =
+        plot("felt", "Felt envelope (P-weighted; 1: its peak)", "0 ... 1", {"felt"}, thinned(felt));
+    felt_plot.onsets = true;
+    out.plots = {
+        waveform,
+        loudness,
+        brightness,
+        plot("noisiness", "Noisiness (spectral flatness: 0 tonal, 1 noise)", "flatness",
+             {"noisiness"}, column(3)),
+        pitch,
+        vibration_program,
+        drive,
+        felt_plot,
+        plot("sensation", "Sensation level per channel of touch (through " + metered.name + ")",
+             "dB SL", {"P", "NPI", "NPII", "NPIII", "combined"}, thinned(levels))};
+    return out;
+}
+
+}  // namespace tactus::cli

@@ -1,0 +1,39 @@
+// The render behind `tactus report` and `tactus studio`: one pass of the engine over a file
+// (export/haptic_track.hpp's render_haptic_track, as `tactus export` runs it) that gathers the
+// report's plots (waveform with onsets, features, vibration program, vibration, felt envelope,
+// sensation per channel of touch) and the sound and the vibration lined up in time. Any thread;
+// one call per Engine.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tactus/actuator/profile.hpp"
+#include "tactus/export/html_report.hpp"
+#include "tactus/io/run_file.hpp"
+#include "tactus/params/params.hpp"
+#include "tactus/perception/meter.hpp"
+
+namespace tactus::cli {
+
+struct ReportRender {
+    std::vector<ReportPlot> plots;    // at most about kMaxPlotRows rows each
+    std::vector<ReportOnset> onsets;  // with their drum parts
+    // The channels' mean and the first actuator's drive, lined up: vibration[k] is what
+    // `tactus render` writes at latency_frames + k (the engine's latency taken off).
+    std::vector<float> sound, vibration;
+    double sample_rate_hz = 0;
+    int64_t latency_frames = 0;
+    perception::MeterSummary summary;  // metered through `metered_name`
+    std::string metered_name;
+};
+
+// Renders `input` with `settings` for `actuator` (none: no compensation, metered through the
+// default actuator); throws std::runtime_error with a one-line message naming the file.
+ReportRender render_report(const std::string& input, const Settings& settings,
+                           const std::optional<ActuatorProfile>& actuator,
+                           const RunCallbacks& callbacks = {});
+
+}  // namespace tactus::cli
