@@ -14,7 +14,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     tactus::Engine engine;  // not prepared: changes apply at once, on this thread
     engine.set_actuators(std::vector<tactus::ActuatorOutput>(2));
-    tactus::live::LiveControl control(engine, tactus::Settings{}, {});
+    tactus::live::LiveControl control(engine, {});
     const std::vector<std::vector<std::byte>> packets{
         {reinterpret_cast<const std::byte*>(data),
          reinterpret_cast<const std::byte*>(data) + size}};

@@ -83,7 +83,10 @@ class Object {
     t_canvas* canvas_;
     t_clock* clock_;
     Options options_;
-    Settings settings_;  // what the engine plays, or will once prepared
+    // What the engine plays, or will once prepared. The object's own state, not a mirror of the
+    // engine's: there is no engine while DSP is off, and each prepare makes a new one from it
+    // (Pd calls everything here on its one scheduler thread).
+    Settings settings_;
     std::vector<ActuatorOutput> outputs_;
     std::unique_ptr<Engine> engine_;
     bool stale_ = true;  // settings or actuators changed while DSP was off: prepare again

@@ -264,6 +264,10 @@ class TactusPlugin : public Plugin {
         tactus::Settings settings;
     };
     std::vector<Program> programs_;  // kFactoryPresets, read; the defaults first
+    // The values the host asked for, apart from the engine's settings: hosts read and write
+    // them on their audio thread (getParameterValue, setParameterValue), which must not take
+    // the engine's control mutex, and they are the state saved even before the control thread
+    // has handed them to the engine.
     tp::HostParameters host_;
     std::atomic<bool> bypassed_{false};
     tactus::Engine engine_;

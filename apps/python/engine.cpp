@@ -22,6 +22,13 @@ namespace py = pybind11;
 namespace tactus::python {
 namespace {
 
+// A parameter's value as Python shows it: a choice's name, an int, or a float.
+py::object as_python(const ParamSpec& s, double value) {
+    if (!s.choices.empty()) return py::str(std::string(s.choices[static_cast<size_t>(value)]));
+    if (s.type == ParamType::integer) return py::int_(static_cast<long long>(value));
+    return py::float_(value);
+}
+
 class PyEngine {
   public:
     // `channels`: the input's channel count, or None: the first block's (1 until then).
@@ -116,17 +123,14 @@ class PyEngine {
         }
     }
 
-    py::object get(P id) const {
-        const ParamSpec& s = spec(id);
-        const double value = engine_->settings()[id];
-        if (!s.choices.empty()) return py::str(std::string(s.choices[static_cast<size_t>(value)]));
-        if (s.type == ParamType::integer) return py::int_(static_cast<long long>(value));
-        return py::float_(value);
-    }
+    py::object get(P id) const { return as_python(spec(id), engine_->settings()[id]); }
 
+    // One snapshot for every key: a whole set of settings even while another thread sets.
     py::dict settings() const {
+        const Settings now = engine_->settings();
         py::dict out;
-        for (const ParamSpec& s : param_table()) out[py::str(std::string(s.key))] = get(s.param);
+        for (const ParamSpec& s : param_table())
+            out[py::str(std::string(s.key))] = as_python(s, now[s.param]);
         return out;
     }
 

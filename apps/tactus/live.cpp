@@ -176,7 +176,7 @@ void live_run(const LiveOptions& o) {
     live::LiveCallback callback(engine, player ? &*player : nullptr, routing,
                                 o.sync ? onset_to_pulse.samples() : live::kNoSync);
 
-    live::LiveControl control(engine, settings, o.pipeline.assignments);
+    live::LiveControl control(engine, o.pipeline.assignments);
     const auto report = [&console](const std::string& line) { console.message(line); };
     std::optional<live::OscServer> server;
     if (osc_in) server.emplace(*osc_in, control, report);

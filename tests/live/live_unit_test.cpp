@@ -147,7 +147,7 @@ TEST(OscPacket, MessagesAndBundles) {
 TEST(OscServerHandling, CoalescesABurstAndRefusesTheBad) {
     Engine engine;
     engine.set_actuators(std::vector<ActuatorOutput>(2));
-    LiveControl control(engine, Settings{}, {"post.release_ms=100"});
+    LiveControl control(engine, {"post.release_ms=100"});
     std::vector<std::string> refused;
     const std::vector<std::vector<std::byte>> burst = {
         packet("/tactus/post.drive_db", "f", 3.0),
@@ -176,7 +176,7 @@ TEST(OscServerHandling, CoalescesABurstAndRefusesTheBad) {
 // value kept); a preset applied is acknowledged with its name; nothing else is answered.
 TEST(OscServerHandling, AnswersWithTheValuesInForce) {
     Engine engine;
-    LiveControl control(engine, Settings{}, {});
+    LiveControl control(engine, {});
     const std::vector<std::vector<std::byte>> burst = {
         packet("/tactus/post.drive_db", ""),
         packet("/tactus/post.drive_db", "f", 3.0),
@@ -234,7 +234,7 @@ TEST_F(PresetWatching, ReloadsAndRefuses) {
     };
     save("[envelope]\ndecay_ms = 200\n");
     Engine engine;
-    LiveControl control(engine, Settings{}, {"post.release_ms=100"});
+    LiveControl control(engine, {"post.release_ms=100"});
     std::mutex mutex;
     std::vector<std::string> lines;
     PresetWatcher watcher(preset, control, [&](const std::string& line) {

@@ -88,7 +88,7 @@ TEST_F(LiveCallbackRealTime, PlayerWithOscTrafficAndPresetReloads) {
     live::LiveCallback callback(engine, &player, routing, /*sync_delay_samples=*/150);
     callback.begin();
 
-    live::LiveControl control(engine, start, {});
+    live::LiveControl control(engine, {});
     std::vector<std::string> refused;
     live::OscServer server({"127.0.0.1", 0}, control);
     lo_address to = lo_address_new("127.0.0.1", std::to_string(server.port()).c_str());
@@ -143,7 +143,7 @@ TEST(LiveCallbackInput, ControlThreadChanges) {
         {.device_inputs = 2, .device_outputs = 1, .actuator_channels = {0}, .sound_channels = {}},
         0);
     callback.begin();
-    live::LiveControl control(engine, Settings{}, {});
+    live::LiveControl control(engine, {});
     const auto turned = test::turned_live_values(Settings{});
     std::atomic<bool> done{false};
     std::thread turner([&] {

@@ -15,8 +15,8 @@ constexpr auto kQueuePoll = std::chrono::milliseconds(1);
 
 }  // namespace
 
-LiveControl::LiveControl(Engine& engine, Settings running, std::vector<std::string> assignments)
-    : engine_(engine), running_(running), assignments_(std::move(assignments)) {}
+LiveControl::LiveControl(Engine& engine, std::vector<std::string> assignments)
+    : engine_(engine), assignments_(std::move(assignments)) {}
 
 // Engine::set and friends throw std::runtime_error only when the queue to the audio thread is
 // full (validation errors are std::invalid_argument): wait for the audio thread to take some.
@@ -37,23 +37,14 @@ void LiveControl::retry_while_full(F&& change) {
 }
 
 void LiveControl::set(P id, double value) {
-    const std::lock_guard lock(mutex_);
-    Settings next = running_;
-    next.set(id, value);
-    apply(next);
-}
-
-void LiveControl::apply(const Settings& next) {
-    retry_while_full([&] { engine_.set(next); });
-    running_ = next;
+    retry_while_full([&] { engine_.set(id, value); });
 }
 
 void LiveControl::load_preset_file(const std::filesystem::path& path) {
     Settings next;
     apply_preset_file(next, path);  // everything validated before anything applies
     for (const auto& a : assignments_) apply_assignment(next, a);
-    const std::lock_guard lock(mutex_);
-    apply(next);
+    retry_while_full([&] { engine_.set(next); });
 }
 
 void LiveControl::load_preset(const std::string& name_or_path) {
@@ -74,11 +65,6 @@ void LiveControl::run(const OscCommand& command) {
         amplitude = now[P::amplitude_out_max];
     }
     retry_while_full([&] { engine_.trigger(frequency_hz, amplitude); });
-}
-
-Settings LiveControl::settings() const {
-    const std::lock_guard lock(mutex_);
-    return running_;
 }
 
 }  // namespace tactus::live

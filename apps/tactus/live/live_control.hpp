@@ -1,12 +1,13 @@
 // The control side of `tactus live`: the one door through which the OSC server and the preset
-// watcher (each on its own thread) change the running engine. It keeps the settings it applied,
-// turns a preset into the parameters that differ from them, and hands each to Engine::set (live
-// ones glide, structural ones are swapped in with a crossfade: engine.hpp). When the engine's
-// change queue is full (Engine::kChangeCapacity) it waits for the audio thread to take some.
+// watcher (each on its own thread) change the running engine. It keeps no settings of its own:
+// the engine's are the running ones (Engine::settings_snapshot, thread-safe), a parameter is
+// set there in one step, and a preset (with the command line's --set on top) is handed to
+// Engine::set whole, which applies what differs (live ones glide, structural ones are swapped in
+// with a crossfade: engine.hpp). When the engine's change queue is full
+// (Engine::kChangeCapacity) it waits for the audio thread to take some.
 #pragma once
 
 #include <filesystem>
-#include <mutex>
 #include <string>
 #include <vector>
 
@@ -17,9 +18,8 @@ namespace tactus::live {
 
 class LiveControl {
   public:
-    // `running`: the settings the engine was made with; `assignments`: the command line's --set,
-    // kept on top of any preset loaded later.
-    LiveControl(Engine& engine, Settings running, std::vector<std::string> assignments);
+    // `assignments`: the command line's --set, kept on top of any preset loaded later.
+    LiveControl(Engine& engine, std::vector<std::string> assignments);
 
     // Control threads. Each throws (std::invalid_argument, std::runtime_error) with one line
     // and then has changed nothing (a preset: nothing from the parameter that failed on).
@@ -29,18 +29,16 @@ class LiveControl {
     void load_preset(const std::string& name_or_path);
     void load_preset_file(const std::filesystem::path& path);
     void run(const OscCommand& command);
-    Settings settings() const;
+    // Any control thread: the engine's settings, whole.
+    Settings settings() const { return engine_.settings(); }
     int actuators() const { return engine_.actuators(); }
 
   private:
     template <typename F>
     void retry_while_full(F&& change);
-    void apply(const Settings& next);
 
     Engine& engine_;
-    mutable std::mutex mutex_;  // control threads among themselves
-    Settings running_;
-    std::vector<std::string> assignments_;
+    const std::vector<std::string> assignments_;
 };
 
 }  // namespace tactus::live

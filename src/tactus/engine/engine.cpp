@@ -47,7 +47,12 @@ void Engine::set_actuators(std::vector<ActuatorOutput> outputs) {
     check_range("actuator count", static_cast<int>(outputs.size()), 1, kMaxActuators);
     for (size_t k = 0; k < outputs.size(); ++k) outputs[k].check(static_cast<int>(k));
     // The first actuator's capability decides whether the pressure is synthesised at all.
-    if (outputs.front().profile) settings_.set(P::actuator_dc, outputs.front().profile->dc);
+    if (outputs.front().profile) {
+        Settings next = settings_;
+        next.set(P::actuator_dc, outputs.front().profile->dc);
+        if (next != settings_) ++version_;
+        settings_ = next;
+    }
     outputs_ = std::move(outputs);
 }
 
@@ -100,8 +105,8 @@ void Engine::prepare(const ProcessSpec& spec) {
         std::max<int>(1, static_cast<int>(ms_to_samples(kCrossfadeMs, spec.sample_rate_hz)));
     summed_loudness_ = spec.channels > 1 && input_channel_ < 0;
     if (summed_loudness_) channel_power_.prepare(spec);
-    ring_.prepare(summed_loudness_ ? 2 : 1,
-                  ms_to_samples(2e3 * kPrimeSeconds, spec.sample_rate_hz));
+    ring_.prepare(summed_loudness_ ? 2 : 1, ms_to_samples(2e3 * kPrimeSeconds, spec.sample_rate_hz),
+                  spec.max_block);
     power_.assign(summed_loudness_ ? block : 0, 0.0f);
     power_catch_up_.assign(power_.size(), 0.0f);
     prepared_ = true;
@@ -157,33 +162,45 @@ void Engine::set(P id, double value) {
     const std::lock_guard lock(control_);
     Settings next = settings_;
     next.set(id, value);  // throws std::invalid_argument naming the key
-    apply(next);
+    commit(next);
 }
 
 void Engine::set(const Settings& next) {
     const std::lock_guard lock(control_);
-    apply(next);
+    commit(next);
+}
+
+SettingsSnapshot Engine::settings_snapshot() const {
+    const std::lock_guard lock(control_);
+    return {.settings = settings_, .version = version_};
+}
+
+// control_ held: applies, and gives the settings a new version when they changed.
+void Engine::commit(const Settings& next) {
+    if (next == settings_) return;
+    apply(next);  // changes settings_ wholly or, when it throws, not at all
+    ++version_;
 }
 
 // control_ held. A value the engine already has changes nothing (a restored state or a program
 // sets every parameter: a structural one would otherwise build a pipeline for nothing); any
-// structural difference builds one pipeline with all of them; live ones go one by one, each
-// recorded as it is sent, so a full queue leaves settings_ saying what the audio thread got.
+// structural difference builds one pipeline with all of them; live ones go one by one. Nothing
+// is sent unless the queue has room for every change (only control threads, one at a time,
+// fill it; the audio thread only empties it), so a full queue throws having changed nothing and
+// settings_ always says what the audio thread got.
 // The running pipeline has the settings fitted to the actuator (actuator/fit.hpp): what is
 // compared and sent is what the fit makes of them (a parameter and those derived from it).
 void Engine::apply(const Settings& next) {
-    if (next == settings_) return;
     if (!prepared_) {
         settings_ = next;
         return;
     }
     free_retired();
     const Settings was = fitted(settings_), now = fitted(next);
-    bool rebuild = flutter_enabled(now) != flutter_enabled(was) ||
-                   pressure_enabled(now) != pressure_enabled(was);
-    for (const ParamSpec& s : param_table())
-        rebuild = rebuild || (s.change == ParamChange::structural && now[s.param] != was[s.param]);
-    if (rebuild) {
+    const int needed = changes_needed(was, now);  // -1: a new pipeline, one change
+    if (static_cast<int>(changes_.size_approx()) + std::max(needed, 1) > kChangeCapacity)
+        throw std::runtime_error("engine: too many changes waiting for the audio thread");
+    if (needed < 0) {
         swap_in(next);
         settings_ = next;
         return;
@@ -199,11 +216,26 @@ void Engine::apply(const Settings& next) {
                 change.kind = Change::Kind::flattening;
                 change.design = flattening_design(spec_.sample_rate_hz / rate_divisor_, designed);
             }
-            send(change);
+            send(change);  // cannot fail: room was checked
             sent.assign(id, now[id]);
         }
-        settings_.assign(id, next[id]);
     }
+    settings_ = next;
+}
+
+// The live changes from `was` to `now` (fitted settings), or -1 when a structural difference
+// builds a new pipeline (one change).
+int Engine::changes_needed(const Settings& was, const Settings& now) const {
+    if (flutter_enabled(now) != flutter_enabled(was) ||
+        pressure_enabled(now) != pressure_enabled(was))
+        return -1;
+    int live = 0;
+    for (const ParamSpec& s : param_table()) {
+        if (now[s.param] == was[s.param]) continue;
+        if (s.change == ParamChange::structural) return -1;
+        ++live;
+    }
+    return live;
 }
 
 // A pipeline for `settings`, primed with the input the running one has heard, handed to the

@@ -21,7 +21,8 @@
 // profile, all reading one analysis and one synthesis (Pipeline).
 //
 // Threads (docs/architecture.md, "Threads and queues"):
-//   control threads  set(), set_actuator_gain_db(), inject(), trigger(), set_program_source():
+//   control threads  set(), set_actuator_gain_db(), inject(), trigger(), set_program_source(),
+//                    settings_snapshot(), settings():
 //                    thread-safe among themselves (a mutex no audio thread takes); they validate,
 //                    then hand the change to the audio thread through a lock-free queue
 //                    (moodycamel::ReaderWriterQueue). A live parameter glides over its smoothing
@@ -40,8 +41,6 @@
 // outside, or both (ProgramSource), drive the synthesis.
 #pragma once
 
-#include <readerwriterqueue/readerwriterqueue.h>
-
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -54,6 +53,8 @@
 #include "tactus/engine/input_ring.hpp"
 #include "tactus/engine/output_trim.hpp"
 #include "tactus/engine/pipeline.hpp"
+#include "tactus/engine/settings_snapshot.hpp"
+#include "tactus/engine/spsc_queue.hpp"
 #include "tactus/params/params.hpp"
 
 namespace tactus {
@@ -118,7 +119,8 @@ class Engine {
     // ---- control threads ----
     // Validates (std::invalid_argument naming the key) and applies: before prepare to the
     // settings; after, through the audio thread (live: gliding; structural: swapped in). A value
-    // it already has changes nothing.
+    // it already has changes nothing. When the queue to the audio thread has no room for every
+    // change it makes, throws std::runtime_error having changed nothing.
     void set(P id, double value);
     // Every parameter at once (a preset, a restored state): the structural ones that differ
     // build one new pipeline between them, not one each.
@@ -133,6 +135,11 @@ class Engine {
     void set_program_source(ProgramSource source);
     // One reader thread: the oldest frame not yet read, if any.
     bool pop_frame(AnalysisFrame& frame);
+    // The settings as last set, whole, and their version (settings_snapshot.hpp). Takes the
+    // control mutex: never from the audio thread.
+    SettingsSnapshot settings_snapshot() const;
+    // settings_snapshot().settings: a copy, safe while another control thread calls set().
+    Settings settings() const { return settings_snapshot().settings; }
 
     // ---- any thread, after prepare ----
     // The limiter's look-ahead plus the upsampler's delay, in samples at the input rate (each
@@ -145,8 +152,6 @@ class Engine {
     // Input samples per internal (synthesis and post-processing) sample.
     int rate_divisor() const { return rate_divisor_; }
     int actuators() const { return static_cast<int>(outputs_.size()); }
-    // The settings as last set by a control thread.
-    const Settings& settings() const { return settings_; }
     double sample_rate_hz() const { return prepared_ ? spec_.sample_rate_hz : 0.0; }
     // Setup thread: the running pipeline's post chain for an actuator.
     const PostChain& post(int actuator = 0) const { return active_->post(actuator); }
@@ -182,7 +187,9 @@ class Engine {
 
     Settings fitted(const Settings& settings) const;
     std::unique_ptr<Pipeline> make_pipeline(const Settings& settings, int64_t origin) const;
-    void apply(const Settings& next);        // control thread, control_ held
+    void commit(const Settings& next);  // control thread, control_ held
+    void apply(const Settings& next);   // control thread, control_ held
+    int changes_needed(const Settings& was, const Settings& now) const;
     void swap_in(const Settings& settings);  // control thread
     void send(const Change& change);
     void free_retired();  // control thread
@@ -193,14 +200,15 @@ class Engine {
     const float* downmix(const float* const* in, int offset, int count) noexcept;
     void retire(Pipeline* pipeline) noexcept;
 
-    Settings settings_;  // control side
+    Settings settings_;     // control side, control_ held
+    uint64_t version_ = 0;  // settings_'s, control_ held
     std::vector<ActuatorOutput> outputs_;
     ProcessSpec spec_;
     int input_channel_ = -1;
     int rate_divisor_ = 1;
     bool prepared_ = false;
     ProgramSource source_ = ProgramSource::analysis;  // control side
-    std::mutex control_;  // control threads among themselves, never the audio thread
+    mutable std::mutex control_;  // control threads among themselves, never the audio thread
     std::atomic<int> latency_{0};
     std::atomic<double> hop_samples_{0};
 

@@ -2,10 +2,11 @@
 
 namespace tactus {
 
-void InputRing::prepare(int lanes, int64_t capacity) {
+void InputRing::prepare(int lanes, int64_t capacity, int max_write) {
     samples_ = std::make_unique<std::atomic<float>[]>(static_cast<size_t>(lanes * capacity));
     lanes_ = lanes;
     capacity_ = capacity;
+    max_write_ = max_write;
     reset();
 }
 
@@ -20,7 +21,7 @@ void InputRing::write(const float* const* lanes, int count) noexcept {
         std::atomic<float>* lane = samples_.get() + l * capacity_;
         int64_t slot = start % capacity_;
         for (int i = 0; i < count; ++i) {
-            lane[slot].store(lanes[l][i], std::memory_order_relaxed);
+            lane[slot].store(lanes[l][i], std::memory_order_release);
             if (++slot == capacity_) slot = 0;
         }
     }
@@ -30,16 +31,15 @@ void InputRing::write(const float* const* lanes, int count) noexcept {
 bool InputRing::read(int64_t from, float* const* lanes, int count) const noexcept {
     const auto held = [&] {
         const int64_t now = written();
-        return from >= 0 && from >= now - capacity_ && from + count <= now;
+        return from >= 0 && from >= now + max_write_ - capacity_ && from + count <= now;
     };
     if (!held()) return false;
     for (int l = 0; l < lanes_; ++l) {
         const std::atomic<float>* lane = samples_.get() + l * capacity_;
         for (int i = 0; i < count; ++i)
-            lanes[l][i] = lane[(from + i) % capacity_].load(std::memory_order_relaxed);
+            lanes[l][i] = lane[(from + i) % capacity_].load(std::memory_order_acquire);
     }
-    std::atomic_thread_fence(std::memory_order_acquire);
-    return held();
+    return held();  // after every sample's load (acquire)
 }
 
 }  // namespace tactus

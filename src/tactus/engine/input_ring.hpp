@@ -2,9 +2,12 @@
 // channels, their summed loudness power: one lane each), written by the audio thread and read
 // by a control thread that primes a pipeline for a structural change (engine.hpp): the new
 // pipeline hears the same recent past, so its onset history, loudness and envelopes are those
-// of the one it replaces. Lock-free: samples are relaxed atomics, the count written (one for
-// every lane) is released after them; a reader checks afterwards that what it copied was not
-// overwritten meanwhile.
+// of the one it replaces. Lock-free, as a sequence lock: the count written (one for every lane)
+// is released after each write; samples are stored with release and loaded with acquire (plain
+// moves on x86), so a reader that copied a sample of a write not yet counted sees at least the
+// count before that write when it checks again afterwards, and the samples that write may have
+// overwritten (at most max_write beyond the count) are outside what it accepts. No fences:
+// ThreadSanitizer checks the orderings as written.
 #pragma once
 
 #include <atomic>
@@ -15,7 +18,8 @@ namespace tactus {
 
 class InputRing {
   public:
-    void prepare(int lanes, int64_t capacity);  // allocates
+    // Allocates. `max_write`: the largest count write() is given.
+    void prepare(int lanes, int64_t capacity, int max_write);
     void reset() noexcept;
     int lanes() const noexcept { return lanes_; }
     // Audio thread: count samples of each lane.
@@ -24,13 +28,14 @@ class InputRing {
     int64_t written() const noexcept { return written_.load(std::memory_order_acquire); }
     int64_t capacity() const noexcept { return capacity_; }
     // Any thread: copies samples [from, from + count) of each lane; false when they are no
-    // longer (or not yet) held.
+    // longer (or not yet) held, or within max_write of being overwritten.
     bool read(int64_t from, float* const* lanes, int count) const noexcept;
 
   private:
     std::unique_ptr<std::atomic<float>[]> samples_;
     int64_t capacity_ = 0;  // per lane; lane l is samples_[l * capacity_ ...]
     int lanes_ = 0;
+    int max_write_ = 0;
     std::atomic<int64_t> written_{0};
 };
 
