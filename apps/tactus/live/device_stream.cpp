@@ -184,6 +184,9 @@ DeviceStream::~DeviceStream() {
         if (audio_ && audio_->isStreamOpen()) audio_->closeStream();
     } catch (const RtAudioError&) {
     }
+    // The stream is closed: the last callback's release is seen, and all it did comes before
+    // the delete (RtAudio orders them too, but inside librtaudio, out of ThreadSanitizer's view).
+    (void)callbacks_.load(std::memory_order_acquire);
 }
 
 void DeviceStream::start(AudioCallback& callback) {
@@ -232,10 +235,12 @@ long DeviceStream::device_latency_frames() {
 int DeviceStream::on_audio(void* out, void* in, unsigned int frames, double,
                            RtAudioStreamStatus status, void* self) noexcept {
     auto& stream = *static_cast<DeviceStream*>(self);
-    stream.callbacks_.fetch_add(1, std::memory_order_relaxed);
     if (status != 0) stream.callback_->note_xrun();
     stream.callback_->process(static_cast<const float*>(in), static_cast<float*>(out),
                               static_cast<int>(frames));
+    // Last: released to the destructor's acquiring load, so that every callback is over,
+    // whichever thread RtAudio ended it on, before the stream is deleted.
+    stream.callbacks_.fetch_add(1, std::memory_order_release);
     return 0;
 }
 
