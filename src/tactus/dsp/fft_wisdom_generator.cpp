@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <string>
 
+#include "tactus/dsp/generated_source.hpp"
+
 namespace {
 
 constexpr int kLargestMixed = 4096;
@@ -25,43 +27,31 @@ bool wanted(int n) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 2) {
-        std::fprintf(stderr, "usage: %s OUTPUT.cpp\n", argv[0]);
-        return 2;
-    }
-    const std::string path = argv[1], partial = path + ".partial";
-    std::FILE* f = std::fopen(partial.c_str(), "w");
-    if (!f) {
-        std::fprintf(stderr, "%s: cannot write %s\n", argv[0], partial.c_str());
-        return 1;
-    }
-    std::fprintf(f,
-                 "// Generated at build time by fft_wisdom_generator.cpp: do not edit.\n"
-                 "#include \"tactus/dsp/fft_wisdom.hpp\"\n\n"
-                 "namespace tactus {\n\n"
-                 "const FftWisdom kFftWisdom[] = {\n");
-    int entries = 0;
-    for (int n = 16; n <= kLargestPowerOfTwo; ++n) {
-        if (!wanted(n)) continue;
-        fftwf_forget_wisdom();
-        float* time = fftwf_alloc_real(static_cast<size_t>(n));
-        fftwf_complex* spectrum = fftwf_alloc_complex(static_cast<size_t>(n / 2 + 1));
-        fftwf_plan forward = fftwf_plan_dft_r2c_1d(n, time, spectrum, FFTW_ESTIMATE);
-        fftwf_plan inverse = fftwf_plan_dft_c2r_1d(n, spectrum, time, FFTW_ESTIMATE);
-        char* wisdom = fftwf_export_wisdom_to_string();
-        std::fprintf(f, "{%d, R\"w(%s)w\"},\n", n, wisdom);
-        fftwf_free(wisdom);
-        fftwf_destroy_plan(forward);
-        fftwf_destroy_plan(inverse);
-        fftwf_free(time);
-        fftwf_free(spectrum);
-        ++entries;
-    }
-    std::fprintf(f, "};\nconst int kFftWisdomEntries = %d;\n\n}  // namespace tactus\n", entries);
-    fftwf_cleanup();
-    if (std::fclose(f) != 0 || std::rename(partial.c_str(), path.c_str()) != 0) {
-        std::fprintf(stderr, "%s: cannot write %s\n", argv[0], path.c_str());
-        return 1;
-    }
-    return 0;
+    return tactus::write_generated_source(argc, argv, [](std::FILE* f) {
+        std::fprintf(f,
+                     "// Generated at build time by fft_wisdom_generator.cpp: do not edit.\n"
+                     "#include \"tactus/dsp/fft_wisdom.hpp\"\n\n"
+                     "namespace tactus {\n\n"
+                     "const FftWisdom kFftWisdom[] = {\n");
+        int entries = 0;
+        for (int n = 16; n <= kLargestPowerOfTwo; ++n) {
+            if (!wanted(n)) continue;
+            fftwf_forget_wisdom();
+            float* time = fftwf_alloc_real(static_cast<size_t>(n));
+            fftwf_complex* spectrum = fftwf_alloc_complex(static_cast<size_t>(n / 2 + 1));
+            fftwf_plan forward = fftwf_plan_dft_r2c_1d(n, time, spectrum, FFTW_ESTIMATE);
+            fftwf_plan inverse = fftwf_plan_dft_c2r_1d(n, spectrum, time, FFTW_ESTIMATE);
+            char* wisdom = fftwf_export_wisdom_to_string();
+            std::fprintf(f, "{%d, R\"w(%s)w\"},\n", n, wisdom);
+            fftwf_free(wisdom);
+            fftwf_destroy_plan(forward);
+            fftwf_destroy_plan(inverse);
+            fftwf_free(time);
+            fftwf_free(spectrum);
+            ++entries;
+        }
+        std::fprintf(f, "};\nconst int kFftWisdomEntries = %d;\n\n}  // namespace tactus\n",
+                     entries);
+        fftwf_cleanup();
+    });
 }

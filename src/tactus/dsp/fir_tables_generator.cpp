@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <string>
 
+#include "tactus/dsp/generated_source.hpp"
 #include "tactus/dsp/resampler_kernel.hpp"
 #include "tactus/dsp/upsampler_taps.hpp"
 
@@ -23,52 +24,39 @@ void write_kernel(std::FILE* f, const char* name, const tactus::ResamplerKernel&
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 2) {
-        std::fprintf(stderr, "usage: %s OUTPUT.cpp\n", argv[0]);
-        return 2;
-    }
-    const std::string path = argv[1], partial = path + ".partial";
-    std::FILE* f = std::fopen(partial.c_str(), "w");
-    if (!f) {
-        std::fprintf(stderr, "%s: cannot write %s\n", argv[0], partial.c_str());
-        return 1;
-    }
-    const tactus::ResamplerKernel analysis =
-        tactus::design_resampler_kernel(Resampler::Band::analysis);
-    const tactus::ResamplerKernel listening =
-        tactus::design_resampler_kernel(Resampler::Band::listening);
-    std::fprintf(f,
-                 "// Generated at build time by fir_tables_generator.cpp: do not edit.\n"
-                 "#include \"tactus/dsp/resampler_kernel.hpp\"\n"
-                 "#include \"tactus/dsp/upsampler_taps.hpp\"\n\n"
-                 "namespace tactus {\nnamespace {\n\n");
-    write_kernel(f, "kAnalysisPoints", analysis);
-    write_kernel(f, "kListeningPoints", listening);
-    std::fprintf(f, "const UpsamplerTaps kUpsamplerTaps[] = {\n{},\n{},\n");
-    for (int factor = 2; factor <= Upsampler::kMaxFactor; ++factor) {
-        const tactus::UpsamplerTaps t = tactus::design_upsampler_taps(factor);
-        std::fprintf(f, "{{{\n");
-        for (const auto& row : t.taps) {
-            std::fprintf(f, "{{");
-            for (float v : row) std::fprintf(f, "%af,", static_cast<double>(v));
-            std::fprintf(f, "}},\n");
+    return tactus::write_generated_source(argc, argv, [](std::FILE* f) {
+        const tactus::ResamplerKernel analysis =
+            tactus::design_resampler_kernel(Resampler::Band::analysis);
+        const tactus::ResamplerKernel listening =
+            tactus::design_resampler_kernel(Resampler::Band::listening);
+        std::fprintf(f,
+                     "// Generated at build time by fir_tables_generator.cpp: do not edit.\n"
+                     "#include \"tactus/dsp/resampler_kernel.hpp\"\n"
+                     "#include \"tactus/dsp/upsampler_taps.hpp\"\n\n"
+                     "namespace tactus {\nnamespace {\n\n");
+        write_kernel(f, "kAnalysisPoints", analysis);
+        write_kernel(f, "kListeningPoints", listening);
+        std::fprintf(f, "const UpsamplerTaps kUpsamplerTaps[] = {\n{},\n{},\n");
+        for (int factor = 2; factor <= Upsampler::kMaxFactor; ++factor) {
+            const tactus::UpsamplerTaps t = tactus::design_upsampler_taps(factor);
+            std::fprintf(f, "{{{\n");
+            for (const auto& row : t.taps) {
+                std::fprintf(f, "{{");
+                for (float v : row) std::fprintf(f, "%af,", static_cast<double>(v));
+                std::fprintf(f, "}},\n");
+            }
+            std::fprintf(f, "}}, %a},\n", t.delay_samples);
         }
-        std::fprintf(f, "}}, %a},\n", t.delay_samples);
-    }
-    std::fprintf(f, "};\n\n}  // namespace\n\n");
-    std::fprintf(f,
-                 "ResamplerKernelView resampler_kernel_table(Resampler::Band band) {\n"
-                 "    if (band == Resampler::Band::listening)\n"
-                 "        return {kListeningPoints, %d, %a};\n"
-                 "    return {kAnalysisPoints, %d, %a};\n}\n\n",
-                 listening.points_per_unit, listening.delay_output_samples,
-                 analysis.points_per_unit, analysis.delay_output_samples);
-    std::fprintf(f,
-                 "const UpsamplerTaps& upsampler_taps_table(int factor) {\n"
-                 "    return kUpsamplerTaps[factor];\n}\n\n}  // namespace tactus\n");
-    if (std::fclose(f) != 0 || std::rename(partial.c_str(), path.c_str()) != 0) {
-        std::fprintf(stderr, "%s: cannot write %s\n", argv[0], path.c_str());
-        return 1;
-    }
-    return 0;
+        std::fprintf(f, "};\n\n}  // namespace\n\n");
+        std::fprintf(f,
+                     "ResamplerKernelView resampler_kernel_table(Resampler::Band band) {\n"
+                     "    if (band == Resampler::Band::listening)\n"
+                     "        return {kListeningPoints, %d, %a};\n"
+                     "    return {kAnalysisPoints, %d, %a};\n}\n\n",
+                     listening.points_per_unit, listening.delay_output_samples,
+                     analysis.points_per_unit, analysis.delay_output_samples);
+        std::fprintf(f,
+                     "const UpsamplerTaps& upsampler_taps_table(int factor) {\n"
+                     "    return kUpsamplerTaps[factor];\n}\n\n}  // namespace tactus\n");
+    });
 }
