@@ -4,7 +4,7 @@ JOBS ?= $(shell nproc)
 AMEN := /usr/share/sonic-pi/samples/loop_amen_full.flac
 TACTUS := $(BUILD)/bin/tactus
 
-.PHONY: setup build demo test test-asan test-tsan fuzz eval bench bench-compare bench-instructions format format-check clean
+.PHONY: setup build demo test test-asan test-tsan fuzz eval bench bench-compare bench-instructions format format-check tidy clean
 
 setup:
 	bash scripts/setup.sh
@@ -71,6 +71,18 @@ format:
 # Fails on any C++ file .clang-format would change (CI runs it first).
 format-check: setup
 	clang-format --dry-run --Werror $$(git ls-files '*.cpp' '*.hpp')
+
+# clang-tidy (.clang-tidy) on the project's own sources (src/, apps/, fuzz/, bench/; not tests,
+# third-party or generated files), any finding an error (CI runs it after format-check). It reads
+# the release configure's compile_commands.json; clang does not know GCC's -fno-fat-lto-objects.
+TIDY_FILES := ^$(CURDIR)/(src|apps|fuzz|bench)/
+tidy: $(BUILD)/compile_commands.json
+	run-clang-tidy -j $(JOBS) -quiet -p $(BUILD) -header-filter='$(TIDY_FILES)' \
+	  -extra-arg=-Wno-ignored-optimization-argument '$(TIDY_FILES)'
+
+$(BUILD)/compile_commands.json:
+	$(MAKE) setup
+	cmake --preset release -DTACTUS_BUILD_TESTS=ON
 
 clean:
 	rm -rf build out

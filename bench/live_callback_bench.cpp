@@ -80,7 +80,7 @@ void LiveCallbackPlayer(benchmark::State& state) {
                                  .sound_channels = {2, 3}},
                                 196);
     callback.begin();
-    std::vector<float> out(4 * kLiveBlock);
+    std::vector<float> out(4 * static_cast<size_t>(kLiveBlock));
     time_blocks(state, amen_samples.size() / kLiveBlock,
                 [&](size_t) { callback.process(nullptr, out.data(), kLiveBlock); });
     benchmark::DoNotOptimize(out.data());

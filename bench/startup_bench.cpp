@@ -83,7 +83,8 @@ int main(int argc, char** argv) {
         const int swaps = std::max(1, std::atoi(argv[2]));
         constexpr int kBlock = 64;
         const std::vector<float> in = amen_48k(Engine::kPrimeSeconds + 0.5);
-        const std::vector<float> between(in.begin(), in.begin() + 20 * kBlock);
+        const std::vector<float> between(in.begin(),
+                                         in.begin() + 20 * static_cast<std::ptrdiff_t>(kBlock));
         Engine engine;
         engine.prepare(kRateHz, kBlock);
         run(engine, in, kBlock);  // the input ring full, as in a running engine

@@ -30,6 +30,7 @@ inline void check_in_range(const Settings& settings) {
 inline bool same_bits(const Settings& a, const Settings& b) {
     for (int i = 0; i < static_cast<int>(P::count); ++i) {
         const double x = a[static_cast<P>(i)], y = b[static_cast<P>(i)];
+        // NOLINTNEXTLINE(bugprone-suspicious-memory-comparison): the bits are what is compared
         if (std::memcmp(&x, &y, sizeof x) != 0) return false;
     }
     return true;

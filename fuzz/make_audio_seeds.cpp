@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
                 std::fprintf(stderr, "%s: %s\n", path.c_str(), sf_strerror(nullptr));
                 return 1;
             }
-            std::vector<float> samples(kFrames * channels);
+            std::vector<float> samples(static_cast<size_t>(kFrames) * channels);
             for (int i = 0; i < kFrames * channels; ++i)
                 samples[i] = 0.5f * std::sin(0.3f * static_cast<float>(i));
             sf_writef_float(file, samples.data(), kFrames);

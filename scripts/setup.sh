@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build pkg-config clang-format clang libclang-rt-14-dev
+  build-essential cmake ninja-build pkg-config clang-format clang-tidy clang libclang-rt-14-dev
   libsndfile1-dev libvorbis-dev libogg-dev libfftw3-dev libtomlplusplus-dev libreaderwriterqueue-dev nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev valgrind
   sonic-pi-samples aubio-tools sox lame puredata-core puredata-extra puredata-dev time

@@ -168,6 +168,7 @@ void Object::dsp(t_signal** signals) {
     thru_out_ = options_.thru ? signals[1 + out_.size()]->s_vec : nullptr;
     dsp_add(
         +[](t_int* w) -> t_int* {
+            // NOLINTNEXTLINE(performance-no-int-to-ptr): Pd passes dsp_add's arguments as t_int
             reinterpret_cast<Object*>(w[1])->perform(static_cast<int>(w[2]));
             return w + 3;
         },
@@ -240,7 +241,7 @@ void Object::set_from_atom(P id, const t_atom& atom) {
 }
 
 std::filesystem::path Object::beside_patch(const std::string& name) const {
-    const std::filesystem::path path(name);
+    std::filesystem::path path(name);
     if (path.is_absolute() || name.find('/') == std::string::npos) return path;
     return std::filesystem::path(canvas_getdir(canvas_)->s_name) / path;
 }

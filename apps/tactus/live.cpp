@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <thread>
+#include <utility>
 
 #include "actuator_option.hpp"
 #include "commands.hpp"
@@ -240,7 +241,7 @@ void live_run(const LiveOptions& o) {
                 "returns (Ctrl-C stops)",
                 callback.frames() / rate_hz));
             reconnector.emplace(
-                std::move(stream),
+                std::exchange(stream, nullptr),  // empty until the device returns
                 [&] {
                     auto again =
                         std::make_unique<live::DeviceStream>(stream_request(o, routing, rate_hz));

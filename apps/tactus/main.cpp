@@ -7,6 +7,7 @@
 #include "global_options.hpp"
 #include "tactus/io/temporary_path.hpp"
 
+// NOLINTNEXTLINE(bugprone-exception-escape): only set-up errors (bad_alloc) escape: they abort
 int main(int argc, char** argv) {
     CLI::App app{"tactus: turns music into vibrotactile feedback (Birnbaum & Wanderley's system)"};
     app.require_subcommand(1);

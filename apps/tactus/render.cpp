@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <optional>
 #include <thread>
@@ -52,7 +53,7 @@ class RenderStats final : public FrameObserver {
         return {.loudness = true, .spectrum = false, .pitch = false};
     }
     int onsets = 0;
-    double loudest_db = -INFINITY;
+    double loudest_db = -std::numeric_limits<double>::infinity();
     UnfeltSound unfelt;
 };
 

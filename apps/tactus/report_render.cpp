@@ -96,6 +96,7 @@ ReportRender render_report(const std::string& input, const Settings& settings,
         felt.push_back({static_cast<double>(i) * HapticTrack::kStepS, track.intensity[i]});
     const auto column = [&](size_t c) {
         std::vector<std::vector<double>> rows;
+        rows.reserve(features.size());
         for (const auto& f : features) rows.push_back({f[0], f[c]});
         return thinned(rows);
     };

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace tactus::cli {
 
@@ -46,7 +47,7 @@ class UnfeltSound {
     int64_t longest_start_frame() const { return longest_start_; }  // output frames
 
   private:
-    double gate_db_, loudest_db_ = -INFINITY;
+    double gate_db_, loudest_db_ = -std::numeric_limits<double>::infinity();
     bool sounding_ = false;
     int64_t written_ = 0, run_start_ = 0, run_frames_ = 0;
     int64_t longest_frames_ = 0, longest_start_ = 0;

@@ -54,6 +54,7 @@ Player::Player(const std::vector<std::filesystem::path>& files, double sample_ra
         std::vector<std::vector<float>> decoded(static_cast<size_t>(channels_)),
             chunk(static_cast<size_t>(channels_), std::vector<float>(kChunk));
         std::vector<float*> pointers;
+        pointers.reserve(chunk.size());
         for (auto& c : chunk) pointers.push_back(c.data());
         while (const int n = reader.read(pointers.data(), kChunk))
             for (size_t c = 0; c < decoded.size(); ++c)

@@ -18,7 +18,7 @@ constexpr int kSettleMs = 30;  // events of one save arrive together: read them 
 
 }  // namespace
 
-PresetWatcher::PresetWatcher(std::filesystem::path preset, LiveControl& control,
+PresetWatcher::PresetWatcher(const std::filesystem::path& preset, LiveControl& control,
                              std::function<void(const std::string&)> report)
     : preset_(std::filesystem::absolute(preset)), control_(control), report_(std::move(report)) {
     inotify_ = inotify_init1(IN_NONBLOCK | IN_CLOEXEC);

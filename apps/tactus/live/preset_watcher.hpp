@@ -18,7 +18,7 @@ class PresetWatcher {
   public:
     // `report`: one line per reload or refusal. Throws std::runtime_error if the folder cannot
     // be watched.
-    PresetWatcher(std::filesystem::path preset, LiveControl& control,
+    PresetWatcher(const std::filesystem::path& preset, LiveControl& control,
                   std::function<void(const std::string&)> report);
     ~PresetWatcher();
     PresetWatcher(const PresetWatcher&) = delete;

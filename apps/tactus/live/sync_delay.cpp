@@ -25,6 +25,7 @@ int vibration_delay_samples(const Settings& settings, double sample_rate_hz,
     const double hop = engine.hop_samples();
     const auto spacing = static_cast<int64_t>(kSpacingS * sample_rate_hz);
     std::vector<int64_t> hits;
+    hits.reserve(kHits);
     for (int k = 0; k < kHits; ++k)
         hits.push_back(static_cast<int64_t>(kLeadS * sample_rate_hz) + k * spacing +
                        static_cast<int64_t>(std::lround(k * hop / kHits)));

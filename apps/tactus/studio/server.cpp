@@ -53,7 +53,7 @@ void serve_studio(StudioSession& session, const std::string& host, int port,
     server.Get(".*", handler);
     server.Post(".*", handler);
     server.set_exception_handler(
-        [](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
+        [](const httplib::Request&, httplib::Response& res, const std::exception_ptr&) {
             res.status = 500;
             res.set_content(R"({"error":"internal error"})", "application/json");
         });
@@ -70,6 +70,7 @@ void serve_studio(StudioSession& session, const std::string& host, int port,
     on_listening(bound);
     server.listen_after_bind();
     if (waiter.joinable()) {
+        // NOLINTNEXTLINE(bugprone-bad-signal-to-kill-thread): it interrupts a wait, kills nothing
         pthread_kill(waiter.native_handle(), SIGTERM);  // wakes it if the server stopped alone
         waiter.join();
     }

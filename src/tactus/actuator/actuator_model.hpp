@@ -49,7 +49,7 @@ class ActuatorModel {
     bool erm_ = false;
     Biquad resonance_;
     bool resonance_on_ = false;
-    std::array<Biquad, 2 * kMaxEdgeSections> edges_;
+    std::array<Biquad, size_t{2} * kMaxEdgeSections> edges_;
     int edge_count_ = 0;
     FittedEq rest_;
     // ERM

@@ -88,6 +88,7 @@ std::vector<std::pair<double, double>> measure_response(std::span<const float> s
         const size_t at = (peak + static_cast<size_t>(size) - pre + i) % static_cast<size_t>(size);
         double g = 1;
         if (i > pre + post / 2)
+            // NOLINTNEXTLINE(bugprone-integer-division): whole samples, as in the test above
             g = 0.5 + 0.5 * std::cos(M_PI * static_cast<double>(i - pre - post / 2) / (post / 2.0));
         response.time()[i] = static_cast<float>(g * h[at]);
     }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "tactus/core/units.hpp"
 
@@ -32,7 +33,7 @@ double ActuatorProfile::response_db(double frequency_hz) const {
             db -= 10.0 * std::log10(1 + q * q * (x - 1 / x) * (x - 1 / x));
         return db;
     };
-    if (frequency_hz <= 0 && !dc) return -INFINITY;
+    if (frequency_hz <= 0 && !dc) return -std::numeric_limits<double>::infinity();
     double db = shape_db(std::max(frequency_hz, 0.0)) - shape_db(reference_hz);
     if (!dc && frequency_hz < band_low_hz)
         db -= rolloff_db_per_octave * std::log2(band_low_hz / frequency_hz);

@@ -36,7 +36,7 @@ void OnsetDetector::prepare(const ProcessSpec& spec, int hop_samples, const Onse
         bands_[b].lag_frames = std::max(
             1,
             static_cast<int>(std::lround(band_lags_ms[b] * 1e-3 * sample_rate_hz / hop_samples)));
-        bands_[b].past.assign(static_cast<size_t>(2 * bands_[b].lag_frames), 0.0f);
+        bands_[b].past.assign(2 * static_cast<size_t>(bands_[b].lag_frames), 0.0f);
     }
     rise_.assign(static_cast<size_t>(stft_.bins()), 0.0f);
     const auto history_frames =

@@ -15,10 +15,10 @@ void PitchYin::prepare(const ProcessSpec& spec, const PitchSettings& settings) {
     max_lag_ = static_cast<int>(std::ceil(sample_rate_hz / min_hz)) + 1;
     min_lag_ = std::max(2, static_cast<int>(std::floor(sample_rate_hz / max_hz)));
     window_ = max_lag_ + 1;
-    fft_.prepare(next_power_of_two(2 * window_));
-    signal_.assign(static_cast<size_t>(2 * window_), 0.0f);
+    fft_.prepare(next_power_of_two(2 * static_cast<int64_t>(window_)));
+    signal_.assign(2 * static_cast<size_t>(window_), 0.0f);
     signal_spectrum_.assign(static_cast<size_t>(fft_.bins()), {});
-    difference_.assign(static_cast<size_t>(max_lag_ + 2), 0.0);
+    difference_.assign(static_cast<size_t>(max_lag_) + 2, 0.0);
 }
 
 Pitch PitchYin::analyse(const SampleHistory& history) noexcept {
@@ -29,7 +29,7 @@ Pitch PitchYin::analyse(const SampleHistory& history) noexcept {
     // x's first w samples (no wrap: 2w <= n).
     float* time = fft_.time();
     std::copy(signal_.begin(), signal_.end(), time);
-    std::fill(time + 2 * w, time + n, 0.0f);
+    std::fill(time + 2 * static_cast<std::ptrdiff_t>(w), time + n, 0.0f);
     fft_.forward();
     std::copy_n(fft_.spectrum(), fft_.bins(), signal_spectrum_.begin());
     std::copy_n(signal_.begin(), w, time);

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <utility>
 
 #include "tactus/dsp/biquad.hpp"
@@ -35,7 +36,7 @@ template <int N>
 void run_wavefront(Biquad* sections, float* samples, int count, double gain) noexcept {
     constexpr int V = (N + 1) / 2;  // vectors of two sections; a spare lane is a pass-through
     __m128d b0[V], b1[V], b2[V], a1[V], a2[V], s1[V], s2[V], y[V];
-    for (int v = 0; v < V; ++v) {
+    for (std::ptrdiff_t v = 0; v < V; ++v) {
         const BiquadCoefficients pass{};
         const BiquadCoefficients& c0 = sections[2 * v].coefficients();
         const BiquadCoefficients& c1 = 2 * v + 1 < N ? sections[2 * v + 1].coefficients() : pass;
@@ -87,7 +88,7 @@ void run_wavefront(Biquad* sections, float* samples, int count, double gain) noe
     for (; t < std::min(N - 1, steps); ++t) step(t < count ? samples[t] * gain : 0.0, true, t);
     for (; t < steady_end; ++t) step(samples[t] * gain, false, t);
     for (; t < steps; ++t) step(0.0, true, t);
-    for (int v = 0; v < V; ++v) {
+    for (std::ptrdiff_t v = 0; v < V; ++v) {
         double first[2], second[2];
         _mm_storeu_pd(first, s1[v]);
         _mm_storeu_pd(second, s2[v]);

@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
             if (!wanted(n)) continue;
             fftwf_forget_wisdom();
             float* time = fftwf_alloc_real(static_cast<size_t>(n));
-            fftwf_complex* spectrum = fftwf_alloc_complex(static_cast<size_t>(n / 2 + 1));
+            fftwf_complex* spectrum = fftwf_alloc_complex(static_cast<size_t>(n) / 2 + 1);
             fftwf_plan forward = fftwf_plan_dft_r2c_1d(n, time, spectrum, FFTW_ESTIMATE);
             fftwf_plan inverse = fftwf_plan_dft_c2r_1d(n, spectrum, time, FFTW_ESTIMATE);
             char* wisdom = fftwf_export_wisdom_to_string();

@@ -31,7 +31,7 @@ const Plans& plans_for(int size) {
                                               [](const FftWisdom& w, int n) { return w.size < n; });
     if (entry != end && entry->size == size) fftwf_import_wisdom_from_string(entry->wisdom);
     float* time = fftwf_alloc_real(static_cast<size_t>(size));
-    fftwf_complex* spectrum = fftwf_alloc_complex(static_cast<size_t>(size / 2 + 1));
+    fftwf_complex* spectrum = fftwf_alloc_complex(static_cast<size_t>(size) / 2 + 1);
     if (!time || !spectrum) throw std::bad_alloc();
     const Plans made{fftwf_plan_dft_r2c_1d(size, time, spectrum, FFTW_ESTIMATE),
                      fftwf_plan_dft_c2r_1d(size, spectrum, time, FFTW_ESTIMATE)};
@@ -61,7 +61,7 @@ void RealFft::prepare(int size) {
     release();
     size_ = size;
     time_ = fftwf_alloc_real(static_cast<size_t>(size));
-    spectrum_ = fftwf_alloc_complex(static_cast<size_t>(size / 2 + 1));
+    spectrum_ = fftwf_alloc_complex(static_cast<size_t>(size) / 2 + 1);
     if (!time_ || !spectrum_) throw std::bad_alloc();
     {
         std::lock_guard lock(planner_mutex);

@@ -75,7 +75,7 @@ void Resampler::prepare(double input_rate_hz, double output_rate_hz, int max_blo
         }
         for (int i = 0; i < taps_; ++i) phase[i] = static_cast<float>(phase[i] / sum);  // DC: 1
     }
-    history_.assign(static_cast<size_t>(taps_ - 1 + max_block), 0.0f);
+    history_.assign(static_cast<size_t>(taps_) - 1 + static_cast<size_t>(max_block), 0.0f);
     reset();
 }
 

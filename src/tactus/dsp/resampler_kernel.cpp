@@ -31,6 +31,7 @@ ResamplerKernel design_kernel(double pass_edge, double stop_edge, double stop_ba
         const double t = static_cast<double>(k) / points_per_unit;  // output samples
         const double arg = 2 * cutoff * t;
         const double sinc = k == 0 ? 1.0 : std::sin(kPi * arg) / (kPi * arg);
+        // NOLINTNEXTLINE(bugprone-misplaced-widening-cast): k + half is in [0, 2 half]
         h[static_cast<size_t>(k + half)] =
             2 * cutoff * sinc * kaiser_window(static_cast<double>(k) / half, beta);
     }

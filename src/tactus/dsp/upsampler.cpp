@@ -17,7 +17,8 @@ void Upsampler::prepare(const ProcessSpec& spec, int factor) {
         taps_ = t.taps;
         delay_samples_ = t.delay_samples;
     }
-    line_.assign(static_cast<size_t>(kTapsPerPhase + internal_spec(spec, factor).max_block), 0.0f);
+    line_.assign(size_t{kTapsPerPhase} + static_cast<size_t>(internal_spec(spec, factor).max_block),
+                 0.0f);
     reset();
 }
 

@@ -38,7 +38,10 @@ class Upsampler {
     int factor() const { return factor_; }
     // Group delay at low frequencies, in output samples.
     double delay_samples() const { return delay_samples_; }
-    int latency() const { return static_cast<int>(delay_samples_ + 0.5); }
+    int latency() const {
+        // NOLINTNEXTLINE(bugprone-incorrect-roundings): >= 0; lround could move a rounding
+        return static_cast<int>(delay_samples_ + 0.5);
+    }
 
   private:
     int factor_ = 1, phase_ = 0;

@@ -24,6 +24,7 @@ std::string meta_haptic_text(const HapticTrack& track) {
         const HapticOnset* emphasis;
     };
     std::vector<Row> rows;
+    rows.reserve(points.size() + track.onsets.size());
     for (const Breakpoint& p : points)
         rows.push_back({time_value(p.time_s), level(p.value), nullptr});
     for (const HapticOnset& onset : track.onsets) {

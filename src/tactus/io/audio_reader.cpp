@@ -146,7 +146,7 @@ int AudioReader::read(float* const* out, int max_frames) {
     // tag still holds the whole length) is truncated. One MPEG frame of slack (1152 samples,
     // twice) allows for an encoder's padding estimate. A length estimated from the file's size
     // promises nothing: the stream is read to its end, and only the decoder's errors count.
-    constexpr int64_t kSlackFrames = 2 * 1152;
+    constexpr int64_t kSlackFrames = int64_t{2} * 1152;
     const bool length_known =
         length_stated_ && info_.frames > 0 && info_.frames != SF_COUNT_MAX;  // not a pipe
     if (got == 0 && length_known && frames_read_ + kSlackFrames < info_.frames)

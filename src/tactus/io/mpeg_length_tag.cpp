@@ -66,7 +66,7 @@ bool mpeg_file_states_length(int fd) {
         offset += static_cast<off_t>(size);
     }
     // libmpg123 looks this far for the first frame too (it gives up after 64 KiB of junk).
-    constexpr size_t kSearch = 64 * 1024, kFrame = 2048;
+    constexpr size_t kSearch = size_t{64} * 1024, kFrame = 2048;
     std::vector<unsigned char> bytes(kSearch + kFrame);
     const ssize_t got = ::pread(fd, bytes.data(), bytes.size(), offset);
     if (got < 4) return false;

@@ -82,7 +82,7 @@ std::filesystem::path resolve_toml(std::string_view name_or_path,
                                    const std::vector<std::filesystem::path>& dirs,
                                    std::string_view kind) {
     namespace fs = std::filesystem;
-    const fs::path given(name_or_path);
+    fs::path given(name_or_path);
     std::error_code error;
     if (given.extension() == ".toml" || given.has_parent_path()) {
         if (!fs::is_regular_file(given, error))

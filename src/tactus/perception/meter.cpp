@@ -134,7 +134,9 @@ MeterSummary MeterSummariser::summary() const {
         }
         if (engaged.empty()) continue;
         out.engaged_fraction = double(engaged.size()) / double(levels_[c].size());
-        std::nth_element(engaged.begin(), engaged.begin() + engaged.size() / 2, engaged.end());
+        std::nth_element(engaged.begin(),
+                         engaged.begin() + static_cast<std::ptrdiff_t>(engaged.size() / 2),
+                         engaged.end());
         out.median_engaged_db = engaged[engaged.size() / 2];
     }
     return s;

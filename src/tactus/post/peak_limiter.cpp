@@ -22,7 +22,7 @@ void PeakLimiter::prepare(const ProcessSpec& spec, double lookahead_ms,
     set_levels(levels, 0);
     delay_.assign(static_cast<size_t>(lookahead_), 0.0);
     held_gain_.assign(static_cast<size_t>(lookahead_), 1.0);
-    minimum_.assign(static_cast<size_t>(lookahead_ + 2), {0, 1.0});
+    minimum_.assign(static_cast<size_t>(lookahead_) + 2, {0, 1.0});
     reset();
 }
 

@@ -20,6 +20,7 @@ constexpr auto kOddReciprocals = [] {
 // Estrin's scheme (independent pairs: half the dependent steps of Horner's rule). Agrees with
 // std::sin(2 pi phase) to 1e-15 at a fraction of its cost.
 double sin_of_cycles(double phase) noexcept {
+    // NOLINTNEXTLINE(bugprone-incorrect-roundings): phase >= 0; lround could move a rounding
     const auto quadrant = static_cast<int>(4.0 * phase + 0.5);  // nearest quarter, 0 ... 4
     const double x = 2.0 * kPi * (phase - 0.25 * quadrant);
     const double z = x * x, z2 = z * z, z4 = z2 * z2;
