@@ -277,8 +277,8 @@ void Engine::swap_in(const Settings& settings) {
         }
     }
     send({.kind = Change::Kind::pipeline, .pipeline = pipeline.get(), .primed_to = to});
-    static_cast<void>(
-        pipeline.release());  // the audio thread owns it now; it comes back through retired_
+    // The audio thread owns it now; it comes back through retired_.
+    static_cast<void>(pipeline.release());
 }
 
 void Engine::set_actuator_gain_db(int actuator, double gain_db) {
