@@ -55,6 +55,13 @@ LiveCallback::LiveCallback(Engine& engine, Player* player, Routing routing, int 
     out_pointers_.resize(routing_.actuator_channels.size());
 }
 
+LiveCallback::~LiveCallback() {
+    // A device lost with its server may be left closing on a thread of its own (reconnector.hpp)
+    // and never joined; its audio thread has ended, but nothing else orders its last process()
+    // before this delete. The acquiring load does, as DeviceStream's does for the stream.
+    (void)frames_.load(std::memory_order_acquire);
+}
+
 void LiveCallback::set_sync_delay_samples(int samples) noexcept {
     if (sync_)
         sync_target_.store(std::clamp(samples, 0, delay_.max_delay_samples()),
@@ -72,11 +79,12 @@ void LiveCallback::process(const float* in, float* out, int frames) noexcept {
         process_chunk(in, frames, out, frames, done, count);
         done += count;
     }
-    frames_.fetch_add(frames, std::memory_order_relaxed);
     const double period_s = frames / engine_.sample_rate_hz();
     const double spent_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     raise(load_, spent_s / period_s);
+    // Last: released to the destructor's acquiring load (see ~LiveCallback).
+    frames_.fetch_add(frames, std::memory_order_release);
 }
 
 void LiveCallback::process_chunk(const float* in, int in_stride, float* out, int out_stride,

@@ -46,6 +46,10 @@ class LiveCallback final : public AudioCallback {
     // sync_delay_samples of 0 or more (--sync), the sound is delayed by it, and can be moved up
     // to max_vibration_delay_samples() (sync_delay.hpp). Allocates.
     LiveCallback(Engine& engine, Player* player, Routing routing, int sync_delay_samples);
+    // Setup thread, once no device calls process() any more.
+    ~LiveCallback() override;
+    LiveCallback(const LiveCallback&) = delete;
+    LiveCallback& operator=(const LiveCallback&) = delete;
 
     // Audio thread. in: device_inputs channels, out: device_outputs channels, each `frames`
     // samples one after another (non-interleaved); in may be null without inputs.
