@@ -121,10 +121,12 @@ DeviceStream::DeviceStream(const StreamRequest& request) {
                                                  out_info.name, out_info.outputChannels,
                                                  request.output_channels));
         const bool with_input = request.input_channels != 0;
+        std::string input_name;
         if (with_input) {
             const auto [in_id, in_info] =
                 find_device(*audio_, devices, request.input_device, false);
             in_params.deviceId = in_id;
+            input_name = in_info.name;
             input_channels_ = request.input_channels < 0 ? static_cast<int>(in_info.inputChannels)
                                                          : request.input_channels;
             in_params.nChannels = static_cast<unsigned int>(input_channels_);
@@ -154,6 +156,14 @@ DeviceStream::DeviceStream(const StreamRequest& request) {
                 out_info.preferredSampleRate > 0
                     ? out_info.preferredSampleRate
                     : (out_info.sampleRates.empty() ? 48000 : out_info.sampleRates[0]);
+        if (audio_->getCurrentApi() == RtAudio::UNIX_JACK) {  // through libjack: jack_stream.hpp
+            jack_ = std::make_unique<JackStream>(
+                request.client_name, JackStream::Ports{output_name_, request.output_channels, 0},
+                JackStream::Ports{input_name, input_channels_, request.input_first_channel});
+            sample_rate_hz_ = jack_->sample_rate_hz();
+            block_frames_ = static_cast<unsigned int>(jack_->block_frames());
+            return;
+        }
         block_frames_ = static_cast<unsigned int>(request.block_frames);
         RtAudio::StreamOptions options;
         options.flags = RTAUDIO_NONINTERLEAVED | RTAUDIO_SCHEDULE_REALTIME;
@@ -176,23 +186,27 @@ std::string DeviceStream::runs() const {
 DeviceStream::~DeviceStream() {
     // A lost stream may still be closing on RtAudio's thread: closing it here as well would race.
     for (auto waited = std::chrono::milliseconds(0);
-         lost_ && audio_ && audio_->isStreamOpen() && waited < kSilentDevice;
+         lost_ && !jack_ && audio_ && audio_->isStreamOpen() && waited < kSilentDevice;
          waited += std::chrono::milliseconds(20))
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     stop();
+    jack_.reset();
     try {
         if (audio_ && audio_->isStreamOpen()) audio_->closeStream();
     } catch (const RtAudioError&) {
     }
     // The stream is closed: the last callback's release is seen, and all it did comes before
-    // the delete (RtAudio orders them too, but inside librtaudio, out of ThreadSanitizer's view).
+    // the delete (the device library orders them too, but out of ThreadSanitizer's view).
     (void)callbacks_.load(std::memory_order_acquire);
 }
 
 void DeviceStream::start(AudioCallback& callback) {
     callback_ = &callback;
     try {
-        audio_->startStream();
+        if (jack_)
+            jack_->start(&DeviceStream::deliver, this);
+        else
+            audio_->startStream();
         started_ = true;
         callbacks_seen_at_ = std::chrono::steady_clock::now();
     } catch (const RtAudioError& e) {
@@ -203,6 +217,10 @@ void DeviceStream::start(AudioCallback& callback) {
 void DeviceStream::stop() noexcept {
     if (!started_) return;
     started_ = false;
+    if (jack_) {
+        jack_->stop();
+        return;
+    }
     // Aborted, not drained: RtAudio's JACK stopStream() waits for its callback's signal on a
     // condition without holding the mutex, and misses it when the callback runs first (the
     // program then hangs on exit). Every caller lets the tail play out before it stops.
@@ -220,11 +238,13 @@ bool DeviceStream::lost() {
         callbacks_seen_ = calls;
         callbacks_seen_at_ = now;
     }
-    lost_ = lost_ || !audio_->isStreamRunning() || now - callbacks_seen_at_ >= kSilentDevice;
+    const bool stopped = jack_ ? jack_->shut_down() : !audio_->isStreamRunning();
+    lost_ = lost_ || stopped || now - callbacks_seen_at_ >= kSilentDevice;
     return lost_;
 }
 
 long DeviceStream::device_latency_frames() {
+    if (jack_) return jack_->latency_frames();
     try {
         return audio_->getStreamLatency();
     } catch (const RtAudioError&) {
@@ -234,14 +254,19 @@ long DeviceStream::device_latency_frames() {
 
 int DeviceStream::on_audio(void* out, void* in, unsigned int frames, double,
                            RtAudioStreamStatus status, void* self) noexcept {
-    auto& stream = *static_cast<DeviceStream*>(self);
-    if (status != 0) stream.callback_->note_xrun();
-    stream.callback_->process(static_cast<const float*>(in), static_cast<float*>(out),
-                              static_cast<int>(frames));
-    // Last: released to the destructor's acquiring load, so that every callback is over,
-    // whichever thread RtAudio ended it on, before the stream is deleted.
-    stream.callbacks_.fetch_add(1, std::memory_order_release);
+    deliver(static_cast<const float*>(in), static_cast<float*>(out), static_cast<int>(frames),
+            status != 0, self);
     return 0;
+}
+
+void DeviceStream::deliver(const float* in, float* out, int frames, bool xrun,
+                           void* self) noexcept {
+    auto& stream = *static_cast<DeviceStream*>(self);
+    if (xrun) stream.callback_->note_xrun();
+    stream.callback_->process(in, out, frames);
+    // Last: released to the destructor's acquiring load, so that every callback is over,
+    // whichever thread the device library ended it on, before the stream is deleted.
+    stream.callbacks_.fetch_add(1, std::memory_order_release);
 }
 
 }  // namespace tactus::live

@@ -1,6 +1,7 @@
-// An audio device stream through RtAudio (ALSA, PulseAudio, JACK): opens the named devices,
-// calls an AudioCallback from the device's thread with non-interleaved float buffers, and says
-// when the device went away so the caller can open it again.
+// An audio device stream: opens the named devices, calls an AudioCallback from the device's
+// thread with non-interleaved float buffers, and says when the device went away so the caller
+// can open it again. RtAudio finds the devices of every backend and runs ALSA and PulseAudio
+// streams; JACK streams run through libjack itself (jack_stream.hpp says why).
 #pragma once
 
 #include <RtAudio.h>
@@ -11,6 +12,8 @@
 #include <memory>
 #include <string>
 #include <vector>
+
+#include "live/jack_stream.hpp"
 
 namespace tactus::live {
 
@@ -66,8 +69,8 @@ class DeviceStream {
     void start(AudioCallback& callback);
     void stop() noexcept;
     // Control thread: the stream stopped without stop() (the device or server went away), or
-    // its callback has not been called for kSilentDevice (RtAudio's JACK backend closes a stream
-    // whose server died on a thread of its own, and that close can hang in libjack).
+    // its callback has not been called for kSilentDevice (a device library that hangs as its
+    // device goes away).
     bool lost();
     static constexpr std::chrono::seconds kSilentDevice{2};
 
@@ -83,7 +86,10 @@ class DeviceStream {
   private:
     static int on_audio(void* out, void* in, unsigned int frames, double, RtAudioStreamStatus,
                         void* self) noexcept;
-    std::unique_ptr<RtAudio> audio_;
+    // The device's thread, from either library.
+    static void deliver(const float* in, float* out, int frames, bool xrun, void* self) noexcept;
+    std::unique_ptr<RtAudio> audio_;  // finds the devices; runs the stream but for JACK
+    std::unique_ptr<JackStream> jack_;
     AudioCallback* callback_ = nullptr;
     int input_channels_ = 0;
     double sample_rate_hz_ = 0;
