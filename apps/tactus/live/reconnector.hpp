@@ -1,8 +1,7 @@
 // Opens a lost device again, on a thread of its own, once a period, until it is back. A device
-// library can block for good while it tears a lost connection down (libjack, when a JACK server
-// dies under a client, can leave RtAudio's closing thread waiting on a lock no thread will
-// release): off the control thread, `tactus live` keeps its clock and still stops at --duration
-// or Ctrl-C.
+// library can block for a long time, or for good, while it tears a lost connection down (a JACK
+// client of a dead server waits for the server to go, jack_stream.hpp): off the control thread,
+// `tactus live` keeps its clock and still stops at --duration or Ctrl-C.
 #pragma once
 
 #include <chrono>
