@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "tactus/actuator/drive_meter.hpp"
+#include "meter_worker.hpp"
 #include "tactus/dsp/downmix.hpp"
 #include "tactus/export/haptic_track.hpp"
 #include "tactus/export/thin_rows.hpp"
@@ -51,7 +51,6 @@ ReportRender render_report(const std::string& input, const Settings& settings,
     out.metered_name = metered.name;
     Engine engine(settings);
     engine.set_actuator(actuator);
-    DriveMeter meter;
     perception::MeterSummariser summariser;
     std::vector<std::vector<double>> features, program, levels;
     const auto on_reading = [&](const perception::MeterReading& r) {
@@ -59,19 +58,18 @@ ReportRender render_report(const std::string& input, const Settings& settings,
         levels.push_back(
             {r.time_s, r.level_db[0], r.level_db[1], r.level_db[2], r.level_db[3], r.combined_db});
     };
-    bool started = false;
+    // From the first block, when the rate is known; gone before what its readings go to.
+    std::optional<MeterWorker> meter;
     const AlignedSink sink = [&](const float* const* audio, int audio_channels,
                                  const float* const* vib, int, int frames) {
-        if (!started) {
-            started = true;
-            meter.prepare(engine.sample_rate_hz(), metered,
-                          settings[P::perception_contact_area_cm2]);
-        }
+        if (!meter)
+            meter.emplace(engine.sample_rate_hz(), metered,
+                          settings[P::perception_contact_area_cm2], on_reading);
         const size_t at = out.sound.size();
         out.sound.resize(at + static_cast<size_t>(frames));
         downmix_mean(audio, audio_channels, 0, out.sound.data() + at, frames);  // as heard
         out.vibration.insert(out.vibration.end(), vib[0], vib[0] + frames);
-        meter.write(vib[0], frames, on_reading);
+        meter->write(vib[0], frames);
     };
     const FrameSink on_frame = [&](const AnalysisFrame& f) {
         const double t = static_cast<double>(f.features.frame_end_sample) / engine.sample_rate_hz();
@@ -81,7 +79,7 @@ ReportRender render_report(const std::string& input, const Settings& settings,
         program.push_back({t, f.control.frequency_hz, f.control.amplitude});
     };
     const HapticTrack track = render_haptic_track(input, engine, sink, callbacks, on_frame);
-    meter.finish(on_reading);
+    if (meter) meter->finish();  // the worker's readings are all in, and it is gone
     out.summary = summariser.summary();
     out.sample_rate_hz = engine.sample_rate_hz();
     out.latency_frames = engine.latency();
