@@ -2,11 +2,33 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <tuple>
 
 #include "tactus/core/units.hpp"
+#include "tactus/dsp/design_memo.hpp"
 #include "tactus/dsp/real_fft.hpp"
 
 namespace tactus::perception {
+namespace {
+
+using Gains = std::shared_ptr<const std::vector<double>>;
+
+// The channel's threshold as a displacement gain at each bin of an FFT of `size` points: a
+// function of these inputs alone, remembered (a studio re-renders with the same meter often).
+Gains threshold_gains(Channel channel, double sample_rate_hz, int size, double contact_area_cm2) {
+    static DesignMemo<std::tuple<Channel, double, int, double>, Gains> memo;
+    return memo.get(std::tuple(channel, sample_rate_hz, size, contact_area_cm2), [&] {
+        auto gains = std::make_shared<std::vector<double>>(static_cast<size_t>(size / 2 + 1));
+        const Stimulus stimulus{.contact_area_cm2 = contact_area_cm2};
+        for (size_t k = 0; k < gains->size(); ++k)
+            (*gains)[k] = db_to_gain(
+                threshold_db(channel, static_cast<double>(k) * sample_rate_hz / size, stimulus));
+        return Gains(std::move(gains));
+    });
+}
+
+}  // namespace
 
 struct SensationMeter::ChannelState {
     Channel channel = Channel::P;
@@ -44,11 +66,10 @@ void SensationMeter::prepare(double sample_rate_hz, const Calibration& displacem
             window_power += double(c->window[i]) * c->window[i];
         }
         c->weight.assign(static_cast<size_t>(c->fft.bins()), 0.0);
-        const Stimulus stimulus{.contact_area_cm2 = contact_area_cm2};
+        const Gains threshold = threshold_gains(info.channel, sample_rate_hz, m, contact_area_cm2);
         for (int k = 0; k < c->fft.bins(); ++k) {
             const double f = k * sample_rate_hz / m;
-            const double ratio =
-                displacement_um(f) / db_to_gain(threshold_db(info.channel, f, stimulus));
+            const double ratio = displacement_um(f) / (*threshold)[static_cast<size_t>(k)];
             const double one_sided = (k == 0 || k == m / 2) ? 1.0 : 2.0;
             const double w = 2.0 * one_sided * ratio * ratio / (m * window_power);
             c->weight[k] = std::isfinite(w) ? w : 0.0;
