@@ -15,6 +15,7 @@ import base64
 import http.client
 import json
 import os
+import shutil
 import statistics
 import subprocess
 import tempfile
@@ -188,6 +189,43 @@ def test_export_equals_tactus_export(browser, clip, tmp_path, format):
     out = tmp_path / ("cli" + format)
     cli("export", clip, "-o", out, *sets(settings))
     assert base64.b64decode(data) == out.read_bytes()
+
+
+def test_batch_export_equals_tactus_export_to_a_folder(server, browser, clip, tmp_path):
+    """Every listed sound in every format, as `tactus export FILES -O DIR` writes them."""
+    token = urllib.parse.parse_qs(urllib.parse.urlsplit(server).query)["token"][0]
+    tick = "/usr/share/sonic-pi/samples/elec_blip.flac"
+    status, _ = request(server, "POST", "/api/upload?name=blip.flac", token,
+                        open(tick, "rb").read())
+    assert status == 200
+    settings = sent_settings(browser)
+    pairs = browser.execute_async_script("""
+        studio.exportBatch([".ahap", ".haptic", ".android.json", ".ogg"]).then((files) =>
+          arguments[0](files.map(([name, b]) => {
+            const bytes = new Uint8Array(b); let s = "";
+            for (let i = 0; i < bytes.length; i += 0x8000)
+              s += String.fromCharCode.apply(null, bytes.subarray(i, i + 0x8000));
+            return [name, btoa(s)]; })));""")
+    page = {name: base64.b64decode(data) for name, data in pairs}
+    local = tmp_path / "in"
+    local.mkdir()
+    shutil.copy(clip, local / "amen30.wav")
+    shutil.copy(tick, local / "blip.flac")
+    listed = json.loads(request(server, "GET", "/api/files", token)[1])["files"]
+    cli("export", *[local / f for f in listed if (local / f).exists()], "-O", tmp_path / "out",
+        *sets(settings))
+    written = {p.name: p for p in (tmp_path / "out").iterdir()}
+    assert {"amen30.ahap", "blip.ahap", "blip.ogg"} <= set(page)
+    for name, data in page.items():
+        if name not in written:  # a sound another test uploaded, not in this folder
+            continue
+        if name.endswith(".ogg"):  # a random serial number: the decoded channels compared
+            (tmp_path / name).write_bytes(data)
+            a, _ = soundfile.read(tmp_path / name)
+            b, _ = soundfile.read(written[name])
+            assert a.shape == b.shape and np.max(np.abs(a - b)) < 1e-3, name
+        else:
+            assert data == written[name].read_bytes(), name
 
 
 def test_ogg_export_has_the_same_vibration(browser, clip, tmp_path):
