@@ -44,6 +44,7 @@ void HitAnalysis::prepare(SpectrumShape fast, SpectrumShape fine, double sample_
     low_bins_ = bin_of(BandPower::kLowEdgeHz);
     mid_bins_ = bin_of(kMidEdgeHz);
     top_bins_ = bin_of(kTopEdgeHz);
+    features_.prepare(fast, fine);
     brightness_.prepare(fine.bins, fine.bin_hz, settings.brightness_max_hz);
     set_live(settings);
     reset();
@@ -91,6 +92,12 @@ void HitAnalysis::analyse(const Frame& frame, int64_t now, int64_t onset_start) 
     brightness_hz_ = brightness_.centroid_hz(fine_magnitude_);
     part_decided_ = false;
     if (deciding_ && now - hit_start_ >= settle_samples_) {
+        features_.compute({.fast = fast_.added(),
+                           .fine = fine_.added(),
+                           .fine_bed = fine_.reference(),
+                           .low = kBinsPerMeanPower * low_.added_sum(),
+                           .high = kBinsPerMeanPower * high_.added_sum(),
+                           .decay_db = peak_db_ - level_db_});
         part_ = classify();
         part_decided_ = true;
         deciding_ = false;

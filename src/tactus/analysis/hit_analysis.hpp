@@ -21,18 +21,13 @@
 #include "tactus/analysis/added_spectrum.hpp"
 #include "tactus/analysis/brightness.hpp"
 #include "tactus/analysis/drum_part.hpp"
+#include "tactus/analysis/part_features.hpp"
 
 namespace tactus {
 
 struct HitSettings {
     double brightness_max_hz = 1500;
     double settle_ms = 20;  // onset -> its part decided
-};
-
-// One power spectrum stream: its bins, their width.
-struct SpectrumShape {
-    int bins = 0;
-    double bin_hz = 0;
 };
 
 class HitAnalysis {
@@ -63,6 +58,8 @@ class HitAnalysis {
     DrumPart part() const { return part_; }
     // The latest hit's part was decided this frame.
     bool part_decided() const { return part_decided_; }
+    // What the latest decided part was read from (analysis/part_features.hpp).
+    std::span<const float> part_features() const { return features_.values(); }
 
   private:
     DrumPart classify() const noexcept;
@@ -70,6 +67,7 @@ class HitAnalysis {
     AddedSpectrum fast_, fine_;
     AddedSpectrum loudness_, low_, high_;  // each a spectrum of one bin
     Brightness brightness_;
+    PartFeatures features_;
     std::vector<float> fine_magnitude_;
     int low_bins_ = 0, mid_bins_ = 0, top_bins_ = 0;  // band edges in fast bins (classify())
     bool has_high_band_ = true;
