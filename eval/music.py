@@ -333,7 +333,10 @@ def section(result):
               "`tactus onsets`' 4th column (kick, snare, hat, other), over its onsets matched "
               "one-to-one to a drum hit within +-50 ms: the share naming the hit's part, per "
               "true part and overall; where hits coincide the true part is the first of kick, "
-              "snare, hat among them. n/a: tactus prints no part.", "",
+              "snare, hat among them. n/a: tactus prints no part. The part model "
+              "(src/tactus/analysis/part_model.hpp) is fitted on the tuning part only; "
+              "`eval/fit_parts.py BUILD_DIR --work DIR` re-runs this table alone (about 10 s on "
+              "a built corpus) and `--write-header` refits it.", "",
               "| bed | " + " | ".join(f"{n}: kick / snare / hat / all" for n in names) + " |",
               "|---" + rule]
     for level in LEVELS:
