@@ -336,7 +336,8 @@ def section(result):
               "snare, hat among them. n/a: tactus prints no part. The part model "
               "(src/tactus/analysis/part_model.hpp) is fitted on the tuning part only; "
               "`eval/fit_parts.py BUILD_DIR --work DIR` re-runs this table alone (about 10 s on "
-              "a built corpus) and `--write-header` refits it.", "",
+              "a built corpus) and `--write-header` refits it; it also prints the model fitted "
+              "with two tuning kits left out at a time, measured on them.", "",
               "| bed | " + " | ".join(f"{n}: kick / snare / hat / all" for n in names) + " |",
               "|---" + rule]
     for level in LEVELS:
