@@ -113,13 +113,18 @@ def analyse_mix(tactus, entry, directory, renders, preset):
     matches = mir_eval.util.match_events(reference, times, TOLERANCE_S)
     _, envelope, rate = felt_render(tactus, wav, renders, preset)
     pulses = sum(gives_pulse(envelope, rate, reference[i]) for i, _ in matches)
-    part_counts = None
-    if labels is not None:
-        part_counts = {p: [0, 0] for p in PRIORITY}
-        for i, j in matches:
-            part_counts[parts[i]][0] += labels[j] == parts[i]
-            part_counts[parts[i]][1] += 1
+    part_counts = None if labels is None else count_parts(parts, labels, matches)
     return {"scores": scores, "pulses": (pulses, len(reference)), "parts": part_counts}
+
+
+def count_parts(parts, labels, matches):
+    """{part: [onsets naming it right, onsets matched to a hit of that part]} over `matches`
+    (mir_eval's (hit index, onset index) pairs)."""
+    counts = {p: [0, 0] for p in PRIORITY}
+    for i, j in matches:
+        counts[parts[i]][0] += labels[j] == parts[i]
+        counts[parts[i]][1] += 1
+    return counts
 
 
 def analyse_gain(tactus, entry, directory, renders, preset):
@@ -178,7 +183,12 @@ def pulse_share(part, level):
 
 def part_accuracy(part, level):
     """{kick, snare, hat, all: share right} or None when tactus prints no part."""
-    results = [r["parts"] for _, r in part["mixes"][level]]
+    return pooled_accuracy([r["parts"] for _, r in part["mixes"][level]])
+
+
+def pooled_accuracy(results):
+    """{kick, snare, hat, all: share right} of count_parts() results pooled, or None when one is
+    None."""
     if not results or any(r is None for r in results):
         return None
     counts = {p: [sum(r[p][0] for r in results), sum(r[p][1] for r in results)] for p in PRIORITY}
@@ -323,7 +333,11 @@ def section(result):
               "`tactus onsets`' 4th column (kick, snare, hat, other), over its onsets matched "
               "one-to-one to a drum hit within +-50 ms: the share naming the hit's part, per "
               "true part and overall; where hits coincide the true part is the first of kick, "
-              "snare, hat among them. n/a: tactus prints no part.", "",
+              "snare, hat among them. n/a: tactus prints no part. The part model "
+              "(src/tactus/analysis/part_model.hpp) is fitted on the tuning part only; "
+              "`eval/fit_parts.py BUILD_DIR --work DIR` re-runs this table alone (about 10 s on "
+              "a built corpus) and `--write-header` refits it; it also prints the model fitted "
+              "with two tuning kits left out at a time, measured on them.", "",
               "| bed | " + " | ".join(f"{n}: kick / snare / hat / all" for n in names) + " |",
               "|---" + rule]
     for level in LEVELS:

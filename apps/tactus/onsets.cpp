@@ -2,8 +2,12 @@
 // alone is an onset list as aubioonset prints it and as onset evaluation tools read it; decided_s
 // is when the onset was decided (its pulse starts), strength_db what the hit added above what was
 // sounding and part its drum part, both read parts.settle_ms after the onset
-// (analysis/hit_analysis.hpp).
+// (analysis/hit_analysis.hpp). --part-features adds the numbers each part was decided on
+// (analysis/part_features.hpp; nan where the next onset came first), which eval/fit_parts.py fits
+// the part model on.
 #include <fmt/format.h>
+
+#include <limits>
 
 #include "batch_plan.hpp"
 #include "commands.hpp"
@@ -17,7 +21,7 @@ namespace {
 
 struct OnsetsOptions {
     std::string input, output;
-    bool force = false;
+    bool force = false, part_features = false;
     BatchOptions batch;
     PipelineOptions pipeline;
 };
@@ -34,9 +38,17 @@ void onsets(const OnsetsOptions& o) {
     Progress progress("onsets");
     OnsetDecisions decisions;
     const auto print = [&](const DecidedOnset& onset) {
-        out << fmt::format("{:.6f} {:.6f} {:.2f} {}\n", onset.onset_sample / sample_rate_hz,
+        out << fmt::format("{:.6f} {:.6f} {:.2f} {}", onset.onset_sample / sample_rate_hz,
                            onset.decided_sample / sample_rate_hz, onset.strength_db,
                            name_of(onset.part));
+        if (o.part_features) {
+            // Called on the frame that decided the part, so the analysis still holds it.
+            for (const float value : analyzer.hits().part_features())
+                out << fmt::format(" {:.5g}", onset.part_decided
+                                                  ? value
+                                                  : std::numeric_limits<float>::quiet_NaN());
+        }
+        out << '\n';
     };
     analyse_file(
         o.input, analyzer, settings, OnsetDecisions::reads(),
@@ -55,6 +67,8 @@ void add_onsets(CLI::App& app) {
         "onsets", "print one onset per line: onset_s decided_s strength_db part");
     options->batch.add_to(*command, "file to write, one input (default: stdout)", ".onsets.txt");
     options->pipeline.add_to(*command);
+    command->add_flag("--part-features", options->part_features,
+                      "after each part, the numbers it was decided on (eval/fit_parts.py)");
     command->callback([options] { for_each_input(*options, ".onsets.txt", onsets); });
 }
 

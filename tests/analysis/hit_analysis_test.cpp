@@ -1,17 +1,22 @@
 // What a hit adds (analysis/hit_analysis.hpp) through the whole analysis: a hit over a steady
 // bed reads its own level, not the bed's; a low sine burst is a kick, a burst of noise above
-// 6 kHz a hat, a burst of mid noise with little below 150 Hz a snare, a tone with nothing above
-// 6 kHz is none of them; and the band powers (analysis/band_power.hpp) hold their bands.
+// 6 kHz a hat; real kicks, snares and hats over a sustained bed (Sonic Pi's samples) keep their
+// parts; and the band powers (analysis/band_power.hpp) hold their bands.
 #include "tactus/analysis/hit_analysis.hpp"
 
 #include <gtest/gtest.h>
+#include <sndfile.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "support/signals.hpp"
 #include "tactus/analysis/analyzer.hpp"
 #include "tactus/analysis/band_power.hpp"
+#include "tactus/engine/onset_decisions.hpp"
 
 namespace tactus {
 namespace {
@@ -88,11 +93,97 @@ TEST(HitAnalysis, WhereAHitAddsPowerSaysItsPart) {
     EXPECT_EQ(first_hit(with_burst(silence, sine(55, 0.8, 0.1))).part, DrumPart::kick);
     EXPECT_EQ(first_hit(with_burst(silence, band_noise(0.5, 0.1, 7000, 20000))).part,
               DrumPart::hat);
-    EXPECT_EQ(first_hit(with_burst(silence, band_noise(0.5, 0.1, 300, 5000))).part,
-              DrumPart::snare);
-    std::vector<float> chord = sine(330, 0.3, 0.1), fifth = sine(495, 0.3, 0.1);
-    for (size_t i = 0; i < chord.size(); ++i) chord[i] += fifth[i];
-    EXPECT_EQ(first_hit(with_burst(silence, chord)).part, DrumPart::other);
+}
+
+// A Sonic Pi sample, mono, at 44.1 kHz.
+std::vector<float> sample(const std::string& name) {
+    SF_INFO info{};
+    SNDFILE* file =
+        sf_open(("/usr/share/sonic-pi/samples/" + name + ".flac").c_str(), SFM_READ, &info);
+    EXPECT_NE(file, nullptr) << name;
+    if (!file) return {};
+    std::vector<float> frames(static_cast<size_t>(info.frames * info.channels));
+    sf_readf_float(file, frames.data(), info.frames);
+    sf_close(file);
+    std::vector<float> mono(static_cast<size_t>(info.frames));
+    for (size_t i = 0; i < mono.size(); ++i)
+        for (int c = 0; c < info.channels; ++c)
+            mono[i] += frames[i * static_cast<size_t>(info.channels) + static_cast<size_t>(c)] /
+                       static_cast<float>(info.channels);
+    return mono;
+}
+
+double rms_of(const std::vector<float>& x) {
+    double sum = 0;
+    for (const float v : x) sum += double(v) * v;
+    return std::sqrt(sum / static_cast<double>(std::max<size_t>(1, x.size())));
+}
+
+// A kick, a snare and a closed hat, three times (0, -3, -6 dB), 0.3 s apart from 0.6 s, over a
+// bed of sustained sound at the drums' RMS (0 dB: the music corpus's hardest bed but one): the
+// parts named at the hits' onsets (within 50 ms), right out of 9.
+int parts_right_over(const std::string& bed_name) {
+    constexpr double kRate = 44100, kLengthS = 4.0, kFirstS = 0.6, kApartS = 0.3;
+    const auto length = static_cast<size_t>(kLengthS * kRate);
+    std::vector<float> drums(length, 0.0f), bed = sample(bed_name);
+    bed.resize(length, 0.0f);
+    const std::pair<const char*, DrumPart> hits[] = {{"drum_heavy_kick", DrumPart::kick},
+                                                     {"drum_snare_hard", DrumPart::snare},
+                                                     {"drum_cymbal_closed", DrumPart::hat}};
+    std::vector<std::pair<double, DrumPart>> truth;
+    double at_s = kFirstS;
+    for (int round = 0; round < 3; ++round) {
+        for (const auto& [name, part] : hits) {
+            const std::vector<float> hit = sample(name);
+            float peak = 0;
+            for (const float v : hit) peak = std::max(peak, std::abs(v));
+            const auto gain = static_cast<float>(std::pow(10.0, -3.0 * round / 20) / peak);
+            const auto start = static_cast<size_t>(at_s * kRate);
+            for (size_t i = 0; i < hit.size() && start + i < length; ++i)
+                drums[start + i] += gain * hit[i];
+            truth.emplace_back(at_s, part);
+            at_s += kApartS;
+        }
+    }
+    const auto bed_gain = static_cast<float>(rms_of(drums) / rms_of(bed));
+    std::vector<float> mix(length);
+    for (size_t i = 0; i < length; ++i) mix[i] = 0.4f * (drums[i] + bed_gain * bed[i]);
+
+    Analyzer analyzer;
+    analyzer.prepare({.sample_rate_hz = kRate, .max_block = 256}, Settings{});
+    OnsetDecisions decisions;
+    std::vector<DecidedOnset> onsets;
+    const auto keep = [&](const DecidedOnset& onset) { onsets.push_back(onset); };
+    for (size_t done = 0; done < mix.size();) {
+        const int chunk =
+            std::min(static_cast<int>(mix.size() - done), analyzer.samples_to_next_frame());
+        if (analyzer.process(mix.data() + done, chunk)) decisions.add(analyzer.analyse(), keep);
+        done += static_cast<size_t>(chunk);
+    }
+    decisions.finish(keep);
+    int right = 0;
+    for (const auto& [time_s, part] : truth) {
+        for (const DecidedOnset& onset : onsets) {
+            if (std::abs(static_cast<double>(onset.onset_sample) / kRate - time_s) < 0.05) {
+                right += onset.part == part;
+                break;
+            }
+        }
+    }
+    return right;
+}
+
+// Over four beds the part model (eval/fit_parts.py) names at least 29 of the 36 hits right; the
+// band-share rule it replaced named 27 (over the bass, most of its onsets `other`).
+TEST(HitAnalysis, DrumPartsHoldOverASustainedBed) {
+    int right = 0;
+    for (const char* bed : {"ambi_choir", "bass_voxy_c", "ambi_drone", "ambi_piano"}) {
+        const int over = parts_right_over(bed);
+        SCOPED_TRACE(bed);
+        right += over;
+        EXPECT_GE(over, 4) << bed;
+    }
+    EXPECT_GE(right, 29);
 }
 
 double band_power_of(BandPower::Band band, double hz, double rate_hz) {

@@ -76,6 +76,8 @@ class Analyzer {
     int latency() const { return static_cast<int>(std::ceil(hop_samples())); }
     // Analyses the frame ending at the newest sample. Call when process() returned true.
     const Features& analyse() noexcept;
+    // What each hit added and its part (read after analyse()).
+    const HitAnalysis& hits() const { return hits_; }
     // The onset detector's settings among `settings`.
     static OnsetSettings onset_settings(const Settings& settings);
 

@@ -5,6 +5,7 @@
 
 #include "tactus/analysis/band_power.hpp"
 #include "tactus/analysis/loudness.hpp"
+#include "tactus/analysis/part_model.hpp"
 #include "tactus/core/fast_math.hpp"
 
 namespace tactus {
@@ -14,17 +15,37 @@ namespace {
 // power: times 3 it counts as the spectrum's bins do.
 constexpr double kBinsPerMeanPower = 2 * 1.5;
 constexpr double kSilentDb = Loudness::kFloorDb;
-// Where a drum's added power lies (Sonic Pi and General MIDI kits; eval/results.md): a kick's
+// Inputs below 32 kHz, which have no high band for the part model, keep a rule on where a drum's
+// added power lies (Sonic Pi and General MIDI kits; eval/results.md): a kick's
 // body in the low band (below BandPower::kLowEdgeHz), a snare's shell from there to kMidEdgeHz
 // and its wires above, a hat's in the high band.
 constexpr double kMidEdgeHz = 1000;
 // Without the high band (inputs below 32 kHz), the analysis's own top stands in for it.
 constexpr double kTopEdgeHz = 4000;
 // The shares that tell them apart, fitted on the tuning part of the music corpus
-// (eval/music_corpus.py; part accuracy on both parts in eval/results.md).
+// (eval/music_corpus.py).
 constexpr double kHatAboveShare = 0.15, kHatLowShare = 0.2;
 constexpr double kKickLowPerMid = 1.0, kKickLowShare = 0.2;
-constexpr double kDrumAboveShare = 0.01;
+
+// The part model (analysis/part_model.hpp): the features and their pairwise products,
+// standardised; the class of the largest linear score.
+DrumPart modelled_part(std::span<const float> x) noexcept {
+    using namespace part_model;
+    std::array<float, kTerms> z{};
+    size_t t = 0;
+    for (const float v : x) z[t++] = v;
+    for (size_t i = 0; i < x.size(); ++i)
+        for (size_t j = i; j < x.size(); ++j) z[t++] = x[i] * x[j];
+    for (size_t k = 0; k < z.size(); ++k) z[k] = (z[k] - kMean[k]) / kScale[k];
+    int best = 0;
+    double best_score = 0;
+    for (int c = 0; c < kClasses; ++c) {
+        double score = kBias[static_cast<size_t>(c)];
+        for (size_t k = 0; k < z.size(); ++k) score += kWeights[static_cast<size_t>(c)][k] * z[k];
+        if (c == 0 || score > best_score) best = c, best_score = score;
+    }
+    return static_cast<DrumPart>(best);
+}
 
 }  // namespace
 
@@ -44,6 +65,7 @@ void HitAnalysis::prepare(SpectrumShape fast, SpectrumShape fine, double sample_
     low_bins_ = bin_of(BandPower::kLowEdgeHz);
     mid_bins_ = bin_of(kMidEdgeHz);
     top_bins_ = bin_of(kTopEdgeHz);
+    features_.prepare(fast, fine);
     brightness_.prepare(fine.bins, fine.bin_hz, settings.brightness_max_hz);
     set_live(settings);
     reset();
@@ -91,31 +113,36 @@ void HitAnalysis::analyse(const Frame& frame, int64_t now, int64_t onset_start) 
     brightness_hz_ = brightness_.centroid_hz(fine_magnitude_);
     part_decided_ = false;
     if (deciding_ && now - hit_start_ >= settle_samples_) {
-        part_ = classify();
+        const bool added = features_.compute({.fast = fast_.added(),
+                                              .fine = fine_.added(),
+                                              .fine_bed = fine_.reference(),
+                                              .low = kBinsPerMeanPower * low_.added_sum(),
+                                              .high = kBinsPerMeanPower * high_.added_sum(),
+                                              .decay_db = peak_db_ - level_db_});
+        part_ = !added           ? DrumPart::other
+                : has_high_band_ ? modelled_part(features_.values())
+                                 : rule_part();
         part_decided_ = true;
         deciding_ = false;
     }
 }
 
-// The shares of the added power (the fast spectrum's 10 ms window and the bands', weighted
-// alike) below 150 Hz, at 150 Hz-1 kHz and above 6 kHz decide: a hat adds 15 % or more above
-// 6 kHz and little below 150 Hz; a kick adds at least as much below 150 Hz as at 150 Hz-1 kHz;
-// what adds next to nothing above 6 kHz is no drum (a bass note, a chord, a voice: pitched sounds
-// have no noise up there); the rest is a snare.
-DrumPart HitAnalysis::classify() const noexcept {
+// Without the high band: the shares of the added power (the fast spectrum's 10 ms window and the
+// low band's, weighted alike) below 150 Hz, at 150 Hz-1 kHz and from 4 kHz up (the fast
+// spectrum's top, standing in for the high band) decide: a hat adds 15 % or more at the top and
+// little below 150 Hz; a kick adds at least as much below 150 Hz as at 150 Hz-1 kHz; the rest is
+// a snare.
+DrumPart HitAnalysis::rule_part() const noexcept {
     const auto& added = fast_.added();
     const int bins = static_cast<int>(added.size());
     const double low = kBinsPerMeanPower * low_.added_sum();
     const double mid = sum_of(added.data() + low_bins_, mid_bins_ - low_bins_);
-    const int upper_end = has_high_band_ ? bins : top_bins_;
-    const double upper = sum_of(added.data() + mid_bins_, upper_end - mid_bins_);
-    const double above = has_high_band_ ? kBinsPerMeanPower * high_.added_sum()
-                                        : sum_of(added.data() + top_bins_, bins - top_bins_);
+    const double upper = sum_of(added.data() + mid_bins_, top_bins_ - mid_bins_);
+    const double above = sum_of(added.data() + top_bins_, bins - top_bins_);
     const double total = low + mid + upper + above;
     if (total <= 0) return DrumPart::other;
     if (above > kHatAboveShare * total && low < kHatLowShare * total) return DrumPart::hat;
     if (low >= kKickLowPerMid * mid && low > kKickLowShare * total) return DrumPart::kick;
-    if (has_high_band_ && above < kDrumAboveShare * total) return DrumPart::other;
     return DrumPart::snare;
 }
 

@@ -11,7 +11,9 @@
 //                  fell under it, the power it added bin by bin), so a soft hit over a loud
 //                  chord reads soft;
 //   brightness_hz  its log-frequency centroid up to brightness.max_hz (analysis/brightness.hpp);
-// and once, settle_ms after the onset, its part, from where the added power lies (classify()).
+// and once, settle_ms after the onset, its part: kick, snare or hat by the part model
+// (analysis/part_model.hpp, fitted by eval/fit_parts.py) on where and how the added power lies
+// (analysis/part_features.hpp); `other` when the hit added nothing.
 // Audio thread: analyse(); prepare() allocates.
 #pragma once
 
@@ -21,6 +23,7 @@
 #include "tactus/analysis/added_spectrum.hpp"
 #include "tactus/analysis/brightness.hpp"
 #include "tactus/analysis/drum_part.hpp"
+#include "tactus/analysis/part_features.hpp"
 
 namespace tactus {
 
@@ -29,18 +32,12 @@ struct HitSettings {
     double settle_ms = 20;  // onset -> its part decided
 };
 
-// One power spectrum stream: its bins, their width.
-struct SpectrumShape {
-    int bins = 0;
-    double bin_hz = 0;
-};
-
 class HitAnalysis {
   public:
     // `longest_wait_samples`: the most analysis samples an onset's start can lie before the
     // frame that decides it.
     // `high_band`: the input has the 6-10 kHz band (analysis/band_power.hpp); without it the
-    // part reads the fast spectrum's top in its place and never says `other`.
+    // part model cannot be read, and a rule on the fast spectrum's band shares decides.
     void prepare(SpectrumShape fast, SpectrumShape fine, double sample_rate_hz, int hop_samples,
                  int longest_wait_samples, bool high_band, const HitSettings& settings);
     void reset() noexcept;
@@ -63,15 +60,18 @@ class HitAnalysis {
     DrumPart part() const { return part_; }
     // The latest hit's part was decided this frame.
     bool part_decided() const { return part_decided_; }
+    // What the latest decided part was read from (analysis/part_features.hpp).
+    std::span<const float> part_features() const { return features_.values(); }
 
   private:
-    DrumPart classify() const noexcept;
+    DrumPart rule_part() const noexcept;
 
     AddedSpectrum fast_, fine_;
     AddedSpectrum loudness_, low_, high_;  // each a spectrum of one bin
     Brightness brightness_;
+    PartFeatures features_;
     std::vector<float> fine_magnitude_;
-    int low_bins_ = 0, mid_bins_ = 0, top_bins_ = 0;  // band edges in fast bins (classify())
+    int low_bins_ = 0, mid_bins_ = 0, top_bins_ = 0;  // band edges in fast bins (rule_part())
     bool has_high_band_ = true;
     double sample_rate_hz_ = 16000;
     int64_t settle_samples_ = 0, hit_start_ = -1;

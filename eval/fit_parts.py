@@ -1,0 +1,219 @@
+#!/usr/bin/python3
+"""Fits the drum part model (src/tactus/analysis/part_model.hpp) and measures drum part accuracy
+inside music, on the music corpus (eval/music_corpus.py).
+
+usage: eval/fit_parts.py BUILD_DIR [--work DIR] [--preset music] [--write-header]
+
+Runs `tactus onsets --part-features` on every mix of the tuning and held-out parts (the corpus is
+built in --work once and cached), matches its onsets to the drum hits as eval/music.py does
+(+-50 ms, one-to-one; where hits coincide the first of kick, snare, hat) and prints, per bed
+level and part, the share of matched onsets whose part tactus names right (kick / snare / hat /
+all): as tactus printed it, and as the model fitted here would; then the same model fitted with two
+of the tuning part's kits left out at a time, measured on those two (the tuning part is what the
+model may be chosen on; the held-out part gives the figures).
+
+The model: multinomial logistic regression (kick, snare, hat) on the features and their pairwise
+products (quadratic terms), standardised, L2-penalised, classes weighted to equal total weight,
+fitted on the onsets matched to a drum hit in the tuning part only (every bed level). Onsets no
+hit matches (the bed's own) are left out: with them as a fourth class, or with the old rule's "no
+drum" gate (little added above 6 kHz), drums were called "other" too often inside music. --write-header writes its
+coefficients to src/tactus/analysis/part_model.hpp; rebuild, then run again to see tactus's own
+figures agree.
+"""
+import argparse
+import collections
+import concurrent.futures
+import pathlib
+import sys
+
+import mir_eval
+import numpy as np
+import scipy.optimize
+
+import music
+import music_corpus
+from shared import read_hits, run
+
+CLASSES = ("kick", "snare", "hat")
+L2 = 1e-3  # per example, on the standardised weights
+HEADER = pathlib.Path(__file__).resolve().parent.parent / "src/tactus/analysis/part_model.hpp"
+
+
+def onsets_with_features(tactus, wav, preset):
+    """(times, tactus's parts, features: one row per onset, nan where undecided)."""
+    rows = [line.split() for line in run([tactus, "onsets", wav, "--preset", preset,
+                                          "--part-features"]).stdout.splitlines() if line.strip()]
+    times = np.array([float(r[0]) for r in rows])
+    return times, [r[3] for r in rows], np.array([[float(v) for v in r[4:]] for r in rows])
+
+
+def read_mix(tactus, directory, entry, preset):
+    """One mix's onsets: features, true class (other where no hit matches), matched flag and
+    tactus's own part."""
+    reference, parts = music.truth(read_hits(directory / f"{entry['name']}.hits.csv"))
+    times, labels, features = onsets_with_features(tactus, directory / f"{entry['name']}.wav",
+                                                   preset)
+    truth = ["other"] * len(times)
+    matched = np.zeros(len(times), bool)
+    for i, j in mir_eval.util.match_events(reference, times, music.TOLERANCE_S):
+        truth[j], matched[j] = parts[i], True
+    return {"bed_db": entry["bed_db"], "kit": entry["kit"], "features": features, "truth": truth, "matched": matched,
+            "tactus": labels}
+
+
+def read_part(tactus, work, part, preset, jobs):
+    directory = pathlib.Path(work) / part
+    manifest = music_corpus.build(work, pathlib.Path(work) / "gm-samples", (part,), jobs)[part]
+    with concurrent.futures.ThreadPoolExecutor(jobs) as pool:
+        return list(pool.map(lambda e: read_mix(tactus, directory, e, preset), manifest["mixes"]))
+
+
+def accuracy(mixes, predict):
+    """{bed level: music.pooled_accuracy} with each mix's labels from predict(mix)."""
+    by_level = collections.defaultdict(list)
+    for mix in mixes:
+        labels = predict(mix)
+        hits = [(k, k) for k in np.flatnonzero(mix["matched"])]
+        by_level[mix["bed_db"]].append(music.count_parts(mix["truth"], labels, hits))
+    return {level: music.pooled_accuracy(by_level[level]) for level in music.LEVELS}
+
+
+def expanded(x):
+    """The features then their pairwise products x_i x_j, i <= j (as part_model.hpp's reader)."""
+    i, j = np.triu_indices(x.shape[1])
+    return np.hstack([x, x[:, i] * x[:, j]])
+
+
+def fit(x, y):
+    """(mean, scale, weights [class][feature], bias [class]) of the multinomial logistic model."""
+    mean, scale = x.mean(axis=0), x.std(axis=0) + 1e-9
+    z = (x - mean) / scale
+    n, d = z.shape
+    k = len(CLASSES)
+    counts = np.bincount(y, minlength=k)
+    sample_weight = (n / (k * np.maximum(counts, 1)))[y]
+    onehot = np.eye(k)[y]
+
+    def loss(theta):
+        w, b = theta[:k * d].reshape(k, d), theta[k * d:]
+        logits = z @ w.T + b
+        logits -= logits.max(axis=1, keepdims=True)
+        p = np.exp(logits)
+        p /= p.sum(axis=1, keepdims=True)
+        value = -np.sum(sample_weight * np.log(p[np.arange(n), y] + 1e-300)) / n
+        value += 0.5 * L2 * np.sum(w * w)
+        g = (sample_weight[:, None] * (p - onehot)) / n
+        return value, np.concatenate([(g.T @ z + L2 * w).ravel(), g.sum(axis=0)])
+
+    theta = scipy.optimize.minimize(loss, np.zeros(k * d + k), jac=True, method="L-BFGS-B",
+                                    options={"maxiter": 2000}).x
+    return mean, scale, theta[:k * d].reshape(k, d), theta[k * d:]
+
+
+def predictor(model):
+    mean, scale, w, b = model
+
+    def predict(mix):
+        x = mix["features"]
+        labels = ["other"] * len(x)
+        if len(x):
+            scores = ((expanded(x) - mean) / scale) @ w.T + b
+            for i in np.flatnonzero(np.all(np.isfinite(x), axis=1)):
+                labels[i] = CLASSES[int(np.argmax(scores[i]))]
+        return labels
+    return predict
+
+
+def training_set(mixes):
+    """The expanded features and classes of the onsets matched to a hit, decided."""
+    x = np.concatenate([m["features"][m["matched"]] for m in mixes if len(m["features"])])
+    y = np.array([CLASSES.index(t) for m in mixes for t, hit in zip(m["truth"], m["matched"])
+                  if hit])
+    keep = np.all(np.isfinite(x), axis=1)
+    return expanded(x[keep]), y[keep]
+
+
+def floats(values):
+    return ", ".join(f"{v:.9g}" for v in values)
+
+
+def write_header(model, path=HEADER):
+    mean, scale, w, b = model
+    rows = "\n".join(f"    {{{floats(row)}}}," for row in w)
+    path.write_text(f"""// Generated by eval/fit_parts.py (--write-header): do not edit. The drum part model
+// (read by analysis/hit_analysis.cpp), a multinomial logistic regression over
+// analysis/part_features.hpp's numbers and their pairwise products, fitted on the tuning part of
+// the music corpus (eval/music_corpus.py); classes kick, snare, hat, in DrumPart's order.
+#pragma once
+
+#include <array>
+
+#include "tactus/analysis/part_features.hpp"
+
+namespace tactus::part_model {{
+
+inline constexpr int kClasses = {len(CLASSES)};
+// The features, then x_i x_j for i <= j.
+inline constexpr int kTerms = PartFeatures::kCount * (PartFeatures::kCount + 3) / 2;
+inline constexpr std::array<float, kTerms> kMean = {{{floats(mean)}}};
+inline constexpr std::array<float, kTerms> kScale = {{{floats(scale)}}};
+inline constexpr std::array<std::array<float, kTerms>, kClasses> kWeights = {{{{
+{rows}
+}}}};
+inline constexpr std::array<float, kClasses> kBias = {{{floats(b)}}};
+
+}}  // namespace tactus::part_model
+""")
+
+
+def kits_left_out(mixes, kits_out=2):
+    """{bed level: accuracy pooled over the folds}, each fold fitted without `kits_out` kits and
+    measured on them."""
+    kits = sorted({m["kit"] for m in mixes})
+    counts = collections.defaultdict(list)
+    for start in range(0, len(kits), kits_out):
+        out = set(kits[start:start + kits_out])
+        predict = predictor(fit(*training_set([m for m in mixes if m["kit"] not in out])))
+        for mix in mixes:
+            if mix["kit"] in out:
+                hits = [(k, k) for k in np.flatnonzero(mix["matched"])]
+                counts[mix["bed_db"]].append(music.count_parts(mix["truth"], predict(mix), hits))
+    return {level: music.pooled_accuracy(counts[level]) for level in music.LEVELS}
+
+
+def table(results):
+    names = list(results)
+    print("| bed | " + " | ".join(f"{n}: kick / snare / hat / all" for n in names) + " |")
+    print("|---" * (len(names) + 1) + "|")
+    for level in music.LEVELS:
+        cells = [" / ".join(f"{r[level][p]:.3f}" for p in music.PRIORITY + ("all",))
+                 for r in results.values()]
+        print(f"| {music.level_label(level)} | " + " | ".join(cells) + " |")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("build_dir", type=pathlib.Path)
+    parser.add_argument("--work", type=pathlib.Path, default=pathlib.Path("/tmp/tactus-music"))
+    parser.add_argument("--preset", default="music")
+    parser.add_argument("--write-header", action="store_true")
+    parser.add_argument("--jobs", type=int, default=2)
+    args = parser.parse_args()
+    tactus = str(args.build_dir / "bin/tactus")
+    data = {part: read_part(tactus, args.work, part, args.preset, args.jobs)
+            for part in ("tuning", "held-out")}
+    model = fit(*training_set(data["tuning"]))
+    print("tactus as built:")
+    table({part: accuracy(mixes, lambda m: m["tactus"]) for part, mixes in data.items()})
+    print("\nthe model fitted now (tuning part):")
+    table({part: accuracy(mixes, predictor(model)) for part, mixes in data.items()})
+    print("\nfitted with two tuning kits left out, measured on them:")
+    table({"tuning, kits left out": kits_left_out(data["tuning"])})
+    if args.write_header:
+        write_header(model)
+        print(f"\nwrote {HEADER}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
