@@ -36,11 +36,10 @@ void AddedSpectrum::analyse(std::span<const float> powers, int64_t now,
         const int slot = (position_ + frames_ - back) % frames_;
         std::copy_n(ring_.data() + static_cast<size_t>(slot) * bins_, bins_, reference_.data());
     }
+    // Two loops: the first vectorises; the sum keeps its order (bin by bin, in double).
+    for (int k = 0; k < bins_; ++k) added_[k] = std::max(0.0f, powers[k] - reference_[k]);
     double sum = 0;
-    for (int k = 0; k < bins_; ++k) {
-        added_[k] = std::max(0.0f, powers[k] - reference_[k]);
-        sum += added_[k];
-    }
+    for (int k = 0; k < bins_; ++k) sum += added_[k];
     added_sum_ = sum;
 }
 
