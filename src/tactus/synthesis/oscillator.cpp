@@ -51,7 +51,11 @@ double Oscillator::next(double frequency_hz, double square_mix) noexcept {
     if (!std::isfinite(frequency_hz)) frequency_hz = 0.0;  // never let NaN into the phase
     const double fundamental = sin_of_cycles(phase_);
     phase_ += frequency_hz / sample_rate_hz_;
-    phase_ -= std::floor(phase_);
+    // phase - floor(phase): below 2 cycles (any f0 under the rate) a comparison does it exactly.
+    if (phase_ >= 1.0 && phase_ < 2.0)
+        phase_ -= 1.0;
+    else if (!(phase_ >= 0.0 && phase_ < 1.0))
+        phase_ -= std::floor(phase_);
 
     if (!(square_mix > 0.0 && frequency_hz > 0.0)) return fundamental;
 
