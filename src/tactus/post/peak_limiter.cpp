@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "tactus/core/units.hpp"
 
@@ -46,6 +45,7 @@ void PeakLimiter::reset() noexcept {
     slot_ = 0;
     released_gain_ = 1.0;
     box_sum_ = static_cast<double>(lookahead_);
+    fresh_sum_ = 0;
 }
 
 namespace {
@@ -76,7 +76,7 @@ void PeakLimiter::process(float* samples, int count) noexcept {
     double* const delay = delay_.data();
     size_t minimum_head = minimum_head_, minimum_size = minimum_size_, slot = slot_;
     int64_t time = time_;
-    double released_gain = released_gain_, box_sum = box_sum_;
+    double released_gain = released_gain_, box_sum = box_sum_, fresh_sum = fresh_sum_;
     for (int i = 0; i < count; ++i) {
         if (glide_left > 0) {
             if (--glide_left == 0) {
@@ -112,8 +112,11 @@ void PeakLimiter::process(float* samples, int count) noexcept {
         // Box average over the look-ahead, aligned with the delayed sample.
         box_sum += released_gain - held_gain[slot];
         held_gain[slot] = released_gain;
-        if (slot == length - 1)  // re-sum once per look-ahead: no rounding drift, O(1) a sample
-            box_sum = std::accumulate(held_gain, held_gain + length, 0.0);
+        fresh_sum += released_gain;
+        if (slot == length - 1) {  // re-sum once per look-ahead: no rounding drift
+            box_sum = fresh_sum;
+            fresh_sum = 0;
+        }
         const double gain = std::min(1.0, box_sum / static_cast<double>(length));
 
         const double delayed = delay[slot];
@@ -127,7 +130,7 @@ void PeakLimiter::process(float* samples, int count) noexcept {
     glide_left_ = glide_left;
     minimum_head_ = minimum_head, minimum_size_ = minimum_size, slot_ = slot;
     time_ = time;
-    released_gain_ = released_gain, box_sum_ = box_sum;
+    released_gain_ = released_gain, box_sum_ = box_sum, fresh_sum_ = fresh_sum;
 }
 
 }  // namespace tactus
