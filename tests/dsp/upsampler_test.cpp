@@ -1,7 +1,7 @@
 // Upsampler (internal rate -> output rate): factor 1 is the identity; a constant passes at
 // unity; a sine well inside the internal band keeps its level within 0.05 dB, and its images
 // around the internal rate are at least 60 dB down; the output does not depend on how the
-// stream is split into blocks.
+// stream is split into blocks; each factor's output is exactly its taps' sum.
 #include "tactus/dsp/upsampler.hpp"
 
 #include <gtest/gtest.h>
@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "support/signals.hpp"
+#include "tactus/dsp/upsampler_taps.hpp"
 
 namespace tactus {
 namespace {
@@ -43,6 +44,25 @@ double amplitude_at(const std::vector<float>& y, size_t start, double frequency_
 TEST(Upsampler, FactorOneIsTheIdentity) {
     const std::vector<float> x = test::white_noise(1000, 3, 0.5);
     EXPECT_EQ(upsample(x, 1, 64), x);
+}
+
+// Each factor's output is exactly its taps' sum, taken in order in float: output q F + r is
+// sum_i x[q - i] taps[i][r] (the code for each factor, chosen at compile time, is that sum).
+TEST(Upsampler, EveryFactorIsExactlyItsTapsSum) {
+    const std::vector<float> x = test::white_noise(300, 7, 0.5);
+    for (int factor = 2; factor <= Upsampler::kMaxFactor; ++factor) {
+        const auto& taps = upsampler_taps_table(factor).taps;
+        const std::vector<float> y = upsample(x, factor, 37);
+        for (size_t q = 0; q < x.size(); ++q) {
+            for (int r = 0; r < factor; ++r) {
+                float expected = 0.0f;
+                for (size_t i = 0; i < taps.size(); ++i)
+                    expected += (q >= i ? x[q - i] : 0.0f) * taps[i][static_cast<size_t>(r)];
+                ASSERT_EQ(y[q * static_cast<size_t>(factor) + static_cast<size_t>(r)], expected)
+                    << "factor " << factor << ", output " << q << " * F + " << r;
+            }
+        }
+    }
 }
 
 TEST(Upsampler, ConstantPassesAtUnity) {

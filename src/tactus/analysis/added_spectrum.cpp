@@ -22,7 +22,6 @@ void AddedSpectrum::reset() noexcept {
     std::fill(reference_.begin(), reference_.end(), 0.0f);
     std::fill(added_.begin(), added_.end(), 0.0f);
     position_ = 0;
-    added_sum_ = 0;
 }
 
 void AddedSpectrum::analyse(std::span<const float> powers, int64_t now,
@@ -36,12 +35,13 @@ void AddedSpectrum::analyse(std::span<const float> powers, int64_t now,
         const int slot = (position_ + frames_ - back) % frames_;
         std::copy_n(ring_.data() + static_cast<size_t>(slot) * bins_, bins_, reference_.data());
     }
+    for (int k = 0; k < bins_; ++k) added_[k] = std::max(0.0f, powers[k] - reference_[k]);
+}
+
+double AddedSpectrum::added_sum() const noexcept {
     double sum = 0;
-    for (int k = 0; k < bins_; ++k) {
-        added_[k] = std::max(0.0f, powers[k] - reference_[k]);
-        sum += added_[k];
-    }
-    added_sum_ = sum;
+    for (int k = 0; k < bins_; ++k) sum += added_[k];
+    return sum;
 }
 
 }  // namespace tactus

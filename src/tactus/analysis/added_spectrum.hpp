@@ -27,13 +27,13 @@ class AddedSpectrum {
 
     const std::vector<float>& added() const { return added_; }
     const std::vector<float>& reference() const { return reference_; }
-    double added_sum() const { return added_sum_; }  // over every bin
+    // Over every bin, bin by bin in double; summed when asked (most frames read no sum).
+    double added_sum() const noexcept;
 
   private:
     std::vector<float> ring_;  // the last frames_ spectra, bins_ each
     std::vector<float> reference_, added_;
     int bins_ = 0, frames_ = 0, position_ = 0, hop_samples_ = 1, margin_samples_ = 0;
-    double added_sum_ = 0;
 };
 
 }  // namespace tactus

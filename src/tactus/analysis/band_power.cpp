@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "tactus/core/units.hpp"
+#include "tactus/dsp/biquad_cascade.hpp"
 
 namespace tactus {
 
@@ -43,11 +44,12 @@ void BandPower::process(const float* samples, int count) noexcept {
     if (!active_) return;
     // Summed sample by sample into the frame's total: the same order for any block split.
     double energy = energy_[position_];
-    for (int i = 0; i < count; ++i) {
-        double y = samples[i];
-        for (int s = 0; s < section_count_; ++s) y = sections_[s].process(y);
-        energy += y * y;
-    }
+    const auto input = [&](int i) { return static_cast<double>(samples[i]); };
+    const auto add = [&](int, double y) { energy += y * y; };
+    if (section_count_ == 2)
+        cascade_each<2>(sections_.data(), count, input, add);
+    else
+        cascade_each<4>(sections_.data(), count, input, add);
     energy_[position_] = energy;
     samples_[position_] += count;
 }

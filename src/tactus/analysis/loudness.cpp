@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "tactus/core/units.hpp"
 
@@ -23,24 +22,27 @@ void Loudness::reset() noexcept {
     k_weighting_.reset();
     std::fill(squares_.begin(), squares_.end(), 0.0);
     position_ = 0;
-    sum_ = 0.0;
+    sum_ = fresh_sum_ = 0.0;
 }
 
 template <typename Square>
 void Loudness::add(int count, Square square) noexcept {
     const size_t length = squares_.size();
-    double sum = sum_;  // in locals: kept in registers
+    double sum = sum_, fresh = fresh_sum_;  // in locals: kept in registers
     size_t position = position_;
     for (int i = 0; i < count; ++i) {
         const double y2 = square(i);
         sum += y2 - squares_[position];
         squares_[position] = y2;
+        fresh += y2;
         if (++position == length) {  // re-sum once per window: no rounding drift
             position = 0;
-            sum = std::accumulate(squares_.begin(), squares_.end(), 0.0);
+            sum = fresh;
+            fresh = 0.0;
         }
     }
     sum_ = sum;
+    fresh_sum_ = fresh;
     position_ = position;
 }
 

@@ -32,6 +32,9 @@ class Loudness {
     std::vector<double> squares_;  // ring of K-weighted squares, one window long
     size_t position_ = 0;
     double sum_ = 0.0;  // of squares_, kept running
+    // squares_[0 ... position_) summed in order as they are written: at the end of the ring it
+    // is the exact re-sum that ends the drift, without a pass over the window in one sample.
+    double fresh_sum_ = 0.0;
 };
 
 }  // namespace tactus

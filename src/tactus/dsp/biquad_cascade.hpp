@@ -18,17 +18,26 @@
 
 namespace tactus {
 
-namespace detail {
-template <int N>
-void run_cascade(Biquad* sections, float* samples, int count, double gain) noexcept {
+// For i < count: sink(i, the N sections in turn applied to input(i)), in double. The
+// sections are copied into locals (unrolled, states in registers) and written back after.
+template <int N, typename Input, typename Sink>
+void cascade_each(Biquad* sections, int count, Input input, Sink sink) noexcept {
     std::array<Biquad, N> local;
     for (int s = 0; s < N; ++s) local[s] = sections[s];
     for (int i = 0; i < count; ++i) {
-        double x = samples[i] * gain;
+        double x = input(i);
         for (int s = 0; s < N; ++s) x = local[s].process(x);
-        samples[i] = static_cast<float>(x);
+        sink(i, x);
     }
     for (int s = 0; s < N; ++s) sections[s] = local[s];
+}
+
+namespace detail {
+template <int N>
+void run_cascade(Biquad* sections, float* samples, int count, double gain) noexcept {
+    cascade_each<N>(
+        sections, count, [&](int i) { return samples[i] * gain; },
+        [&](int i, double y) { samples[i] = static_cast<float>(y); });
 }
 
 #if defined(__SSE2__)

@@ -21,21 +21,23 @@ void FeatureMapping::configure(const Settings& s, P first, double frames_per_sec
     out_max_ = s[offset(first, 4)];
     curve_ = static_cast<MappingCurve>(static_cast<int>(s[offset(first, 5)]));
     smoothing_ = one_pole_coefficient(s[offset(first, 6)], frames_per_second);
+    log_in_lo_ = std::log(std::max(in_min_, kSmallest));
+    log_in_hi_ = std::log(std::max(in_max_, kSmallest));
+    out_lo_ = std::max(out_min_, kSmallest);
+    out_ratio_ = std::max(out_max_, kSmallest) / out_lo_;
 }
 
 double FeatureMapping::shape(double input) const noexcept {
     double t = 0.0;
     if (curve_ == MappingCurve::log) {
-        const double lo = std::log(std::max(in_min_, kSmallest));
-        const double hi = std::log(std::max(in_max_, kSmallest));
+        const double lo = log_in_lo_, hi = log_in_hi_;
         t = hi != lo ? (std::log(std::max(input, kSmallest)) - lo) / (hi - lo) : 0.0;
     } else {
         t = in_max_ != in_min_ ? (input - in_min_) / (in_max_ - in_min_) : 0.0;
     }
     t = std::clamp(t, 0.0, 1.0);
     if (curve_ == MappingCurve::lin) return out_min_ + t * (out_max_ - out_min_);
-    const double lo = std::max(out_min_, kSmallest), hi = std::max(out_max_, kSmallest);
-    return lo * std::pow(hi / lo, t);
+    return out_lo_ * std::pow(out_ratio_, t);
 }
 
 double FeatureMapping::input_for(double output) const noexcept {

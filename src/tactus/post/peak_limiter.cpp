@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "tactus/core/units.hpp"
 
@@ -46,66 +45,92 @@ void PeakLimiter::reset() noexcept {
     slot_ = 0;
     released_gain_ = 1.0;
     box_sum_ = static_cast<double>(lookahead_);
+    fresh_sum_ = 0;
 }
+
+namespace {
+// The static curve for the levels now (PeakLimiter::curve).
+double curve_at(double peak, double threshold, double ceiling) noexcept {
+    if (peak <= threshold) return peak;
+    const double knee = ceiling - threshold;
+    if (knee <= 0.0) return ceiling;
+    const double u = (peak - threshold) / knee;
+    return threshold + knee * u / (1.0 + u);
+}
+}  // namespace
 
 double PeakLimiter::curve(double peak) const noexcept {
-    if (peak <= threshold_) return peak;
-    const double knee = ceiling_ - threshold_;
-    if (knee <= 0.0) return ceiling_;
-    const double u = (peak - threshold_) / knee;
-    return threshold_ + knee * u / (1.0 + u);
+    return curve_at(peak, threshold_, ceiling_);
 }
 
+// The state in locals for the block (kept in registers), written back at its end.
 void PeakLimiter::process(float* samples, int count) noexcept {
     const size_t capacity = minimum_.size();
     const auto length = static_cast<size_t>(lookahead_);
+    const int64_t lookahead = lookahead_;
+    const double release = release_;
+    double drive = drive_, threshold = threshold_, ceiling = ceiling_;
+    int glide_left = glide_left_;
+    std::pair<int64_t, double>* const minimum = minimum_.data();
+    double* const held_gain = held_gain_.data();
+    double* const delay = delay_.data();
+    size_t minimum_head = minimum_head_, minimum_size = minimum_size_, slot = slot_;
+    int64_t time = time_;
+    double released_gain = released_gain_, box_sum = box_sum_, fresh_sum = fresh_sum_;
     for (int i = 0; i < count; ++i) {
-        if (glide_left_ > 0) {
-            if (--glide_left_ == 0) {
-                drive_ = target_.drive, threshold_ = target_.threshold, ceiling_ = target_.ceiling;
+        if (glide_left > 0) {
+            if (--glide_left == 0) {
+                drive = target_.drive, threshold = target_.threshold, ceiling = target_.ceiling;
             } else {
-                drive_ += step_.drive, threshold_ += step_.threshold, ceiling_ += step_.ceiling;
+                drive += step_.drive, threshold += step_.threshold, ceiling += step_.ceiling;
             }
         }
         double x = samples[i];
         if (!std::isfinite(x)) x = 0.0;
-        x *= drive_;
+        x *= drive;
         const double magnitude = std::abs(x);
-        const double wanted = magnitude > threshold_ ? curve(magnitude) / magnitude : 1.0;
+        const double wanted =
+            magnitude > threshold ? curve_at(magnitude, threshold, ceiling) / magnitude : 1.0;
 
         // Sliding minimum of the wanted gain over the last lookahead + 1 samples: every gain
         // averaged into a sample's output below has seen that sample's wish.
         // Ring positions wrap by comparison: no integer division per sample.
         const auto wrap = [capacity](size_t i) { return i >= capacity ? i - capacity : i; };
-        while (minimum_size_ > 0 &&
-               minimum_[wrap(minimum_head_ + minimum_size_ - 1)].second >= wanted)
-            --minimum_size_;
-        minimum_[wrap(minimum_head_ + minimum_size_)] = {time_, wanted};
-        ++minimum_size_;
-        if (minimum_[minimum_head_].first < time_ - lookahead_) {
-            minimum_head_ = wrap(minimum_head_ + 1);
-            --minimum_size_;
+        while (minimum_size > 0 && minimum[wrap(minimum_head + minimum_size - 1)].second >= wanted)
+            --minimum_size;
+        minimum[wrap(minimum_head + minimum_size)] = {time, wanted};
+        ++minimum_size;
+        if (minimum[minimum_head].first < time - lookahead) {
+            minimum_head = wrap(minimum_head + 1);
+            --minimum_size;
         }
-        const double held = minimum_[minimum_head_].second;
+        const double held = minimum[minimum_head].second;
 
         // Instant attack, one-pole release, never above the held gain.
-        released_gain_ = std::min(held, held + release_ * (released_gain_ - held));
+        released_gain = std::min(held, held + release * (released_gain - held));
 
         // Box average over the look-ahead, aligned with the delayed sample.
-        const size_t slot = slot_;
-        box_sum_ += released_gain_ - held_gain_[slot];
-        held_gain_[slot] = released_gain_;
-        if (slot == length - 1)  // re-sum once per look-ahead: no rounding drift, O(1) a sample
-            box_sum_ = std::accumulate(held_gain_.begin(), held_gain_.end(), 0.0);
-        const double gain = std::min(1.0, box_sum_ / static_cast<double>(length));
+        box_sum += released_gain - held_gain[slot];
+        held_gain[slot] = released_gain;
+        fresh_sum += released_gain;
+        if (slot == length - 1) {  // re-sum once per look-ahead: no rounding drift
+            box_sum = fresh_sum;
+            fresh_sum = 0;
+        }
+        const double gain = std::min(1.0, box_sum / static_cast<double>(length));
 
-        const double delayed = delay_[slot];
-        delay_[slot] = x;
-        const double y = std::clamp(delayed * gain, -ceiling_, ceiling_);
+        const double delayed = delay[slot];
+        delay[slot] = x;
+        const double y = std::clamp(delayed * gain, -ceiling, ceiling);
         samples[i] = static_cast<float>(y);
-        ++time_;
-        if (++slot_ == length) slot_ = 0;
+        ++time;
+        if (++slot == length) slot = 0;
     }
+    drive_ = drive, threshold_ = threshold, ceiling_ = ceiling;
+    glide_left_ = glide_left;
+    minimum_head_ = minimum_head, minimum_size_ = minimum_size, slot_ = slot;
+    time_ = time;
+    released_gain_ = released_gain, box_sum_ = box_sum, fresh_sum_ = fresh_sum;
 }
 
 }  // namespace tactus

@@ -57,6 +57,9 @@ class PeakLimiter {
     int64_t time_ = 0;
     size_t slot_ = 0;  // time_ modulo the look-ahead
     double released_gain_ = 1, box_sum_ = 0;
+    // held_gain_[0 ... slot_) summed in order as they are written: at the ring's end, the exact
+    // re-sum that ends the drift, without a pass over the look-ahead in one sample.
+    double fresh_sum_ = 0;
 };
 
 }  // namespace tactus

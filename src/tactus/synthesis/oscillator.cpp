@@ -51,7 +51,11 @@ double Oscillator::next(double frequency_hz, double square_mix) noexcept {
     if (!std::isfinite(frequency_hz)) frequency_hz = 0.0;  // never let NaN into the phase
     const double fundamental = sin_of_cycles(phase_);
     phase_ += frequency_hz / sample_rate_hz_;
-    phase_ -= std::floor(phase_);
+    // phase - floor(phase): below 2 cycles (any f0 under the rate) a comparison does it exactly.
+    if (phase_ >= 1.0 && phase_ < 2.0)
+        phase_ -= 1.0;
+    else if (!(phase_ >= 0.0 && phase_ < 1.0))
+        phase_ -= std::floor(phase_);
 
     if (!(square_mix > 0.0 && frequency_hz > 0.0)) return fundamental;
 
@@ -64,15 +68,26 @@ double Oscillator::next(double frequency_hz, double square_mix) noexcept {
     const int last_harmonic =
         std::max(1, static_cast<int>(std::min(harmonic_limit_hz_ / frequency_hz, kMostHarmonics)));
     const double fade_per_hz = 0.5 / frequency_hz;  // multiplications: no division per harmonic
-    for (int k = 1; k <= last_harmonic; k += 2) {
-        const double weight =
-            k == 1 ? 1.0 : std::min(1.0, (harmonic_limit_hz_ - k * frequency_hz) * fade_per_hz);
-        const auto odd = static_cast<size_t>(k / 2);
-        square +=
-            weight * current * (odd < kOddReciprocals.size() ? kOddReciprocals[odd] : 1.0 / k);
+    const auto next = [&] {
         const double next_harmonic = two_cos * current - previous;
         previous = current;
         current = next_harmonic;
+    };
+    square += current;  // k = 1: weight 1 and 1 / k = 1, both products exact
+    next();
+    // The harmonics with a tabled reciprocal, then (absurdly low f0) the others.
+    const int last_tabled =
+        std::min(last_harmonic, static_cast<int>(2 * kOddReciprocals.size() - 1));
+    int k = 3;
+    for (; k <= last_tabled; k += 2) {
+        const double weight = std::min(1.0, (harmonic_limit_hz_ - k * frequency_hz) * fade_per_hz);
+        square += weight * current * kOddReciprocals[static_cast<size_t>(k / 2)];
+        next();
+    }
+    for (; k <= last_harmonic; k += 2) {
+        const double weight = std::min(1.0, (harmonic_limit_hz_ - k * frequency_hz) * fade_per_hz);
+        square += weight * current * (1.0 / k);
+        next();
     }
     square *= 4.0 / kPi;
     return fundamental + square_mix * (square - fundamental);
