@@ -175,6 +175,36 @@ TEST_F(PdExternal, ThruFollowsTheLatencyWhenTheLookAheadChanges) {
         ASSERT_EQ(pd[2][i], thru[i]) << "sample " << i << ", latency " << before << " -> " << after;
 }
 
+// `reset` mid-file starts the object again from silence: the vibration is the engine's with
+// Engine::reset at the block Pd delivers it before, and the thru outlet's delay line is
+// cleared too (the music before the reset does not come out after it).
+TEST_F(PdExternal, ResetClearsTheVibrationAndTheThruDelayLine) {
+    constexpr int kBlock = 400;  // the reset is due inside it (Pd delivers it before)
+    const double at_ms = (kBlock + 0.5) * kPdBlock / kRateHz * 1000;
+    const auto pd = run_pd({}, fmt::format("{:.6f} tactus-msg reset;", at_ms));
+    ASSERT_EQ(pd.size(), 3u) << pd_log_;
+
+    Engine engine;
+    engine.prepare(kRateHz, kPdBlock);
+    const auto latency = static_cast<size_t>(engine.latency());
+    const size_t split = static_cast<size_t>(kBlock) * kPdBlock;
+    ASSERT_GT(*std::max_element(input_.begin() + static_cast<ptrdiff_t>(split - latency),
+                                input_.begin() + static_cast<ptrdiff_t>(split)),
+              0.01f)
+        << "music in the delay line when the reset comes";
+    std::vector<float> vibration(input_.size());
+    for (size_t done = 0; done < input_.size(); done += kPdBlock) {
+        if (done == split) engine.reset();
+        const int n = static_cast<int>(std::min<size_t>(kPdBlock, input_.size() - done));
+        engine.process(input_.data() + done, vibration.data() + done, n);
+    }
+    EXPECT_LE(largest_difference(pd[0], vibration), kTolerance);
+    for (size_t i = 0; i < input_.size(); ++i) {
+        const bool silent = i < latency || (i >= split && i < split + latency);
+        ASSERT_EQ(pd[2][i], silent ? 0.0f : input_[i - latency]) << "sample " << i;
+    }
+}
+
 // A message in the middle of the file acts as Engine::set() at the block Pd delivers it before:
 // from there the output is the engine's with the change, before it the defaults' output.
 TEST_F(PdExternal, AMessageMidFileActsAsTheEnginesSetFromItsBlock) {
