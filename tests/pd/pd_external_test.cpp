@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <set>
@@ -40,6 +41,14 @@ std::vector<std::vector<float>> read_channels(const std::filesystem::path& path)
     for (size_t i = 0; i < interleaved.size(); ++i)
         channels[i % channels.size()].push_back(interleaved[i]);
     return channels;
+}
+
+// Under ThreadSanitizer the instrumented tactus~ needs the TSan runtime inside pd, which is not
+// instrumented: ctest's environment names it (TACTUS_HOST_PRELOAD, tests/CMakeLists.txt), and it
+// is preloaded into pd alone (a shell does not run with it: sh and bash crash).
+std::string host_preload() {
+    const char* runtime = std::getenv("TACTUS_HOST_PRELOAD");
+    return runtime && *runtime ? std::string("LD_PRELOAD=") + runtime + " " : std::string();
 }
 
 float largest_difference(const std::vector<float>& a, const std::vector<float>& b) {
@@ -79,10 +88,10 @@ class PdExternal : public Cli {
                                            const std::string& prefix = "") {
         const std::filesystem::path guard_dir =
             std::filesystem::path(TACTUS_PD_GUARD).parent_path();
-        std::string command = prefix + TACTUS_PD + " -nogui -batch -noaudio -r " +
-                              std::to_string(static_cast<int>(kRateHz)) + " -path " +
-                              TACTUS_PD_DIR + "/.. -path " + guard_dir.string() + " -open " +
-                              TACTUS_SOURCE_DIR + "/tests/pd/render_through.pd";
+        std::string command =
+            (prefix.empty() ? host_preload() : prefix) + TACTUS_PD + " -nogui -batch -noaudio -r " +
+            std::to_string(static_cast<int>(kRateHz)) + " -path " + TACTUS_PD_DIR + "/.. -path " +
+            guard_dir.string() + " -open " + TACTUS_SOURCE_DIR + "/tests/pd/render_through.pd";
         for (const std::string& m : messages) command += " -send \"tactus-msg " + m + "\"";
         if (!score.empty()) {
             std::ofstream(dir_ / "score.txt") << score;
@@ -317,7 +326,7 @@ TEST_F(PdExternal, PerformNeitherAllocatesNorLocks) {
 // The help and example patches, as installed beside the external, open with every object made.
 TEST_F(PdExternal, HelpAndExamplePatchesOpenCleanly) {
     for (const std::string patch : {"tactus~-help.pd", "tactus~-example.pd"}) {
-        const std::string command = std::string(TACTUS_PD) + " -nogui -batch -noaudio -path " +
+        const std::string command = host_preload() + TACTUS_PD + " -nogui -batch -noaudio -path " +
                                     TACTUS_PD_DIR + "/.. -open " + TACTUS_PD_DIR + "/" + patch +
                                     " -send \"pd quit\" 2>" + (dir_ / "pd.txt").string();
         ASSERT_EQ(std::system(command.c_str()), 0) << command;
