@@ -35,10 +35,10 @@ test-asan: setup
 	cmake --build --preset asan -j $(JOBS)
 	ctest --preset asan -j $(JOBS)
 
-# The tests labelled `threads` (engine, live front end, plugin core) under ThreadSanitizer
-# (build/tsan): only the targets they need are built. Races inside Debian's libraries are
-# suppressed in tsan.supp; the realtime, Pd and plugin-host tests are left out as under ASan
-# (TSan owns malloc; pd and the LV2 ttl generator are not instrumented).
+# The tests labelled `threads` (engine, live front end, tactus~ in pd, the plugin in its hosts)
+# under ThreadSanitizer (build/tsan): only the targets they need are built. pd and Ardour's VST3
+# scanner, not instrumented, run with the TSan runtime preloaded. Races inside Debian's libraries
+# are suppressed in tsan.supp; the tests that replace malloc are left out (TSan owns it).
 test-tsan: setup
 	cmake --preset tsan
 	cmake --build --preset tsan -j $(JOBS)

@@ -77,6 +77,7 @@ class Object {
     void save(const std::string& path) const;
     std::filesystem::path beside_patch(const std::string& name) const;
     void prepare(double sample_rate_hz, int block);
+    void reset() noexcept;
     bool running() const { return engine_ && canvas_dspstate && !stale_; }
 
     t_object* owner_;
@@ -151,6 +152,15 @@ void Object::prepare(double sample_rate_hz, int block) {
     // A structural change moves the latency without a new prepare: room for the longest.
     thru_.prepare(1, max_latency_samples(sample_rate_hz), engine_->latency());
     stale_ = false;
+}
+
+// `reset`: silence from here, as after a new prepare: the engine, the -thru delay line (or the
+// music heard before would come out after it) and the onsets waiting for their part.
+void Object::reset() noexcept {
+    if (!engine_) return;
+    engine_->reset();
+    thru_.reset();
+    decisions_.reset();
 }
 
 void Object::dsp(t_signal** signals) {
@@ -340,7 +350,7 @@ void Object::message(t_symbol* selector, int argc, t_atom* argv) {
             engine_->trigger(argc ? number(0) : settings_[P::frequency_out_max],
                              argc ? number(1) : 1.0);
         } else if (name == "reset" && argc == 0) {
-            if (engine_) engine_->reset();
+            reset();
         } else if (name == "print" && argc == 0) {
             print();
         } else if (name == "save" && argc == 1) {

@@ -13,7 +13,7 @@
 #include "audio_view.hpp"
 #include "parts.hpp"
 #include "settings.hpp"
-#include "tactus/engine/analysis_rows.hpp"
+#include "tactus/io/analysis_rows.hpp"
 #include "tactus/io/preset.hpp"
 #include "tactus/io/run_file.hpp"
 

@@ -15,8 +15,8 @@
 #include "common.hpp"
 #include "global_options.hpp"
 #include "pipeline_options.hpp"
-#include "tactus/engine/analysis_rows.hpp"
 #include "tactus/io/actuator_file.hpp"
+#include "tactus/io/analysis_rows.hpp"
 #include "tactus/io/render_info.hpp"
 #include "tactus/io/text_output.hpp"
 

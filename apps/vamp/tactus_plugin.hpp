@@ -1,6 +1,6 @@
 // tactus as a Vamp plugin (vamp-plugin-sdk), for Sonic Visualiser and other Vamp hosts: the
 // engine's analysis, vibration program and sensation levels over the waveform. The outputs are
-// the columns of `tactus analyze` (engine/analysis_rows.hpp), on the analysis hop grid; the
+// the columns of `tactus analyze` (io/analysis_rows.hpp), on the analysis hop grid; the
 // onsets are those `tactus onsets` prints. Programs are the presets found (default music), the
 // parameters the parameter table, generated from it. The vibration is not compensated for an
 // actuator, and is metered through the default one (voice-coil), as `tactus analyze` does
@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "tactus/engine/analysis_rows.hpp"
+#include "tactus/io/analysis_rows.hpp"
 #include "tactus/params/params.hpp"
 
 namespace tactus::vamp {

@@ -1,18 +1,16 @@
 // The LV2 plugin in a real host (lv2_host.hpp, on lilv): at its defaults and at each of its
 // presets it renders what `tactus render` renders, its latency port says the engine's latency,
 // a control port changed between blocks goes through the engine's live path, and a state saved
-// by lilv in one instance restores bit for bit in another, and no program selection a host
-// may make from its audio thread allocates or locks.
+// by lilv in one instance restores bit for bit in another. (No program selection a host may
+// make from its audio thread allocates or locks: lv2_realtime_test.cpp.)
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <cstdio>
 #include <thread>
 
-#include "lv2/lv2_programs.h"  // DPF's copy of KXStudio's programs extension
 #include "lv2_host.hpp"
 #include "plugin_reference.hpp"
-#include "support/allocation_counter.hpp"
 #include "support/run_cli.hpp"
 #include "tactus/io/preset.hpp"
 #include "tactus/params/params.hpp"
@@ -145,36 +143,6 @@ TEST_F(Lv2Plugin, StateSavedByTheHostRestoresBitForBit) {
     Lv2Instance fresh(world_, rate, kBlock);
     fresh.activate();
     EXPECT_GT(max_difference(play(fresh, drums_)[0], first[0]), 1e-2);  // the state mattered
-}
-
-// A host may call a programs interface's select_program from its audio thread, and DPF's (with
-// the full state) builds the plugin's state text there. So the bundle has its programs as LV2
-// presets only (the test above loads each): neither its binary nor its ttl offers the programs
-// interface. Were one offered, selecting each program here, on the host's audio thread between
-// two runs, must allocate and lock nothing.
-TEST_F(Lv2Plugin, NoProgramSelectionAllocatesOrLocksOnTheAudioThread) {
-    Lv2Instance instance(world_, drums_.sample_rate_hz, kBlock);
-    instance.activate();
-    instance.run(nullptr, nullptr, 0);
-    const auto* programs = static_cast<const LV2_Programs_Interface*>(
-        instance.extension_data(LV2_PROGRAMS__Interface));
-    for (uint32_t index = 0; programs; ++index) {
-        const LV2_Program_Descriptor* program = programs->get_program(instance.handle(), index);
-        if (!program) break;
-        const uint32_t bank = program->bank, number = program->program;
-        reset_counts();
-        {
-            Guard guard;
-            programs->select_program(instance.handle(), bank, number);
-        }
-        EXPECT_EQ(g_allocator_calls.load(), 0) << "allocator calls selecting program " << index;
-        EXPECT_EQ(g_mutex_locks.load(), 0) << "locks selecting program " << index;
-        instance.run(nullptr, nullptr, 0);
-    }
-    EXPECT_EQ(programs, nullptr) << "the LV2 binary offers the programs interface";
-    EXPECT_FALSE(
-        lilv_plugin_has_extension_data(world_.plugin(), world_.node(LV2_PROGRAMS__Interface)))
-        << "the LV2 bundle's ttl lists the programs interface";
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-#include "tactus/engine/analysis_rows.hpp"
+#include "tactus/io/analysis_rows.hpp"
 
 #include <cmath>
 #include <utility>
