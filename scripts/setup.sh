@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Installs, from Debian packages, whatever tactus needs to build, test and run its demo.
 # Idempotent: only missing packages are installed; uses sudo when not root.
+# usage: scripts/setup.sh [arm]   (arm: also the cross toolchains, qemu-user-static and the arm64
+# and armhf -dev packages the library, the command line, tactus~ and their tests need, for
+# `make test-arm`; the two architectures are added to dpkg when missing)
 set -euo pipefail
 
 packages=(
@@ -18,14 +21,29 @@ packages=(
   libcpp-httplib-dev chromium-driver python3-selenium
 )
 
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+if [ "${1:-}" = arm ]; then
+  packages+=(qemu-user-static crossbuild-essential-arm64 crossbuild-essential-armhf)
+  for arch in arm64 armhf; do
+    if ! dpkg --print-foreign-architectures | grep -qx "$arch"; then
+      echo "setup: adding the $arch architecture to dpkg" >&2
+      $sudo dpkg --add-architecture "$arch"  # its packages are then missing: apt-get update below
+    fi
+    # libvorbis-dev brings libogg-dev, libgmock-dev libgtest-dev; the header-only packages
+    # (nlohmann-json, CLI11, readerwriterqueue, puredata-dev) are the host's.
+    for p in libsndfile1-dev libfftw3-dev libvorbis-dev libtomlplusplus-dev libfmt-dev libgmock-dev; do
+      packages+=("$p:$arch")
+    done
+  done
+fi
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 [ ${#missing[@]} -eq 0 ] && exit 0
 
-sudo=""
-[ "$(id -u)" -eq 0 ] || sudo="sudo"
 echo "setup: installing ${missing[*]}" >&2
 $sudo apt-get update -qq
 DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2

@@ -1,6 +1,7 @@
 // ScopedFlushDenormals: inside its scope a product that would be denormal is 0 and a denormal
-// input counts as 0; outside, and after it, arithmetic is IEEE again. The aarch64 build is
-// checked by tests/dsp/denormals_aarch64.sh (the instructions clang emits for that target).
+// input counts as 0; outside, and after it, arithmetic is IEEE again. Runs for real on arm64 and
+// armhf under qemu-user (make test-arm); tests/dsp/denormals_aarch64.sh checks the instructions
+// clang emits for aarch64 in every build.
 #include "tactus/dsp/denormals.hpp"
 
 #include <gtest/gtest.h>
