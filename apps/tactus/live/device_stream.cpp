@@ -184,11 +184,6 @@ std::string DeviceStream::runs() const {
 }
 
 DeviceStream::~DeviceStream() {
-    // A lost stream may still be closing on RtAudio's thread: closing it here as well would race.
-    for (auto waited = std::chrono::milliseconds(0);
-         lost_ && !jack_ && audio_ && audio_->isStreamOpen() && waited < kSilentDevice;
-         waited += std::chrono::milliseconds(20))
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
     stop();
     jack_.reset();
     try {
@@ -221,9 +216,8 @@ void DeviceStream::stop() noexcept {
         jack_->stop();
         return;
     }
-    // Aborted, not drained: RtAudio's JACK stopStream() waits for its callback's signal on a
-    // condition without holding the mutex, and misses it when the callback runs first (the
-    // program then hangs on exit). Every caller lets the tail play out before it stops.
+    // Aborted, not drained: every caller lets the tail play out before it stops, and a lost
+    // device has nothing left to drain.
     try {
         if (audio_->isStreamRunning()) audio_->abortStream();
     } catch (const RtAudioError&) {
