@@ -2,7 +2,8 @@
 // its output's ending: .ahap (Apple Core Haptics), .haptic (Meta Haptics SDK), .android.json
 // (Android VibrationEffect.createWaveform), .ogg (the sound with the vibration as its last
 // channels and ANDROID_HAPTIC=<n>, for Android's haptic-coupled playback). One render feeds
-// every output (src/tactus/export), normalised as --normalise and --gain-db say.
+// every output (src/tactus/export), normalised as --normalise and --gain-db say; a sustained
+// sound left unfelt is said as render says it.
 #include "export.hpp"
 
 #include <fmt/format.h>
@@ -24,6 +25,7 @@
 #include "tactus/export/normalisation.hpp"
 #include "tactus/export/vorbis_writer.hpp"
 #include "tactus/io/text_output.hpp"
+#include "unfelt_sound.hpp"
 
 namespace tactus::cli {
 namespace {
@@ -88,7 +90,14 @@ void export_files(const ExportOptions& o) {
             ogg->write(channels.data(), frames);
         };
     Progress progress("export");
-    HapticTrack track = render_haptic_track(o.input, engine, sink, with_progress(progress));
+    UnfeltSound unfelt(settings[P::mapping_gate_db]);
+    RunCallbacks callbacks = with_progress(progress);
+    callbacks.on_output = [&](const float* const* vibration, int frames) {
+        unfelt.on_output(vibration, engine.actuators(), frames);
+    };
+    HapticTrack track = render_haptic_track(
+        o.input, engine, sink, callbacks,
+        [&](const AnalysisFrame& frame) { unfelt.on_loudness(frame.features.loudness_db); });
     track.info = info;
     normalise(track, normalisation);
     if (ogg_path && !ogg)
@@ -104,6 +113,10 @@ void export_files(const ExportOptions& o) {
     }
     if (ogg) ogg->commit();
     for (TextOutput& text : texts) text.commit();
+    if (const std::string warning =
+            unfelt.warning(o.input, engine.sample_rate_hz(), settings[P::envelope_sustain] != 0);
+        !warning.empty())
+        note(warning);
     for (size_t i = 0; i < o.outputs.size(); ++i)
         note(fmt::format("{}: {:.3f} s, {} onsets{}", o.outputs[i], track.duration_s(),
                          track.onsets.size(),

@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <iostream>
-#include <limits>
 #include <map>
 #include <optional>
 #include <thread>
@@ -39,21 +38,19 @@ struct RenderOptions {
 
 using Job = BatchJob;
 
-// The pulses a render triggers and the loudest its input got (for the summary and the warnings
+// The pulses a render triggers (for the summary) and the sound it left unfelt (the warnings
 // that audible input gave no vibration, in whole or for a long stretch).
 class RenderStats final : public FrameObserver {
   public:
     explicit RenderStats(double gate_db) : unfelt(gate_db) {}
     void on_frame(const Features& features, const ControlFrame& control) noexcept override {
         onsets += control.trigger;
-        loudest_db = std::max(loudest_db, features.loudness_db);
         unfelt.on_loudness(features.loudness_db);
     }
     FeatureSet reads() const noexcept override {
         return {.loudness = true, .spectrum = false, .pitch = false};
     }
     int onsets = 0;
-    double loudest_db = -std::numeric_limits<double>::infinity();
     UnfeltSound unfelt;
 };
 
@@ -78,13 +75,8 @@ std::string render_one(const Job& job, const Settings& settings,
     RenderStats stats(settings[P::mapping_gate_db]);
     engine.set_observer(&stats);
     std::optional<AudioWriter> writer;  // opened at the input's sample rate
-    float peak = 0.0f;
     const auto write = [&](const float* const* v, int n) {
-        float block_peak = 0.0f;
-        for (int c = 0; c < channels; ++c)
-            for (int i = 0; i < n; ++i) block_peak = std::max(block_peak, std::abs(v[c][i]));
-        peak = std::max(peak, block_peak);
-        stats.unfelt.on_output(block_peak, n);
+        stats.unfelt.on_output(v, channels, n);
         writer->write(v, n);
     };
     RenderInfo info = how;
@@ -98,27 +90,15 @@ std::string render_one(const Job& job, const Settings& settings,
         job.input, engine, {.on_output = write, .on_progress = on_progress, .on_start = open},
         RunTail::ring_out);
     writer->commit();
-    // A drone or a tone that fades in has no onset: a preset that pulses only at onsets leaves it
-    // silent. Say so rather than hand back digital silence without a word.
-    if (peak == 0 && stats.loudest_db > settings[P::mapping_gate_db])
-        note(fmt::format(
-            "tactus: warning: {}: the input is audible (loudness up to {:.0f} dB) but gave no "
-            "vibration: it has no onset for the pulses; for sustained sounds try --preset "
-            "sustained",
-            job.input.string(), stats.loudest_db));
-    // A sustained sound after its onset (an explosion's rumble) gets one pulse from a preset of
-    // discrete pulses, and then nothing: one line per file, naming the longest such stretch.
-    else if (const double unfelt_s = stats.unfelt.longest_frames() / summary.sample_rate_hz;
-             unfelt_s >= UnfeltSound::kLongStretchS && settings[P::envelope_sustain] == 0)
-        note(fmt::format(
-            "tactus: warning: {}: {:.1f} s of sound from {:.1f} s on gave no vibration: the "
-            "preset pulses only at onsets; for sustained sounds try --preset sustained",
-            job.input.string(), unfelt_s,
-            stats.unfelt.longest_start_frame() / summary.sample_rate_hz));
+    if (const std::string warning = stats.unfelt.warning(job.input.string(), summary.sample_rate_hz,
+                                                         settings[P::envelope_sustain] != 0);
+        !warning.empty())
+        note(warning);
     return fmt::format(
         "{}: {:.2f} s at {:g} Hz, {} pulses, peak {:.1f} dBFS, {} channel(s)", job.output.string(),
         (summary.frames + summary.tail_frames) / summary.sample_rate_hz, summary.sample_rate_hz,
-        stats.onsets, peak > 0 ? 20 * std::log10(peak) : -INFINITY, channels);
+        stats.onsets, stats.unfelt.peak() > 0 ? 20 * std::log10(stats.unfelt.peak()) : -INFINITY,
+        channels);
 }
 
 // Frames in all inputs, for the progress bar (unreadable inputs count 0 and fail later).

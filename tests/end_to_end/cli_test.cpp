@@ -241,8 +241,9 @@ TEST_F(Cli, SustainedSoundsWarnWithoutVibrationAndTheSustainedPresetFeelsThem) {
 }
 
 // An explosion: a low rumble that starts at once and lasts 2 s. The default preset gives its
-// onset one pulse and then nothing, and render says so in one line naming the preset that
-// follows loudness; that preset vibrates all through the rumble. A drum loop gets no warning.
+// onset one pulse and then nothing, and render and export say so in the same line naming the
+// preset that follows loudness; that preset vibrates all through the rumble. A drum loop gets no
+// warning.
 TEST_F(Cli, ARumbleAfterItsOnsetWarnsOnceAndTheSustainedPresetFeelsItThrough) {
     const double rate = 44100;
     const auto at = [&](double seconds) { return static_cast<size_t>(seconds * rate); };
@@ -297,6 +298,26 @@ TEST_F(Cli, ARumbleAfterItsOnsetWarnsOnceAndTheSustainedPresetFeelsItThrough) {
     for (const float p : felt) EXPECT_GT(p, 0.2f);  // -14 dBFS and louder, every 100 ms
 
     r = run("render " + kAmen + " -o " + pulses.string() + " --force");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+
+    // A designer exporting the explosion is told the same, once for all its outputs, after
+    // they are written (the .ahap's intensity: the onset's pulse, then nothing).
+    const fs::path ahap = dir_ / "rumble.ahap", android = dir_ / "rumble.android.json";
+    r = run("export " + input.string() + " -o " + ahap.string() + " -o " + android.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string warning = "tactus: warning: " + input.string() +
+                                ": 1.8 s of sound from 0.5 s on gave no vibration: the preset "
+                                "pulses only at onsets; for sustained sounds try --preset "
+                                "sustained\n";
+    EXPECT_EQ(r.err.substr(0, warning.size()), warning) << r.err;  // then one line per output
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 3) << r.err;
+    EXPECT_NE(r.err.find(android.string() + ": 2.6"), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::exists(ahap) && fs::exists(android));
+    r = run("export " + input.string() + " -o " + ahap.string() + " --force --preset sustained");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+    r = run("export " + kAmen + " -o " + ahap.string() + " --force");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
 }

@@ -92,6 +92,7 @@ HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engi
     // Vibration sample k (after the latency) lines up with input sample k.
     const auto on_output = [&](const float* const* vibration, int frames) {
         take_frames();
+        if (callbacks.on_output) callbacks.on_output(vibration, frames);
         const int skip = static_cast<int>(std::min<int64_t>(frames, latency - skipped));
         skipped += skip;
         const int count = frames - skip;

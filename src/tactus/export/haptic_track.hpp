@@ -56,8 +56,9 @@ using AlignedSink = std::function<void(const float* const* audio, int audio_chan
 using FrameSink = std::function<void(const AnalysisFrame& frame)>;
 
 // Runs `engine` (actuators set) over `input` and its tail and returns the track; `sink`, if
-// given, receives the sound and the vibration lined up, block by block, and `frames` every
-// analysis frame.
+// given, receives the sound and the vibration lined up, block by block, `frames` every
+// analysis frame, and callbacks.on_output each block as the engine gives it (the latency
+// included), after that block's frames.
 HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engine,
                                 const AlignedSink& sink = {}, const RunCallbacks& callbacks = {},
                                 const FrameSink& frames = {});
