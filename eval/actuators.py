@@ -44,7 +44,7 @@ def usable_band(actuators_dir, name):
 def meter_p(tactus, render, name, csv):
     """Times (s) and the P channel's level (dB SL, 0 = not engaged) every 10 ms."""
     run([tactus, "meter", render, "--actuator", name, "-o", csv, "--force"])
-    data = np.genfromtxt(csv, delimiter=",", names=True, skip_header=1)
+    data = np.genfromtxt(csv, delimiter=",", names=True, comments="#")
     return data["time_s"], data["P_sl_db"]
 
 

@@ -62,9 +62,11 @@ void meter(const MeterOptions& o) {
                              .changes = {},
                              .actuator = actuator.name,
                              .version = TACTUS_VERSION};
-        csv->stream() << "# " << how.comment() << '\n' << "time_s";
+        // The header first, then how it was made as a comment line, as analyze's CSV: CSV
+        // readers take the names from the first line and skip the comment.
+        csv->stream() << "time_s";
         for (const auto& c : kChannels) csv->stream() << ',' << c.name << "_sl_db";
-        csv->stream() << ",combined_sl_db\n";
+        csv->stream() << ",combined_sl_db\n# " << how.comment() << '\n';
     }
     perception::MeterSummariser summariser;
     const auto on_reading = [&](const perception::MeterReading& r) {

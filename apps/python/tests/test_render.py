@@ -114,15 +114,18 @@ def test_onsets_equal_the_command_line(cli, amen, stereo_48k):
 
 
 def test_meter_equals_the_command_line(cli, amen, tmp_path):
+    import pandas
     run(cli, "render", amen, "-o", tmp_path / "v.wav")
     run(cli, "meter", tmp_path / "v.wav", "-o", tmp_path / "meter.csv", "--contact-area", 0.5)
     y, rate = tactus.read(tmp_path / "v.wav")
     levels = tactus.meter(y, rate, contact_area_cm2=0.5)
-    table = np.genfromtxt(tmp_path / "meter.csv", delimiter=",", names=True,
-                          skip_header=1)  # a comment line: how the vibration was made
-    assert list(levels) == list(table.dtype.names)
+    # Read as analyze's CSV is: the names from the first line, the comment line skipped.
+    table = np.genfromtxt(tmp_path / "meter.csv", delimiter=",", names=True, comments="#")
+    frame = pandas.read_csv(tmp_path / "meter.csv", comment="#")
+    assert list(levels) == list(table.dtype.names) == list(frame.columns)
     for name in levels:
         assert np.array_equal(np.round(levels[name], 2), table[name]), name
+        assert np.array_equal(np.round(levels[name], 2), frame[name].to_numpy()), name
     assert levels["P_sl_db"].max() > 10
 
 
