@@ -89,6 +89,7 @@ void report(const ReportOptions& o) {
     TextOutput out(output);
     out.stream() << report_html(data, dygraphs);
     out.commit();
+    if (!r.unfelt_warning.empty()) note(r.unfelt_warning);
     note(fmt::format("{}: {} plots, {} onsets", output, data.plots.size(), r.onsets.size()));
 }
 

@@ -8,6 +8,7 @@
 #include "tactus/export/haptic_track.hpp"
 #include "tactus/export/thin_rows.hpp"
 #include "tactus/io/actuator_file.hpp"
+#include "unfelt_sound.hpp"
 
 namespace tactus::cli {
 namespace {
@@ -71,14 +72,22 @@ ReportRender render_report(const std::string& input, const Settings& settings,
         out.vibration.insert(out.vibration.end(), vib[0], vib[0] + frames);
         meter->write(vib[0], frames);
     };
+    UnfeltSound unfelt(settings[P::mapping_gate_db]);
+    RunCallbacks run = callbacks;
+    run.on_output = [&](const float* const* v, int frames) {
+        unfelt.on_output(v, engine.actuators(), frames);
+    };
     const FrameSink on_frame = [&](const AnalysisFrame& f) {
+        unfelt.on_loudness(f.features.loudness_db);
         const double t = static_cast<double>(f.features.frame_end_sample) / engine.sample_rate_hz();
         const bool pitched = f.features.pitch_confidence > 0 && f.features.pitch_hz > 0;
         features.push_back({t, f.features.loudness_db, f.features.brightness_hz,
                             f.features.noisiness, pitched ? f.features.pitch_hz : NAN});
         program.push_back({t, f.control.frequency_hz, f.control.amplitude});
     };
-    const HapticTrack track = render_haptic_track(input, engine, sink, callbacks, on_frame);
+    const HapticTrack track = render_haptic_track(input, engine, sink, run, on_frame);
+    out.unfelt_warning =
+        unfelt.warning(input, engine.sample_rate_hz(), settings[P::envelope_sustain] != 0);
     if (meter) meter->finish();  // the worker's readings are all in, and it is gone
     out.summary = summariser.summary();
     out.sample_rate_hz = engine.sample_rate_hz();

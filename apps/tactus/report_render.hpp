@@ -28,6 +28,7 @@ struct ReportRender {
     int64_t latency_frames = 0;
     perception::MeterSummary summary;  // metered through `metered_name`
     std::string metered_name;
+    std::string unfelt_warning;  // render's warning of sound left unfelt, or ""
 };
 
 // Renders `input` with `settings` for `actuator` (none: no compensation, metered through the

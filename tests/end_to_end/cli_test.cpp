@@ -241,9 +241,9 @@ TEST_F(Cli, SustainedSoundsWarnWithoutVibrationAndTheSustainedPresetFeelsThem) {
 }
 
 // An explosion: a low rumble that starts at once and lasts 2 s. The default preset gives its
-// onset one pulse and then nothing, and render and export say so in the same line naming the
-// preset that follows loudness; that preset vibrates all through the rumble. A drum loop gets no
-// warning.
+// onset one pulse and then nothing, and render, export and report say so in the same line naming
+// the preset that follows loudness; that preset vibrates all through the rumble. A drum loop gets
+// no warning.
 TEST_F(Cli, ARumbleAfterItsOnsetWarnsOnceAndTheSustainedPresetFeelsItThrough) {
     const double rate = 44100;
     const auto at = [&](double seconds) { return static_cast<size_t>(seconds * rate); };
@@ -314,6 +314,10 @@ TEST_F(Cli, ARumbleAfterItsOnsetWarnsOnceAndTheSustainedPresetFeelsItThrough) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 3) << r.err;
     EXPECT_NE(r.err.find(android.string() + ": 2.6"), std::string::npos) << r.err;
     EXPECT_TRUE(fs::exists(ahap) && fs::exists(android));
+    const fs::path page = dir_ / "rumble.html";  // and so is one looking at its report
+    r = run("report " + input.string() + " -o " + page.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err, warning + page.string() + ": 9 plots, 1 onsets\n");
     r = run("export " + input.string() + " -o " + ahap.string() + " --force --preset sustained");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
