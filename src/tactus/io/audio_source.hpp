@@ -1,12 +1,16 @@
 // Where the offline run loop (run_file.hpp) takes its audio from: a file read in blocks through
 // libsndfile (FileSource, constant memory), or audio already in memory (BufferSource: a view of
 // one array per channel, nothing copied). One loop for both, so a file and the same samples in
-// memory give the same output, bit for bit. Setup thread only: next() may read a file.
+// memory give the same output, bit for bit. Setup thread only: next() may wait for a file.
 #pragma once
 
+#include <condition_variable>
 #include <cstdint>
+#include <exception>
 #include <filesystem>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "tactus/io/audio_reader.hpp"
@@ -27,11 +31,17 @@ class AudioSource {
     virtual int next(int max_frames, const float* const*& channels) = 0;
 };
 
-// A file, read block by block into buffers of `max_block` frames.
+// A file, decoded block by block into buffers of `max_block` frames on a thread of its own, a
+// few blocks ahead of next(), so that decoding (a FLAC's or an MP3's: as long as the whole
+// analysis) runs beside the engine instead of before it. The blocks and an error are handed on in
+// the file's order: a read that fails throws from next() once the blocks before it are taken.
 class FileSource final : public AudioSource {
   public:
     // Throws std::runtime_error naming the file when it cannot be opened.
     FileSource(const std::filesystem::path& path, int max_block);
+    ~FileSource() override;
+    FileSource(const FileSource&) = delete;
+    FileSource& operator=(const FileSource&) = delete;
     double sample_rate_hz() const override { return reader_.sample_rate_hz(); }
     int channels() const override { return reader_.channels(); }
     int64_t frames() const override { return reader_.frames(); }
@@ -39,10 +49,26 @@ class FileSource final : public AudioSource {
     int next(int max_frames, const float* const*& channels) override;
 
   private:
+    static constexpr int kSlots = 3;  // blocks decoded ahead, and the one being taken
+    struct Slot {
+        ChannelBlock block;
+        int frames = 0;  // decoded into it; 0: the end (or the error)
+    };
+    void decode();  // the decoding thread
+
     AudioReader reader_;
-    ChannelBlock block_;
     int max_block_;
     std::string name_;
+    std::vector<Slot> slots_;
+    std::vector<const float*> at_;  // the channels of what next() handed on
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    int64_t decoded_ = 0, taken_ = 0;  // slots filled, and handed on in full, since the start
+    int offset_ = 0;                   // frames of the current slot already handed on
+    bool holding_ = false;             // next() handed on part of the current slot
+    bool stop_ = false;
+    std::exception_ptr error_;  // what the read after the last filled slot threw
+    std::thread thread_;
 };
 
 // channels[c][0 ... frames) at `sample_rate_hz`, read where they are (kept alive by the
