@@ -8,6 +8,7 @@
 #include <complex>
 #include <cstdlib>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "support/signals.hpp"
@@ -45,6 +46,45 @@ TEST(RealFft, PrepareAgainChangesSize) {
     fft.prepare(1024);
     EXPECT_EQ(fft.size(), 1024);
     EXPECT_EQ(fft.bins(), 513);
+}
+
+// Prepared together (one wisdom import for the new sizes, planned at plan()): a size new to the
+// process, one planned before, one prepared twice and one destroyed before plan() transform as
+// RealFfts prepared alone do, bit for bit; after the PlanTogether, prepare() plans at once again.
+TEST(RealFft, PreparedTogetherTransformAsPreparedAlone) {
+    constexpr int kNew = 2700, kKnown = 512, kTwice = 1944;  // 2700, 1944: planned nowhere else
+    RealFft known_alone;
+    known_alone.prepare(kKnown);
+    RealFft fresh, known, twice;
+    {
+        RealFft::PlanTogether together;
+        fresh.prepare(kNew);
+        known.prepare(kKnown);
+        twice.prepare(kNew);
+        twice.prepare(kTwice);
+        {
+            RealFft gone;
+            gone.prepare(2400);
+        }
+        together.plan();
+    }
+    RealFft fresh_alone, twice_alone;
+    fresh_alone.prepare(kNew);
+    twice_alone.prepare(kTwice);
+    for (auto [a, b] : {std::pair{&fresh, &fresh_alone}, std::pair{&known, &known_alone},
+                        std::pair{&twice, &twice_alone}}) {
+        const int n = a->size();
+        ASSERT_EQ(b->size(), n);
+        const std::vector<float> x = test::white_noise(static_cast<size_t>(n), 3);
+        std::copy(x.begin(), x.end(), a->time());
+        std::copy(x.begin(), x.end(), b->time());
+        a->forward();
+        b->forward();
+        for (int k = 0; k < a->bins(); ++k) ASSERT_EQ(a->spectrum()[k], b->spectrum()[k]) << n;
+        a->inverse();
+        b->inverse();
+        for (int i = 0; i < n; ++i) ASSERT_EQ(a->time()[i], b->time()[i]) << n;
+    }
 }
 
 }  // namespace

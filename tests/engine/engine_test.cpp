@@ -99,6 +99,26 @@ TEST(Engine, BlockSizeInvarianceOnTheAmenLoop) {
     expect_block_size_invariance(amen.samples, amen.sample_rate_hz, "amen");
 }
 
+// The block size an engine is prepared for changes nothing it plays, across a structural change
+// too (the new pipeline is primed in blocks of max(max_block, Engine::kPrimeBlock)): 64-frame
+// blocks through an engine prepared for 64 and one prepared for 4096, the hop changed midway.
+TEST(Engine, PreparedBlockSizeAndAStructuralChangeLeaveTheOutputBitIdentical) {
+    const MonoAudio amen = read_mono(kAmen);
+    const std::vector<float> x(amen.samples.begin(), amen.samples.begin() + 4 * 44100);
+    std::vector<std::vector<float>> outputs;
+    for (int max_block : {64, 4096}) {
+        Engine engine;
+        engine.prepare(amen.sample_rate_hz, max_block);
+        std::vector<float> y(x.size());
+        const size_t half = 3 * 44100 - 3 * 44100 % 64;
+        test::process_in_blocks(engine, x.data(), y.data(), half, {64});
+        engine.set(P::analysis_hop_ms, 3.0);
+        test::process_in_blocks(engine, x.data() + half, y.data() + half, x.size() - half, {64});
+        outputs.push_back(std::move(y));
+    }
+    EXPECT_EQ(first_difference(outputs[0], outputs[1]), -1);
+}
+
 TEST(Engine, DigitalSilenceGivesExactZeros) {
     for (double fs : {8000.0, 48000.0, 192000.0}) {
         const std::vector<float> y =

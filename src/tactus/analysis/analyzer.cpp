@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "tactus/core/units.hpp"
+#include "tactus/dsp/real_fft.hpp"
 #include "tactus/dsp/sanitize.hpp"
 
 namespace tactus {
@@ -50,6 +51,7 @@ void Analyzer::prepare(const ProcessSpec& spec, const Settings& s) {
     const auto max_inputs = static_cast<int>(hop_ * ratio.down / ratio.up + 2);
     resampler_.prepare(sample_rate_hz_, std::min(kAnalysisRateHz, sample_rate_hz_), max_inputs);
     const ProcessSpec analysis{.sample_rate_hz = analysis_rate, .max_block = max_inputs};
+    RealFft::PlanTogether ffts;  // the frames' and the pitch's, planned at once below
     stft_.prepare(nearest_fft_size(ms_to_samples(s[P::analysis_window_ms], analysis_rate)),
                   analysis_rate);
     brightness_.prepare(stft_.bins(), stft_.bin_hz(), s[P::brightness_max_hz]);
@@ -59,6 +61,7 @@ void Analyzer::prepare(const ProcessSpec& spec, const Settings& s) {
                               .max_hz = std::min(s[P::pitch_max_hz], 0.45 * analysis_rate),
                               .threshold = s[P::pitch_threshold]});
     onsets_.prepare(analysis, hop_, onset_settings(s));
+    ffts.plan();
     const int band_window_frames = std::max(
         1, static_cast<int>(std::lround(ms_to_samples(s[P::onset_window_ms], analysis_rate) /
                                         static_cast<double>(hop_))));

@@ -7,6 +7,7 @@
 #include <fftw3.h>
 
 #include <complex>
+#include <vector>
 
 namespace tactus {
 
@@ -29,7 +30,25 @@ class RealFft {
     // spectrum() -> time(), scaled by size
     void inverse() noexcept { fftwf_execute_dft_c2r(inverse_, spectrum_, time_); }
 
+    // RealFfts prepared together (setup and control threads): while one lives on a thread,
+    // prepare() there leaves the plans to plan(), which reads the build's wisdom of every new
+    // size in one import (FFTW checks its whole configuration, 2 M instructions, on each import)
+    // before planning them. Until plan(), the prepared RealFfts have no plans: nothing runs them.
+    class PlanTogether {
+      public:
+        PlanTogether();
+        PlanTogether(const PlanTogether&) = delete;
+        PlanTogether& operator=(const PlanTogether&) = delete;
+        ~PlanTogether();  // without plan() (an exception on the way): the RealFfts stay unplanned
+        void plan();      // may allocate
+
+      private:
+        std::vector<RealFft*> waiting_;
+        std::vector<RealFft*>* outer_;  // an enclosing one's, if any
+    };
+
   private:
+    void take_plans();  // the process's plans for size_ (made now if new)
     void release();
     int size_ = 0;
     float* time_ = nullptr;

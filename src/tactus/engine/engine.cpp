@@ -70,9 +70,10 @@ Settings Engine::fitted(const Settings& settings) const {
     return profile ? fit_to_actuator(*profile, settings).settings : settings;
 }
 
-std::unique_ptr<Pipeline> Engine::make_pipeline(const Settings& settings, int64_t origin) const {
+std::unique_ptr<Pipeline> Engine::make_pipeline(const Settings& settings, int64_t origin,
+                                                int max_block) const {
     auto pipeline = std::make_unique<Pipeline>();
-    pipeline->prepare({.sample_rate_hz = spec_.sample_rate_hz, .max_block = spec_.max_block},
+    pipeline->prepare({.sample_rate_hz = spec_.sample_rate_hz, .max_block = max_block},
                       fitted(settings), outputs_, origin);
     pipeline->set_extra_features(extra_features());
     pipeline->set_source(source_);
@@ -91,7 +92,7 @@ void Engine::prepare(const ProcessSpec& spec) {
     delete std::exchange(waiting_.pipeline, nullptr);
     delete std::exchange(incoming_, nullptr);
     free_retired();
-    active_ = make_pipeline(settings_, 0);
+    active_ = make_pipeline(settings_, 0, spec.max_block);
     rate_divisor_ = active_->rate_divisor();
     trims_.resize(outputs_.size());
     for (size_t k = 0; k < outputs_.size(); ++k) trims_[k].prepare(spec, outputs_[k]);
@@ -260,16 +261,17 @@ void Engine::swap_in(const Settings& settings) {
         float* const lanes[] = {past.data(), past_power.data()};
         if (ring_.read(from, lanes, count) || attempt == 3) break;
     }
-    pipeline = make_pipeline(settings, from);
-    std::vector<std::vector<float>> scratch(
-        outputs_.size(), std::vector<float>(static_cast<size_t>(spec_.max_block)));
+    const int prime_block = std::max(spec_.max_block, kPrimeBlock);
+    pipeline = make_pipeline(settings, from, prime_block);
+    std::vector<std::vector<float>> scratch(outputs_.size(),
+                                            std::vector<float>(static_cast<size_t>(prime_block)));
     std::vector<float*> out(outputs_.size());
     for (size_t k = 0; k < out.size(); ++k) out[k] = scratch[k].data();
     {
         const ScopedFlushDenormals no_denormals;
         for (size_t done = 0; done < past.size();) {
             const int count = static_cast<int>(
-                std::min<size_t>(past.size() - done, static_cast<size_t>(spec_.max_block)));
+                std::min<size_t>(past.size() - done, static_cast<size_t>(prime_block)));
             pipeline->process(past.data() + done,
                               summed_loudness_ ? past_power.data() + done : nullptr, out.data(),
                               count, nullptr);

@@ -78,6 +78,7 @@ class Engine {
     static constexpr double kCrossfadeMs = 10;    // a structural change's handover
     static constexpr double kPrimeSeconds = 2.5;  // input a new pipeline hears before it plays:
                                                   // onset.history_ms's longest plus windows
+    static constexpr int kPrimeBlock = 1024;      // samples a new pipeline is primed with at a time
 
     explicit Engine(Settings settings = {});
     ~Engine();
@@ -186,7 +187,10 @@ class Engine {
     };
 
     Settings fitted(const Settings& settings) const;
-    std::unique_ptr<Pipeline> make_pipeline(const Settings& settings, int64_t origin) const;
+    // `max_block`: the block size's, or larger (a pipeline primed in larger blocks: the same
+    // output for any split, with less of each call's overhead).
+    std::unique_ptr<Pipeline> make_pipeline(const Settings& settings, int64_t origin,
+                                            int max_block) const;
     void commit(const Settings& next);  // control thread, control_ held
     void apply(const Settings& next);   // control thread, control_ held
     int changes_needed(const Settings& was, const Settings& now) const;

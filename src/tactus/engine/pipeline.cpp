@@ -29,8 +29,7 @@ void Pipeline::prepare(const ProcessSpec& spec, const Settings& settings,
                        const std::vector<ActuatorOutput>& outputs, int64_t origin_sample) {
     const double rate = spec.sample_rate_hz;
     sample_rate_hz_ = rate;
-    rate_divisor_ =
-        std::clamp(static_cast<int>(rate / kMinInternalRateHz), 1, Upsampler::kMaxFactor);
+    rate_divisor_ = rate_divisor_for(rate);
     const ProcessSpec internal_spec = Upsampler::internal_spec(spec, rate_divisor_);
     const auto internal = static_cast<size_t>(internal_spec.max_block);
     // Actuators with the same profile share a chain.

@@ -6,10 +6,12 @@
 // primes it) and never allocates.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
 #include "tactus/analysis/analyzer.hpp"
+#include "tactus/dsp/upsampler.hpp"
 #include "tactus/engine/actuator_chain.hpp"
 #include "tactus/engine/live_settings.hpp"
 #include "tactus/engine/output_trim.hpp"
@@ -35,6 +37,11 @@ class FrameObserver {
 class Pipeline {
   public:
     static constexpr double kMinInternalRateHz = 11025;
+    // Output samples per internal sample (synthesis and the actuator chains) at a rate.
+    static int rate_divisor_for(double sample_rate_hz) {
+        return std::clamp(static_cast<int>(sample_rate_hz / kMinInternalRateHz), 1,
+                          Upsampler::kMaxFactor);
+    }
 
     // Allocates. spec.max_block: mono samples one process() call takes at most. `outputs`:
     // one per actuator (profiles; trims are the engine's). `origin_sample`: the input sample

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <utility>
 
-#include "tactus/dsp/design_memo.hpp"
 #include "tactus/perception/sensation.hpp"
 
 namespace tactus {
@@ -21,13 +20,6 @@ double FlatteningFilter::target_db(double frequency_hz) const {
     const double spread = (reference_db_ - contour_db(frequency_hz)) *
                           perception::contour_relief_fraction(design_.level_db);
     return -std::min(design_.strength * spread, design_.range_db);
-}
-
-FlatteningFilter::Design FlatteningFilter::design(double sample_rate_hz,
-                                                  const FlatteningDesign& inputs) {
-    static DesignMemo<std::pair<double, FlatteningDesign>, Design> designs;
-    return designs.get({sample_rate_hz, inputs},
-                       [&] { return make_design(sample_rate_hz, inputs); });
 }
 
 // The contour's reference scan (thousands of threshold evaluations) and the fit.
@@ -50,12 +42,4 @@ FlatteningFilter::Design FlatteningFilter::make_design(double sample_rate_hz,
             FittedEq::fit(sample_rate_hz, {.low_hz = low_hz, .high_hz = high_hz},
                           [&filter](double f) { return filter.target_db(f); })};
 }
-
-void FlatteningFilter::prepare(const ProcessSpec& spec, const FlatteningDesign& inputs) {
-    const Design d = design(spec.sample_rate_hz, inputs);
-    design_ = d.inputs;
-    reference_db_ = d.reference_db;
-    eq_.prepare(spec, d.eq);
-}
-
 }  // namespace tactus

@@ -33,9 +33,13 @@ class FlatteningFilter {
         double reference_db = 0;
         FittedEq::Design eq;
     };
-    // Allocates (the fit). Control and setup threads: the same rate and inputs as a design made
-    // before in the process give that design (dsp/design_memo.hpp).
+    // Allocates (the fit). Control and setup threads: the design made at build time for the
+    // rate and inputs (flattening_designs.hpp), or the one made before in the process
+    // (dsp/design_memo.hpp), or one made now (flattening_designs.cpp).
     static Design design(double sample_rate_hz, const FlatteningDesign& inputs);
+    // A design made now: the contour's reference scan (thousands of threshold evaluations) and
+    // the fit. Allocates.
+    static Design make_design(double sample_rate_hz, const FlatteningDesign& inputs);
     void prepare(const ProcessSpec& spec, const FlatteningDesign& inputs);  // may allocate
     void reset() noexcept { eq_.reset(); }
     int latency() const { return 0; }  // minimum phase
@@ -51,7 +55,6 @@ class FlatteningFilter {
     double magnitude_db(double frequency_hz) const { return eq_.magnitude_db(frequency_hz); }
 
   private:
-    static Design make_design(double sample_rate_hz, const FlatteningDesign& inputs);
     double contour_db(double frequency_hz) const;
     FlatteningDesign design_;
     double reference_db_ = 0;

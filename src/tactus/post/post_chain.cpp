@@ -7,6 +7,7 @@
 #include "tactus/core/units.hpp"
 #include "tactus/dsp/clip.hpp"
 #include "tactus/params/components.hpp"
+#include "tactus/post/flattening_inputs.hpp"
 
 namespace tactus {
 namespace {
@@ -17,15 +18,6 @@ constexpr double kFlutterPeakQ = 2.0;
 // With the flutter on, the last high-pass (1 Hz) rings for seconds after the sound stops; below
 // -180 dBFS its output is set to 0, so silence still ends in exact zeros.
 constexpr float kSilentOutput = 1e-9f;
-
-FlatteningDesign flattening_inputs(const Settings& s) {
-    return {.low_hz = s[P::post_band_low_hz],
-            .high_hz = s[P::post_band_high_hz],
-            .strength = s[P::post_flatten_strength],
-            .range_db = s[P::post_flatten_range_db],
-            .contact_area_cm2 = s[P::perception_contact_area_cm2],
-            .level_db = s[P::post_flatten_level_db]};
-}
 
 }  // namespace
 
