@@ -359,6 +359,29 @@ def test_command_line_errors(tmp_path):
     assert run.stderr == f"tactus: error: {tmp_path / 'missing.wav'}: no such file or directory\n"
 
 
+def test_file_picker_uploads_as_drop_does(browser, tmp_path):
+    """Two files chosen in the picker (<input type=file>): the sound is uploaded, listed and
+    rendered; the text file is refused with the upload's own one-line error."""
+    notes = tmp_path / "picked-notes.wav"
+    notes.write_text("not audio")
+    sound = "/usr/share/sonic-pi/samples/drum_cymbal_closed.flac"
+    before = browser.execute_script("return studio.samplesReady")
+    browser.find_element("id", "pick").send_keys(f"{sound}\n{notes}")
+    WebDriverWait(browser, 30).until(lambda d: d.find_element("id", "error").text)
+    error = browser.find_element("id", "error").text
+    assert error == "picked-notes.wav: not a sound file tactus reads", error
+    listed = [o.text for o in Select(browser.find_element("id", "file")).options]
+    assert "drum_cymbal_closed.flac" in listed and "picked-notes.wav" not in listed, listed
+    WebDriverWait(browser, 30).until(lambda d: d.execute_script(
+        "return studio.render.file === 'drum_cymbal_closed.flac' && !studio.inFlight"))
+    assert browser.execute_script("return document.getElementById('pick').value") == ""
+    picked = wait_for_samples(browser, before)
+    # Back to the clip, for the tests after this one.
+    Select(browser.find_element("id", "file")).select_by_visible_text("amen30.wav")
+    wait_for_samples(browser, picked)
+    assert browser.execute_script("return studio.render.file") == "amen30.wav"
+
+
 def test_latency(browser):
     """50 slider changes, each waited for: change -> redrawn plots, measured in the page."""
     slider = control(browser, SLIDER)
