@@ -164,6 +164,27 @@ def test_three_controls_change_the_plots_and_equal_render(browser, clip, tmp_pat
     assert_equals_render(page_vibration(browser), latency, rendered)
 
 
+def test_unchanged_plots_are_not_sent_again(browser):
+    """A live setting leaves the sound's plots as they were: the answer names them by digest
+    only, and the plots the page holds equal, value for value, those of a whole answer."""
+    slider = control(browser, SLIDER)
+    last = browser.execute_script("return studio.renders")
+    slider.send_keys(Keys.ARROW_RIGHT)
+    WebDriverWait(browser, 60).until(lambda d: d.execute_script(
+        "return studio.renders > arguments[0] && !studio.inFlight && !studio.pending", last))
+    resent = browser.execute_script("return studio.render.resent")
+    assert "vibration" in resent and "felt" in resent, resent
+    assert not {"waveform", "loudness", "brightness", "noisiness", "pitch"} & set(resent), resent
+    same = browser.execute_async_script("""
+        const done = arguments[0], held = studio.render.plots;
+        postJson("/api/render", studio.render.sent).then((res) => res.json()).then((whole) => {
+          const key = (p) => JSON.stringify(Object.assign({}, p, {digest: 0}));
+          done(whole.plots.length === held.length &&
+               whole.plots.every((p, i) => !p.same && key(p) === key(held[i])));
+        });""")
+    assert same, "the plots the page holds differ from a whole answer's"
+
+
 def test_preset_renders_bit_for_bit(browser, clip, tmp_path):
     settings = sent_settings(browser)
     assert settings, "no setting changed: run with the previous test"
