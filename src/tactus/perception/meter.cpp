@@ -45,12 +45,13 @@ SensationMeter::SensationMeter() = default;
 SensationMeter::~SensationMeter() = default;
 
 void SensationMeter::prepare(double sample_rate_hz, const Calibration& displacement_um,
-                             double contact_area_cm2) {
+                             double contact_area_cm2, const Channels& channels) {
     sample_rate_hz_ = sample_rate_hz;
     step_samples_ = static_cast<int>(std::lround(kStepS * sample_rate_hz));
     channels_.clear();
     int longest = 0;
     for (const auto& info : kChannels) {
+        if (!channels[static_cast<size_t>(info.channel)]) continue;
         auto c = std::make_unique<ChannelState>();
         c->channel = info.channel;
         c->hop_steps = kHopSteps[static_cast<int>(info.channel)];
@@ -81,7 +82,7 @@ void SensationMeter::prepare(double sample_rate_hz, const Calibration& displacem
         c->frames.assign(static_cast<size_t>(frames_per_second), 0.0);
         channels_.push_back(std::move(c));
     }
-    history_.prepare(longest);
+    history_.prepare(std::max(longest, step_samples_));
     clean_.assign(static_cast<size_t>(step_samples_), 0.0f);
     filled_ = 0;
     steps_ = 0;
