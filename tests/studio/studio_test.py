@@ -7,8 +7,9 @@ events, and the plots change (canvas pixels differ) and the vibration the page f
 as the command line's --set; exports equal `tactus export`'s files; A/B, undo and play work;
 a wrong value shows the command line's one-line error; requests without the token get 403 and
 paths outside the session are refused. test_latency measures the time from a control change to
-the redrawn plots over 50 changes of a 30-second clip (printed; TACTUS_STUDIO_SCREENSHOT=FILE
-also saves a screenshot of the page).
+the redrawn plots (every plot the change changed, the sensation meter's included) over 50
+changes of a 30-second clip, and where it went (render, answer, parsing, drawing), printed with
+the load average; TACTUS_STUDIO_SCREENSHOT=FILE also saves a screenshot of the page.
 
 usage: TACTUS=build/release/bin/tactus python3 -m pytest tests/studio/studio_test.py"""
 import base64
@@ -406,7 +407,7 @@ def test_file_picker_uploads_as_drop_does(browser, tmp_path):
 def test_latency(browser):
     """50 slider changes, each waited for: change -> redrawn plots, measured in the page."""
     slider = control(browser, SLIDER)
-    browser.execute_script("studio.latencies = []")
+    browser.execute_script("studio.latencies = []; studio.legs = []")
     for i in range(50):
         last = browser.execute_script("return studio.renders")
         slider.send_keys(Keys.ARROW_RIGHT if i % 2 else Keys.ARROW_LEFT)
@@ -418,6 +419,10 @@ def test_latency(browser):
     render_ms = browser.execute_script("return studio.render.render_ms")
     print(f"\nstudio latency over {len(latencies)} changes of a {CLIP_S} s clip: "
           f"median {median:.0f} ms, p95 {p95:.0f} ms (the last render took {render_ms:.0f} ms)")
+    legs = browser.execute_script("return studio.legs")
+    print("medians (ms): " + ", ".join(f"{leg} {statistics.median(x[leg] for x in legs):.1f}"
+                                       for leg in ["render", "answer", "parse", "draw"]) +
+          f"; load average {os.getloadavg()[0]:.2f}")
     assert len(latencies) >= 50 and median > 0
     if os.environ.get("TACTUS_STUDIO_SCREENSHOT"):  # zoomed in on the first bars
         browser.execute_script("studio.view = {t0: 0, t1: 3.5}; studio.loop = [0.85, 1.7]; draw()")
