@@ -8,7 +8,9 @@ BlockWorker::BlockWorker(std::function<void()> start, Take take, std::function<v
     : start_(std::move(start)),
       take_(std::move(take)),
       done_(std::move(done)),
-      worker_([this] { run(); }) {}
+      worker_([this] { run(); }) {
+    pending_.reserve(2 * kHandOverSamples);
+}
 
 BlockWorker::~BlockWorker() {
     if (!worker_.joinable()) return;
@@ -30,6 +32,7 @@ void BlockWorker::hand_over() {
         const std::lock_guard lock(mutex_);
         blocks_.push_back(std::exchange(pending_, {}));
     }
+    pending_.reserve(2 * kHandOverSamples);  // grown once, not copied at every doubling
     queued_.notify_one();
 }
 
