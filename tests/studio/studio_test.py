@@ -19,7 +19,6 @@ import os
 import shutil
 import statistics
 import subprocess
-import tempfile
 import time
 import urllib.parse
 
@@ -48,17 +47,20 @@ def clip(tmp_path_factory):
 
 
 @pytest.fixture(scope="module")
-def server(clip):
-    folders = lambda: {n for n in os.listdir(tempfile.gettempdir()) if n.startswith("tactus-studio-")}
-    before = folders()
+def server(clip, tmp_path_factory):
+    # A temporary folder of its own: other studios on the machine make and remove theirs.
+    temp = tmp_path_factory.mktemp("studio-temp")
+    folders = lambda: {n for n in os.listdir(temp) if n.startswith("tactus-studio-")}
     process = subprocess.Popen([TACTUS, "studio", str(clip), "--port", "0", "--no-browser"],
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                               env=dict(os.environ, TMPDIR=str(temp)))
     url = process.stdout.readline().strip()
     assert url.startswith("http://127.0.0.1:") and "?token=" in url, url
+    assert len(folders()) == 1
     yield url
     process.terminate()
     assert process.wait(timeout=10) == 0
-    assert folders() == before, "the session's folder was left behind"
+    assert folders() == set(), "the session's folder was left behind"
 
 
 @pytest.fixture(scope="module")
