@@ -1,66 +1,63 @@
 #include "meter_worker.hpp"
 
+#include <stdexcept>
 #include <utility>
 
 namespace tactus::cli {
+namespace {
+
+using perception::Channel;
+constexpr perception::SensationMeter::Channels kDriveChannels = {true, false, true, false};
+constexpr perception::SensationMeter::Channels kSlowChannels = {false, true, false, true};
+
+}  // namespace
 
 MeterWorker::MeterWorker(double sample_rate_hz, const ActuatorProfile& actuator,
                          double contact_area_cm2, DriveMeter::OnReading on_reading)
     : on_reading_(std::move(on_reading)),
-      worker_([this, sample_rate_hz, actuator, contact_area_cm2] {
-          run(sample_rate_hz, actuator, contact_area_cm2);
-      }) {}
-
-MeterWorker::~MeterWorker() {
-    if (!worker_.joinable()) return;
-    {
-        const std::lock_guard lock(mutex_);
-        abandoned_ = true;
-    }
-    queued_.notify_one();
-    worker_.join();
-}
-
-void MeterWorker::write(const float* drive, int count) {
-    pending_.insert(pending_.end(), drive, drive + count);
-    if (pending_.size() >= kHandOverSamples) hand_over();
-}
-
-void MeterWorker::hand_over() {
-    {
-        const std::lock_guard lock(mutex_);
-        blocks_.push_back(std::exchange(pending_, {}));
-    }
-    queued_.notify_one();
-}
+      displacement_stage_(
+          [this, sample_rate_hz, actuator, contact_area_cm2] {
+              slow_meter_.prepare(sample_rate_hz, DriveMeter::calibration(actuator),
+                                  contact_area_cm2, kSlowChannels);
+          },
+          [this](const float* displacement, int count) {
+              slow_meter_.write(displacement, count, [this](const perception::MeterReading& r) {
+                  slow_readings_.push_back(r);
+              });
+          },
+          [this] {
+              slow_meter_.finish(
+                  [this](const perception::MeterReading& r) { slow_readings_.push_back(r); });
+          }),
+      drive_stage_(
+          [this, sample_rate_hz, actuator, contact_area_cm2] {
+              drive_meter_.prepare(sample_rate_hz, actuator, contact_area_cm2, kDriveChannels);
+          },
+          [this](const float* drive, int count) {
+              drive_meter_.write(
+                  drive, count,
+                  [this](const perception::MeterReading& r) { drive_readings_.push_back(r); },
+                  [this](const float* displacement, int n) {
+                      displacement_stage_.write(displacement, n);
+                  });
+          },
+          [this] {
+              drive_meter_.finish(
+                  [this](const perception::MeterReading& r) { drive_readings_.push_back(r); });
+          }) {}
 
 void MeterWorker::finish() {
-    if (!pending_.empty()) hand_over();
-    {
-        const std::lock_guard lock(mutex_);
-        finishing_ = true;
+    drive_stage_.finish();         // every drive block modelled, its displacement handed on
+    displacement_stage_.finish();  // and metered
+    if (drive_readings_.size() != slow_readings_.size())
+        throw std::logic_error("the meter's stages gave different numbers of readings");
+    for (size_t i = 0; i < drive_readings_.size(); ++i) {
+        perception::MeterReading r = drive_readings_[i];
+        for (const Channel c : {Channel::NPI, Channel::NPIII})
+            r.level_db[static_cast<size_t>(c)] = slow_readings_[i].level_db[static_cast<size_t>(c)];
+        r.combined_db = perception::combined_sensation_db(r.level_db);
+        on_reading_(r);
     }
-    queued_.notify_one();
-    worker_.join();
-}
-
-void MeterWorker::run(double sample_rate_hz, const ActuatorProfile& actuator,
-                      double contact_area_cm2) {
-    DriveMeter meter;
-    meter.prepare(sample_rate_hz, actuator, contact_area_cm2);
-    for (;;) {
-        std::vector<float> block;
-        {
-            std::unique_lock lock(mutex_);
-            queued_.wait(lock, [&] { return !blocks_.empty() || finishing_ || abandoned_; });
-            if (abandoned_) return;
-            if (blocks_.empty()) break;  // finishing, and everything metered
-            block = std::move(blocks_.front());
-            blocks_.pop_front();
-        }
-        meter.write(block.data(), static_cast<int>(block.size()), on_reading_);
-    }
-    meter.finish(on_reading_);
 }
 
 }  // namespace tactus::cli

@@ -146,6 +146,38 @@ TEST(SensationMeter, SilenceEngagesNothing) {
     EXPECT_NEAR(run.readings[99].time_s, 1.0, 1e-9);  // causal readings every 10 ms
 }
 
+// Two meters of disjoint channels (the studio's and the report's two threads) read, channel for
+// channel, what one meter of all four reads, bit for bit, reading for reading.
+TEST(SensationMeter, DisjointChannelsReadAsOneMeter) {
+    std::vector<float> x = test::white_noise(static_cast<size_t>(6 * kFs), 7, 0.3);
+    const std::vector<float> tone = test::sine(12, kFs, x.size(), 0.5);
+    for (size_t i = 0; i < x.size(); ++i) x[i] += tone[i];
+    const Metered whole = meter(x, flat_10um);
+    std::vector<MeterReading> parts[2];
+    const SensationMeter::Channels channels[2] = {{true, false, true, false},
+                                                  {false, true, false, true}};
+    for (int p = 0; p < 2; ++p) {
+        SensationMeter m;
+        m.prepare(kFs, flat_10um, kReferenceAreaCm2, channels[p]);
+        const auto keep = [&](const MeterReading& r) { parts[p].push_back(r); };
+        for (size_t i = 0; i < x.size(); i += 1000)
+            m.write(x.data() + i, static_cast<int>(std::min<size_t>(1000, x.size() - i)), keep);
+        m.finish(keep);
+    }
+    ASSERT_EQ(parts[0].size(), whole.readings.size());
+    ASSERT_EQ(parts[1].size(), whole.readings.size());
+    int engaged = 0;
+    for (size_t i = 0; i < whole.readings.size(); ++i)
+        for (int c = 0; c < 4; ++c) {
+            const int p = channels[0][static_cast<size_t>(c)] ? 0 : 1;
+            ASSERT_EQ(parts[p][i].time_s, whole.readings[i].time_s);
+            ASSERT_EQ(parts[p][i].level_db[c], whole.readings[i].level_db[c]) << i << " " << c;
+            ASSERT_EQ(parts[1 - p][i].level_db[c], 0.0);  // not metered: reads 0
+            engaged += whole.readings[i].level_db[c] > 0;
+        }
+    EXPECT_GT(engaged, 1000);
+}
+
 TEST(MeterSummariser, MaxEngagedFractionAndMedian) {
     MeterSummariser s;
     for (double v : {0.0, 0.0, 5.0, 10.0, 20.0}) {

@@ -7,8 +7,9 @@ events, and the plots change (canvas pixels differ) and the vibration the page f
 as the command line's --set; exports equal `tactus export`'s files; A/B, undo and play work;
 a wrong value shows the command line's one-line error; requests without the token get 403 and
 paths outside the session are refused. test_latency measures the time from a control change to
-the redrawn plots over 50 changes of a 30-second clip (printed; TACTUS_STUDIO_SCREENSHOT=FILE
-also saves a screenshot of the page).
+the redrawn plots (every plot the change changed, the sensation meter's included) over 50
+changes of a 30-second clip, and where it went (render, answer, parsing, drawing), printed with
+the load average; TACTUS_STUDIO_SCREENSHOT=FILE also saves a screenshot of the page.
 
 usage: TACTUS=build/release/bin/tactus python3 -m pytest tests/studio/studio_test.py"""
 import base64
@@ -18,7 +19,6 @@ import os
 import shutil
 import statistics
 import subprocess
-import tempfile
 import time
 import urllib.parse
 
@@ -47,17 +47,20 @@ def clip(tmp_path_factory):
 
 
 @pytest.fixture(scope="module")
-def server(clip):
-    folders = lambda: {n for n in os.listdir(tempfile.gettempdir()) if n.startswith("tactus-studio-")}
-    before = folders()
+def server(clip, tmp_path_factory):
+    # A temporary folder of its own: other studios on the machine make and remove theirs.
+    temp = tmp_path_factory.mktemp("studio-temp")
+    folders = lambda: {n for n in os.listdir(temp) if n.startswith("tactus-studio-")}
     process = subprocess.Popen([TACTUS, "studio", str(clip), "--port", "0", "--no-browser"],
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                               env=dict(os.environ, TMPDIR=str(temp)))
     url = process.stdout.readline().strip()
     assert url.startswith("http://127.0.0.1:") and "?token=" in url, url
+    assert len(folders()) == 1
     yield url
     process.terminate()
     assert process.wait(timeout=10) == 0
-    assert folders() == before, "the session's folder was left behind"
+    assert folders() == set(), "the session's folder was left behind"
 
 
 @pytest.fixture(scope="module")
@@ -162,6 +165,27 @@ def test_three_controls_change_the_plots_and_equal_render(browser, clip, tmp_pat
     latency = browser.execute_script("return studio.render.latency_frames")
     rendered = cli_render(clip, tmp_path, "cli.wav", *sets(settings))
     assert_equals_render(page_vibration(browser), latency, rendered)
+
+
+def test_unchanged_plots_are_not_sent_again(browser):
+    """A live setting leaves the sound's plots as they were: the answer names them by digest
+    only, and the plots the page holds equal, value for value, those of a whole answer."""
+    slider = control(browser, SLIDER)
+    last = browser.execute_script("return studio.renders")
+    slider.send_keys(Keys.ARROW_RIGHT)
+    WebDriverWait(browser, 60).until(lambda d: d.execute_script(
+        "return studio.renders > arguments[0] && !studio.inFlight && !studio.pending", last))
+    resent = browser.execute_script("return studio.render.resent")
+    assert "vibration" in resent and "felt" in resent, resent
+    assert not {"waveform", "loudness", "brightness", "noisiness", "pitch"} & set(resent), resent
+    same = browser.execute_async_script("""
+        const done = arguments[0], held = studio.render.plots;
+        postJson("/api/render", studio.render.sent).then((res) => res.json()).then((whole) => {
+          const key = (p) => JSON.stringify(Object.assign({}, p, {digest: 0}));
+          done(whole.plots.length === held.length &&
+               whole.plots.every((p, i) => !p.same && key(p) === key(held[i])));
+        });""")
+    assert same, "the plots the page holds differ from a whole answer's"
 
 
 def test_preset_renders_bit_for_bit(browser, clip, tmp_path):
@@ -359,10 +383,33 @@ def test_command_line_errors(tmp_path):
     assert run.stderr == f"tactus: error: {tmp_path / 'missing.wav'}: no such file or directory\n"
 
 
+def test_file_picker_uploads_as_drop_does(browser, tmp_path):
+    """Two files chosen in the picker (<input type=file>): the sound is uploaded, listed and
+    rendered; the text file is refused with the upload's own one-line error."""
+    notes = tmp_path / "picked-notes.wav"
+    notes.write_text("not audio")
+    sound = "/usr/share/sonic-pi/samples/drum_cymbal_closed.flac"
+    before = browser.execute_script("return studio.samplesReady")
+    browser.find_element("id", "pick").send_keys(f"{sound}\n{notes}")
+    WebDriverWait(browser, 30).until(lambda d: d.find_element("id", "error").text)
+    error = browser.find_element("id", "error").text
+    assert error == "picked-notes.wav: not a sound file tactus reads", error
+    listed = [o.text for o in Select(browser.find_element("id", "file")).options]
+    assert "drum_cymbal_closed.flac" in listed and "picked-notes.wav" not in listed, listed
+    WebDriverWait(browser, 30).until(lambda d: d.execute_script(
+        "return studio.render.file === 'drum_cymbal_closed.flac' && !studio.inFlight"))
+    assert browser.execute_script("return document.getElementById('pick').value") == ""
+    picked = wait_for_samples(browser, before)
+    # Back to the clip, for the tests after this one.
+    Select(browser.find_element("id", "file")).select_by_visible_text("amen30.wav")
+    wait_for_samples(browser, picked)
+    assert browser.execute_script("return studio.render.file") == "amen30.wav"
+
+
 def test_latency(browser):
     """50 slider changes, each waited for: change -> redrawn plots, measured in the page."""
     slider = control(browser, SLIDER)
-    browser.execute_script("studio.latencies = []")
+    browser.execute_script("studio.latencies = []; studio.legs = []")
     for i in range(50):
         last = browser.execute_script("return studio.renders")
         slider.send_keys(Keys.ARROW_RIGHT if i % 2 else Keys.ARROW_LEFT)
@@ -374,6 +421,10 @@ def test_latency(browser):
     render_ms = browser.execute_script("return studio.render.render_ms")
     print(f"\nstudio latency over {len(latencies)} changes of a {CLIP_S} s clip: "
           f"median {median:.0f} ms, p95 {p95:.0f} ms (the last render took {render_ms:.0f} ms)")
+    legs = browser.execute_script("return studio.legs")
+    print("medians (ms): " + ", ".join(f"{leg} {statistics.median(x[leg] for x in legs):.1f}"
+                                       for leg in ["render", "answer", "parse", "draw"]) +
+          f"; load average {os.getloadavg()[0]:.2f}")
     assert len(latencies) >= 50 and median > 0
     if os.environ.get("TACTUS_STUDIO_SCREENSHOT"):  # zoomed in on the first bars
         browser.execute_script("studio.view = {t0: 0, t1: 3.5}; studio.loop = [0.85, 1.7]; draw()")

@@ -11,6 +11,7 @@
 #include "page.hpp"
 #include "params_json.hpp"
 #include "pipeline_options.hpp"
+#include "plot_digest.hpp"
 #include "report_render.hpp"
 #include "tactus/export/haptic_formats.hpp"
 #include "tactus/io/actuator_file.hpp"
@@ -130,8 +131,16 @@ StudioResponse render(StudioSession& session, const StudioRequest& request) {
     for (const ReportOnset& o : r.onsets)
         out["onsets"].push_back({o.time_s, std::string(name_of(o.part))});
     if (!out.contains("onsets")) out["onsets"] = json::array();
-    for (const ReportPlot& p : r.plots)
+    // The plots the page holds already (the digests it sent back): named, not sent again.
+    const json have = body.contains("have") && body["have"].is_object() ? body["have"] : json{};
+    for (const ReportPlot& p : r.plots) {
+        const std::string digest = plot_digest(p, r.onsets);
+        if (const auto it = have.find(p.id); it != have.end() && *it == digest) {
+            out["plots"].push_back({{"id", p.id}, {"digest", digest}, {"same", true}});
+            continue;
+        }
         out["plots"].push_back({{"id", p.id},
+                                {"digest", digest},
                                 {"title", p.title},
                                 {"y_label", p.y_label},
                                 {"labels", p.labels},
@@ -141,6 +150,7 @@ StudioResponse render(StudioSession& session, const StudioRequest& request) {
                                 {"band", p.band},
                                 {"points", p.points},
                                 {"right_axis", p.right_axis}});
+    }
     for (const auto& c : perception::kChannels)
         out["channels"].push_back(
             {{"name", c.name},

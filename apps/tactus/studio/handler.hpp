@@ -33,8 +33,10 @@ struct StudioResponse {
 // GET  /api/preset?name=N     {key: value text} of preset N
 // GET  /api/files             {files: [name...]}
 // POST /api/upload?name=N     body: the file's bytes -> {file: N}
-// POST /api/render            {file, preset, settings: {key: text}, actuator} -> the plots,
-//                             onsets and figures, and `render`: the id of its samples
+// POST /api/render            {file, preset, settings: {key: text}, actuator, have: {plot id:
+//                             digest}} -> the plots (each with its digest; one whose digest
+//                             the page sent is only named: {id, digest, same: true}), onsets
+//                             and figures, and `render`: the id of its samples
 // GET  /api/samples?render=ID&what=vibration|sound   float32 little-endian
 // POST /api/preset            {preset, settings} -> the preset's text (a .toml download)
 // POST /api/export            {file, preset, settings, actuator, format} -> the file

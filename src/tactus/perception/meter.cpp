@@ -28,6 +28,26 @@ Gains threshold_gains(Channel channel, double sample_rate_hz, int size, double c
     });
 }
 
+// A Hann window of n points (shifted half a sample) and its power (sum of squares): remembered,
+// as the thresholds are (250 000 sines a prepare for the four windows at 44.1 kHz).
+struct Window {
+    std::vector<float> values;
+    double power = 0;
+};
+std::shared_ptr<const Window> hann_window(int n) {
+    static DesignMemo<int, std::shared_ptr<const Window>> memo;
+    return memo.get(n, [&] {
+        auto w = std::make_shared<Window>();
+        w->values.resize(static_cast<size_t>(n));
+        for (int i = 0; i < n; ++i) {
+            const double s = std::sin(kPi * (i + 0.5) / n);
+            w->values[i] = static_cast<float>(s * s);
+            w->power += double(w->values[i]) * w->values[i];
+        }
+        return std::shared_ptr<const Window>(std::move(w));
+    });
+}
+
 }  // namespace
 
 struct SensationMeter::ChannelState {
@@ -45,12 +65,13 @@ SensationMeter::SensationMeter() = default;
 SensationMeter::~SensationMeter() = default;
 
 void SensationMeter::prepare(double sample_rate_hz, const Calibration& displacement_um,
-                             double contact_area_cm2) {
+                             double contact_area_cm2, const Channels& channels) {
     sample_rate_hz_ = sample_rate_hz;
     step_samples_ = static_cast<int>(std::lround(kStepS * sample_rate_hz));
     channels_.clear();
     int longest = 0;
     for (const auto& info : kChannels) {
+        if (!channels[static_cast<size_t>(info.channel)]) continue;
         auto c = std::make_unique<ChannelState>();
         c->channel = info.channel;
         c->hop_steps = kHopSteps[static_cast<int>(info.channel)];
@@ -58,13 +79,9 @@ void SensationMeter::prepare(double sample_rate_hz, const Calibration& displacem
         longest = std::max(longest, n);
         c->fft.prepare(next_power_of_two(n));
         const int m = c->fft.size();
-        c->window.resize(static_cast<size_t>(n));
-        double window_power = 0;
-        for (int i = 0; i < n; ++i) {
-            const double s = std::sin(kPi * (i + 0.5) / n);  // Hann, shifted half a sample
-            c->window[i] = static_cast<float>(s * s);
-            window_power += double(c->window[i]) * c->window[i];
-        }
+        const auto window = hann_window(n);
+        c->window = window->values;
+        const double window_power = window->power;
         c->weight.assign(static_cast<size_t>(c->fft.bins()), 0.0);
         const Gains threshold = threshold_gains(info.channel, sample_rate_hz, m, contact_area_cm2);
         for (int k = 0; k < c->fft.bins(); ++k) {
@@ -81,7 +98,7 @@ void SensationMeter::prepare(double sample_rate_hz, const Calibration& displacem
         c->frames.assign(static_cast<size_t>(frames_per_second), 0.0);
         channels_.push_back(std::move(c));
     }
-    history_.prepare(longest);
+    history_.prepare(std::max(longest, step_samples_));
     clean_.assign(static_cast<size_t>(step_samples_), 0.0f);
     filled_ = 0;
     steps_ = 0;

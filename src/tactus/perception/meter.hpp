@@ -50,12 +50,17 @@ class SensationMeter {
     static constexpr int kHopsPerWindow = 8;
 
     using Calibration = std::function<double(double frequency_hz)>;  // um peak per full scale
+    // The channels a meter computes (by Channel); the others read 0 and are left out of
+    // combined_db. Meters of disjoint channels fed the same samples read, channel for channel,
+    // what one meter of them all reads, bit for bit: their work can go to threads of their own.
+    using Channels = std::array<bool, 4>;
+    static constexpr Channels kAllChannels = {true, true, true, true};
 
     SensationMeter();
     ~SensationMeter();
     // May allocate.
-    void prepare(double sample_rate_hz, const Calibration& displacement_um,
-                 double contact_area_cm2);
+    void prepare(double sample_rate_hz, const Calibration& displacement_um, double contact_area_cm2,
+                 const Channels& channels = kAllChannels);
     // Feeds samples; calls on_reading for every 10 ms step completed. Not real-time safe
     // (callback), but allocation-free after prepare().
     void write(const float* samples, int count,
