@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""Times `tactus render` and `tactus onsets` against `aubioonset` on the same long real recording,
-in one run.
+"""Times `tactus render` and `tactus onsets` against `aubioonset`, and `tactus render` against the
+I/O floor (`sox` converting the same file to a float WAV: decoding and writing alone), on the
+same long real recording, in one run.
 
 usage: bench/compare.py BUILD_DIR [--out bench/results.md] [--runs 7] [--long-runs 3]
 
@@ -9,7 +10,7 @@ The input is Sonic Pi's Amen break (loop_amen_full.flac, 44.1 kHz stereo) looped
 (cached in BUILD_DIR/bench-compare). `tactus render` runs the whole pipeline (analysis,
 mapping, synthesis, post-processing, float WAV written); `tactus onsets` runs its onset
 detection alone, the same job as aubioonset, which runs its default onset method (hfc) with hop
-256 and every other parameter stated; both write onset times to a file. The three run in turn,
+256 and every other parameter stated; both write onset times to a file. The four run in turn,
 so a load change on the machine hits all alike; the script prints each one's median wall time,
 tactus's ratio to aubioonset, x real time, and peak RSS (GNU time's maximum resident set).
 """
@@ -28,6 +29,11 @@ import time
 import soundfile
 
 AMEN = pathlib.Path("/usr/share/sonic-pi/samples/loop_amen_full.flac")
+
+
+# The I/O floor of a render: the same file decoded and written as a float WAV, nothing else.
+def sox_floor(audio, out):
+    return ["sox", str(audio), "-e", "floating-point", "-b", "32", str(out)]
 # aubioonset's defaults, stated: method hfc ("default"), buffer 512, hop 256, threshold 0.3,
 # minioi 12 ms, silence -90 dB, the file's own sample rate.
 AUBIO_ARGS = ["-O", "hfc", "-B", "512", "-H", "256", "-t", "0.3", "-M", "0.012", "-s", "-90",
@@ -75,7 +81,9 @@ def timed(cmd, stdout=subprocess.DEVNULL):
 def measure(tactus, audio, work, runs):
     vibration = work / "out.vibration.wav"
     onsets = work / "out.onsets.txt"
-    runs_of = {"render": [], "onsets": [], "aubio": []}  # (wall s, CPU s, peak RSS MiB) per run
+    floor = work / "out.sox.wav"
+    # (wall s, CPU s, peak RSS MiB) per run
+    runs_of = {"render": [], "onsets": [], "aubio": [], "sox": []}
     for _ in range(runs):
         runs_of["render"].append(timed([tactus, "render", str(audio), "-o", str(vibration)]))
         vibration.unlink()
@@ -84,6 +92,8 @@ def measure(tactus, audio, work, runs):
         with open(onsets, "w") as out:
             runs_of["aubio"].append(
                 timed(["aubioonset", "-i", str(audio)] + AUBIO_ARGS, stdout=out))
+        runs_of["sox"].append(timed(sox_floor(audio, floor)))
+        floor.unlink()
     return runs_of
 
 
@@ -120,14 +130,17 @@ def main():
              f"{machine()}.", "",
              f"Input: `{AMEN.name}` (Sonic Pi, 44.1 kHz stereo FLAC) looped with `sox ... repeat "
              "N`, still FLAC, so both tools decode the same real compressed file.", "",
-             "- tactus render: `tactus render FILE -o OUT.wav` (preset tfd: analysis, mapping, "
-             "synthesis, post-processing, float WAV written), one thread.",
+             "- tactus render: `tactus render FILE -o OUT.wav` (the default preset: analysis, "
+             "mapping, synthesis, post-processing, float WAV written), the file decoded on a "
+             "thread of its own beside the engine.",
              "- tactus onsets: `tactus onsets FILE -o OUT.txt` (onset detection alone, the "
              "onsets render triggers pulses on), one thread.",
              f"- aubioonset (aubio-tools {aubio_version}): "
              f"`aubioonset -i FILE {' '.join(AUBIO_ARGS)}` (its default method and hop), onset "
              "times written to a file.",
-             "- Runs take turns: render, onsets, aubio, render, ...; wall and CPU (user + "
+             "- sox, the I/O floor: `sox FILE -e floating-point -b 32 OUT.wav` (decoding and "
+             "writing alone).",
+             "- Runs take turns: render, onsets, aubio, sox, render, ...; wall and CPU (user + "
              "system) times are medians; x real time is audio seconds per wall second; peak "
              "RSS is the largest over the runs, as GNU time reports it.", "",
              "| file | audio s | runs | tactus command | tactus wall s | aubio wall s | "
@@ -135,7 +148,7 @@ def main():
              "tactus x real time | aubio x real time | tactus peak RSS MiB | "
              "aubio peak RSS MiB |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
-    runs_detail = []
+    runs_detail, floors = [], []
     for label, repeats in LOOPS.items():
         audio = looped(work, repeats)
         duration_s = soundfile.info(str(audio)).duration
@@ -155,6 +168,11 @@ def main():
                          f"{duration_s / a:.0f} | {rss[command]:.1f} | {rss['aubio']:.1f} |")
         runs_detail += [f"- {label}, {tool}: " + ", ".join(f"{r[0]:.2f}" for r in runs_of[tool])
                         for tool in runs_of]
+        floors.append(f"| {label} | {wall['render']:.2f} | {wall['sox']:.2f} | "
+                      f"{wall['render'] / wall['sox']:.2f} | {rss['sox']:.1f} |")
+    lines += ["", "`tactus render` against the I/O floor (medians of the same runs):", "",
+              "| file | tactus render wall s | sox wall s | tactus / sox | sox peak RSS MiB |",
+              "|---|---|---|---|---|"] + floors
     lines += ["", "Wall seconds of every run:", ""] + runs_detail + [""]
     report = "\n".join(lines)
     print(report)
