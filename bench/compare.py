@@ -34,6 +34,8 @@ AMEN = pathlib.Path("/usr/share/sonic-pi/samples/loop_amen_full.flac")
 # The I/O floor of a render: the same file decoded and written as a float WAV, nothing else.
 def sox_floor(audio, out):
     return ["sox", str(audio), "-e", "floating-point", "-b", "32", str(out)]
+
+
 # aubioonset's defaults, stated: method hfc ("default"), buffer 512, hop 256, threshold 0.3,
 # minioi 12 ms, silence -90 dB, the file's own sample rate.
 AUBIO_ARGS = ["-O", "hfc", "-B", "512", "-H", "256", "-t", "0.3", "-M", "0.012", "-s", "-90",

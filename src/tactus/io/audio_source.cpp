@@ -54,8 +54,8 @@ void FileSource::decode() {
 int FileSource::next(int max_frames, const float* const*& channels) {
     std::unique_lock lock(mutex_);
     Slot* slot = &slots_[static_cast<size_t>(taken_ % kSlots)];
-    if (holding_ && offset_ >= slot->frames) {  // the current slot is used up: free it
-        ++taken_, offset_ = 0, holding_ = false;
+    if (offset_ > 0 && offset_ >= slot->frames) {  // the current slot is used up: free it
+        ++taken_, offset_ = 0;
         changed_.notify_all();
         slot = &slots_[static_cast<size_t>(taken_ % kSlots)];
     }
@@ -67,7 +67,6 @@ int FileSource::next(int max_frames, const float* const*& channels) {
     const int count = std::min({max_frames, max_block_, slot->frames - offset_});
     for (size_t c = 0; c < at_.size(); ++c) at_[c] = slot->block.data()[c] + offset_;
     offset_ += count;
-    holding_ = true;
     channels = at_.data();
     return count;
 }

@@ -64,8 +64,7 @@ class FileSource final : public AudioSource {
     std::mutex mutex_;
     std::condition_variable changed_;
     int64_t decoded_ = 0, taken_ = 0;  // slots filled, and handed on in full, since the start
-    int offset_ = 0;                   // frames of the current slot already handed on
-    bool holding_ = false;             // next() handed on part of the current slot
+    int offset_ = 0;  // frames of the current slot already handed on (> 0: it is in use)
     bool stop_ = false;
     std::exception_ptr error_;  // what the read after the last filled slot threw
     std::thread thread_;
