@@ -207,9 +207,8 @@ def sections(result):
     return lines
 
 
-def summary(corpora, extra_rows=()):
-    """The headline figures of each corpus side by side, the worst kit named; then `extra_rows`,
-    (label, [cell per corpus]) each."""
+def summary(corpora):
+    """The headline figures of each corpus side by side, the worst kit named."""
     def f_at_50(result, condition):
         return np.mean(result["scores"][condition]["tactus"][0], axis=0)[1][0]
 
@@ -242,8 +241,6 @@ def summary(corpora, extra_rows=()):
              "|---|" + "---|" * len(names)]
     for label, measure in rows:
         lines.append(f"| {label} | " + " | ".join(measure(r) for _, r in corpora) + " |")
-    for label, cells in extra_rows:
-        lines.append(f"| {label} | " + " | ".join(cells) + " |")
     return lines + [""]
 
 
@@ -295,17 +292,17 @@ def main():
                   "or chorus; soft-attack acoustic bass drums in two kits), placed as above "
                   f"(seed {args.seed}).", ""]
         lines += ["#" + line if line.startswith("## ") else line for line in tables] + [""]
-    music_rows = []
+    music_summary = []
     if args.music:
-        parts = ("tuning", "held-out") if args.held_out == "gm" else ("tuning",)
+        parts = music.PARTS if args.held_out == "gm" else ("tuning", "recorded-tuning")
         measured = music.measure(args.build_dir, work / "music", args.preset, work / "gm-samples",
                                  parts)
         lines += music.section(measured) + [""]
-        music_rows = music.summary_rows(measured)
+        music_summary = music.summary(measured)
     corpora = [("Sonic Pi kits (tuned)", tuned)]
     if args.held_out == "gm":
         corpora.append(("General MIDI kits (held out)", held_out))
-    lines[summary_at:summary_at] = summary(corpora, music_rows)
+    lines[summary_at:summary_at] = summary(corpora) + music_summary
     report = "\n".join(lines)
     print(report)
     if args.out:

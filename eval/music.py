@@ -46,7 +46,10 @@ DETECTORS = ("tactus", "aubio mkl", "aubio specflux")
 LEVELS = (None,) + music_corpus.BED_LEVELS_DB
 GAIN_LEVELS = (None,) + music_corpus.GAIN_BED_LEVELS_DB
 PART_NAMES = {"tuning": "tuning (Sonic Pi kits, FluidR3 bed)",
-              "held-out": "held out (GM kits, TimGM6mb and MuseScore beds)"}
+              "held-out": "held out (GM kits, TimGM6mb and MuseScore beds)",
+              "recorded-tuning": "recorded kits, tuning (Hydrogen, FluidR3 bed)",
+              "recorded-held-out": "recorded kits, held out (Hydrogen, TimGM6mb and MuseScore beds)"}
+PARTS = tuple(PART_NAMES)
 
 
 def level_label(level_db):
@@ -110,6 +113,10 @@ def analyse_mix(tactus, entry, directory, renders, preset):
                  "aubio specflux": aubio_onsets(wav, "specflux")}
     scores = {d: mir_eval.onset.f_measure(reference, e, window=TOLERANCE_S)
               for d, e in estimates.items()}
+    if entry["bed_db"] is None:  # the drums alone, also in white noise
+        noisy = directory / f"{entry['name']}.noise.wav"
+        scores["tactus in noise"] = mir_eval.onset.f_measure(
+            reference, tactus_onsets(tactus, noisy, preset)[0], window=TOLERANCE_S)
     matches = mir_eval.util.match_events(reference, times, TOLERANCE_S)
     _, envelope, rate = felt_render(tactus, wav, renders, preset)
     pulses = sum(gives_pulse(envelope, rate, reference[i]) for i, _ in matches)
@@ -161,7 +168,7 @@ def measure_part(tactus, directory, manifest, preset, jobs):
     return {"mixes": by_level, "gain": gain_files}
 
 
-def measure(build_dir, work, preset, gm_samples, parts=("tuning", "held-out"), jobs=2):
+def measure(build_dir, work, preset, gm_samples, parts=PARTS, jobs=2):
     """Builds the music corpus in `work` (cached) and measures tactus on each of `parts`."""
     tactus = str(pathlib.Path(build_dir) / "bin/tactus")
     manifests = music_corpus.build(work, gm_samples, parts, jobs)
@@ -239,11 +246,15 @@ def accuracy_cell(part, level):
     return " / ".join(f"{accuracy[p]:.3f}" for p in PRIORITY + ("all",))
 
 
-def summary_rows(result):
-    """(label, [cell per part]) rows for evaluate.py's summary table."""
+def summary(result):
+    """The headline figures of each part side by side (evaluate.py's summary)."""
     parts = list(result.values())
+    names = [PART_NAMES[p] for p in result]
     levels = "/".join(level_label(level).replace(" dB", "") for level in LEVELS)
-    rows = [(f"music: tactus onset recall at +-50 ms, bed {levels} dB", recall_cell),
+    rows = [("music, drums alone: tactus onset F at +-50 ms, clean / white noise -20 dB",
+             lambda p: f"{onset_means(p, None, 'tactus')[0]:.3f} / "
+                       f"{onset_means(p, None, 'tactus in noise')[0]:.3f}"),
+            (f"music: tactus onset recall at +-50 ms, bed {levels} dB", recall_cell),
             ("music: drum hits giving a felt pulse, bed -6 / 0 dB",
              lambda p: f"{pulse_share(p, -6):.3f} / {pulse_share(p, 0):.3f}"),
             ("music: isolated hits, bed -6 dB: gain -> felt pulse peak rho, worst",
@@ -254,7 +265,10 @@ def summary_rows(result):
              "percentile ms (distinct pulses)", lambda p: latency_cell(p, -6)),
             ("music: drum part right, bed 0 dB, kick / snare / hat / all",
              lambda p: accuracy_cell(p, 0))]
-    return [(label, [cell(p) for p in parts]) for label, cell in rows]
+    lines = ["| figure, drums inside music | " + " | ".join(names) + " |",
+             "|---|" + "---|" * len(names)]
+    lines += [f"| {label} | " + " | ".join(cell(p) for p in parts) + " |" for label, cell in rows]
+    return lines + [""]
 
 
 def section(result):
@@ -274,7 +288,12 @@ def section(result):
              "compand, peak-normalised to -1 dBFS, a quarter at 48 kHz. Tuning part: the Sonic Pi "
              "kits, FluidR3 beds, seed 1; held out: the General MIDI kits of the held-out corpus, "
              "TimGM6mb and MuseScore beds with other programs and voices, seed 2, plus shuffle "
-             "and two-step patterns. Files: " +
+             "and two-step patterns. Recorded kits (`eval/recorded_kits.py`): Hydrogen's kits "
+             "(Debian's hydrogen-drumkits), acoustic kits sampled at several strengths (each hit "
+             "plays its velocity's recording) and electronic kits, six for tuning and five held "
+             "out, in songs drawn as the tuning and the held-out part's (seeds 3 and 4). The "
+             "drums alone are also measured in white noise "
+             f"{music_corpus.NOISE_DB} dB re their RMS. Files: " +
              ", ".join(f"{n} {name}" for name, n in n_mixes.items()) + ".", "",
              "## Onsets in music", "",
              "Mean over the files of each bed level of F, precision and recall at +-50 ms "
@@ -288,6 +307,10 @@ def section(result):
             cells = [" / ".join(f"{v:.3f}" for v in onset_means(p, level, detector)[[2, 1, 0]])
                      for p in parts]
             lines.append(f"| {detector} | {level_label(level)} | " + " | ".join(cells) + " |")
+    cells = [" / ".join(f"{v:.3f}" for v in onset_means(p, None, "tactus in noise")[[2, 1, 0]])
+             for p in parts]
+    lines.append(f"| tactus | alone in white noise {music_corpus.NOISE_DB} dB | " +
+                 " | ".join(cells) + " |")
     lines += ["", "tactus recall per style (alone / -12 / -6 / 0 / +6 dB):", ""]
     for name, p in zip(names, parts):
         styles = sorted({e["style"] for e, _ in p["mixes"][None]})

@@ -22,11 +22,16 @@ at gains 0, -3, ..., -24 dB (minus 1 dB, shuffled, as drum_corpus.cpp's gain_ser
 over a bed at -12 and -6 dB re the loudest hit: the bed's RMS over the whole file against the RMS
 of the 0 dB hit over its first 100 ms. No bus processing, 44.1 kHz.
 
-Two parts. Tuning: the eight Sonic Pi kits of eval/drum_corpus.cpp's kits() (read from that file),
+The drums alone are also written in white noise (NAME.noise.wav, NOISE_DB re their RMS).
+
+Four parts. Tuning: the eight Sonic Pi kits of eval/drum_corpus.cpp's kits() (read from that file),
 beds from FluidR3_GM, styles rock, house, funk, half-time and hip-hop, seed 1. Held out: the
 General MIDI kits of eval/gm_kits.py, beds from TimGM6mb and MuseScore_General with other GM
 programs, voices and phrases, the same five style families drawn with seed 2 and two styles the
-tuning part lacks (shuffle, two-step), so no pattern repeats. A quarter of the songs are at
+tuning part lacks (shuffle, two-step), so no pattern repeats. Recorded kits (eval/recorded_kits.py:
+Hydrogen's acoustic kits sampled at several strengths, each hit playing its velocity's recording,
+and electronic kits), tuning and held out: their beds, programs and styles as the tuning and the
+held-out part's, seeds 3 and 4. A quarter of the songs are at
 48 kHz, the rest at 44.1 kHz. manifest.json lists every file with its part, song, kit, style,
 tempo, bed level, processing and rate. Files that exist are left as they are.
 """
@@ -42,6 +47,7 @@ import scipy.signal
 import soundfile
 
 import gm_kits
+import recorded_kits
 
 EVAL = pathlib.Path(__file__).resolve().parent
 SONIC_PI = pathlib.Path("/usr/share/sonic-pi/samples")
@@ -53,6 +59,7 @@ GAIN_BED_LEVELS_DB = (-12, -6)
 PEAK = 10 ** (-1 / 20)  # -1 dBFS
 LEAD_S, TAIL_S = 0.3, 0.8
 PART_DB = {"bass": 0.0, "chords": -3.0, "melody": -5.0, "voice": -2.0}
+NOISE_DB = -20  # the drums alone are also written in white noise this far below their RMS
 REFERENCE_S = 0.1  # the isolated sets' bed level is re the loudest hit's RMS over this long
 SLOT_S = 16.0  # each song's bed part is rendered in a slot this long (song, then ring)
 SONGS_PER_KIT = 2
@@ -78,7 +85,10 @@ STYLES = {"tuning": ["rock", "house", "funk", "halftime", "hiphop"],
           "held-out": ["rock", "house", "funk", "halftime", "hiphop", "shuffle", "twostep"]}
 TEMPO_BPM = {"rock": (100, 140), "house": (118, 128), "funk": (88, 112), "halftime": (140, 170),
              "hiphop": (70, 96), "shuffle": (72, 100), "twostep": (160, 172)}
-SEEDS = {"tuning": 1, "held-out": 2}
+SEEDS = {"tuning": 1, "held-out": 2, "recorded-tuning": 3, "recorded-held-out": 4}
+# The recorded kits' parts take their beds' programs, voices, fonts and styles from these.
+BEDS_OF = {"tuning": "tuning", "held-out": "held-out", "recorded-tuning": "tuning",
+           "recorded-held-out": "held-out"}
 PROGRESSIONS = {"major": [[0, 7, 9, 5], [0, 5, 7, 0], [2, 7, 0, 9]],
                 "minor": [[0, 8, 3, 10], [0, 5, 7, 0], [0, 10, 8, 7]]}
 SCALES = {"major": [0, 2, 4, 5, 7, 9, 11], "minor": [0, 2, 3, 5, 7, 8, 10]}
@@ -201,10 +211,16 @@ def place(mix, sample, time_s, gain_db, rate):
 
 
 def drum_stem(hits, samples, length, rate):
+    """`samples`: {instrument: [(highest velocity, audio)]}, each hit playing its velocity's layer
+    (eval/recorded_kits.py; one-shots are one layer)."""
     stem = np.zeros(length)
     for t, instrument, gain in hits:
-        place(stem, samples[instrument], t, gain, rate)
+        place(stem, recorded_kits.layer_for(gain, samples[instrument]), t, gain, rate)
     return stem
+
+
+def load_layers(layers, rate):
+    return [(top, load(path, rate)) for top, path in layers]
 
 
 def rms(x):
@@ -324,21 +340,27 @@ def bed_mix(parts):
 
 # The corpus.
 def kits_of(part, gm_samples):
-    """{kit: {instrument: sample path}} of the part's kits."""
+    """{kit: {instrument: [(highest velocity, sample path)]}} of the part's kits (one-shots: one
+    layer)."""
+    if part.startswith("recorded"):
+        return recorded_kits.kits(part)
     if part == "tuning":
-        return {name: {"kick": SONIC_PI / f"{k}.flac", "snare": SONIC_PI / f"{s}.flac",
-                       "hat": SONIC_PI / f"{h}.flac"} for name, k, s, h in sonic_pi_kits()}
+        return {name: {"kick": [(1.0, SONIC_PI / f"{k}.flac")],
+                       "snare": [(1.0, SONIC_PI / f"{s}.flac")],
+                       "hat": [(1.0, SONIC_PI / f"{h}.flac")]}
+                for name, k, s, h in sonic_pi_kits()}
     kits = gm_kits.render(gm_samples)
-    return {kit: {i: pathlib.Path(gm_samples) / f"{kit}_{i}.flac" for i in gm_kits.INSTRUMENTS}
-            for kit in kits}
+    return {kit: {i: [(1.0, pathlib.Path(gm_samples) / f"{kit}_{i}.flac")]
+                  for i in gm_kits.INSTRUMENTS} for kit in kits}
 
 
 def songs_of(part, kits):
     """The song specs of one part, deterministic from its seed."""
     rng = np.random.default_rng(SEEDS[part])
-    fonts = ["fluid"] if part == "tuning" else ["timgm6mb", "musescore"]
-    programs, voices = PROGRAMS[part], VOICES[part]
-    styles = STYLES[part]
+    beds_of = BEDS_OF[part]
+    fonts = ["fluid"] if beds_of == "tuning" else ["timgm6mb", "musescore"]
+    programs, voices = PROGRAMS[beds_of], VOICES[beds_of]
+    styles = STYLES[beds_of]
     songs = []
 
     def bed(index, name, length_s=None, tempo=None):
@@ -406,10 +428,17 @@ def processed(mix, rate, fx, work):
     return mix * gain, gain
 
 
+def in_noise(mix, seed):
+    """The mix with white noise NOISE_DB re its RMS added, peak-normalised again."""
+    noise = np.random.default_rng([seed, role_seed("noise")]).standard_normal(len(mix))
+    noisy = mix + noise * rms(mix) * 10 ** (NOISE_DB / 20)
+    return noisy * PEAK / np.max(np.abs(noisy))
+
+
 def write_song(song, bed, kit_samples, out, work):
     """The song's mixes: alone and at each bed level; returns their manifest entries."""
     rate = song["rate"]
-    samples = {i: load(p, rate) for i, p in kit_samples.items()}
+    samples = {i: load_layers(layers, rate) for i, layers in kit_samples.items()}
     hits = drum_hits(song["style"], song["tempo_bpm"], song["bars"],
                      np.random.default_rng([song["seed"], role_seed("drums")]))
     drums = drum_stem(hits, samples, song["length"], rate)
@@ -420,11 +449,15 @@ def write_song(song, bed, kit_samples, out, work):
                         "style": song["style"], "tempo_bpm": song["tempo_bpm"],
                         "bed_db": level, "fx": song["fx"], "rate": rate, "font": song["font"],
                         "programs": song["programs"], "voice": song["voice"]})
-        if (out / f"{name}.wav").exists():
+        if (out / f"{name}.wav").exists() and \
+                (level is not None or (out / f"{name}.noise.wav").exists()):
             continue
         scaled_bed = 0 if level is None else bed * rms(drums) / rms(bed) * 10 ** (level / 20)
         mix, gain = processed(drums + scaled_bed, rate, song["fx"], work)
         soundfile.write(out / f"{name}.wav", mix, rate, subtype="PCM_24")
+        if level is None:
+            soundfile.write(out / f"{name}.noise.wav", in_noise(mix, song["seed"]), rate,
+                            subtype="PCM_24")
         if level is not None:
             soundfile.write(out / f"{name}.drums.wav", drums * gain, rate, subtype="PCM_24")
             soundfile.write(out / f"{name}.bed.wav", scaled_bed * gain, rate, subtype="PCM_24")
@@ -443,10 +476,11 @@ def write_gain_series(song, bed, kit_samples, out):
     """The kit's kick and snare series alone and over its bed at each GAIN_BED_LEVELS_DB."""
     rate, entries = song["rate"], []
     for instrument in ("kick", "snare"):
-        sample = load(kit_samples[instrument], rate)
+        layered = load_layers(kit_samples[instrument], rate)
         hits = gain_hits(instrument, np.random.default_rng([song["seed"], role_seed(instrument)]))
-        drums = drum_stem(hits, {instrument: sample}, song["length"], rate)
-        reference = rms(10 ** (-1 / 20) * sample[:int(REFERENCE_S * rate)])
+        drums = drum_stem(hits, {instrument: layered}, song["length"], rate)
+        loudest = recorded_kits.layer_for(-1, layered)
+        reference = rms(10 ** (-1 / 20) * loudest[:int(REFERENCE_S * rate)])
         for level in (None,) + GAIN_BED_LEVELS_DB:
             name = f"{song['name'].replace('gainbed', 'gain')}-{instrument}-{level_name(level)}"
             entries.append({"name": name, "kit": song["kit"], "instrument": instrument,

@@ -13,6 +13,7 @@ packages=(
   sonic-pi-samples aubio-tools sox lame puredata-core puredata-extra puredata-dev time
   python3 python3-numpy python3-scipy python3-soundfile python3-mir-eval
   fluidsynth fluid-soundfont-gm musescore-general-soundfont-small timgm6mb-soundfont espeak-ng
+  hydrogen-drumkits
   dpf-source liblilv-dev lv2-dev lilv-utils sordi jackd2 ardour
   python3-dev pybind11-dev python3-pytest python3-matplotlib python3-distributed python3-pandas
   vamp-plugin-sdk vamp-examples
