@@ -32,19 +32,13 @@ BiquadCoefficients k_highpass(double fs) {
 }  // namespace
 
 void KWeighting::prepare(const ProcessSpec& spec) {
-    shelf_.set(k_shelf(spec.sample_rate_hz));
-    highpass_.set(k_highpass(spec.sample_rate_hz));
+    sections_[0].set(k_shelf(spec.sample_rate_hz));
+    sections_[1].set(k_highpass(spec.sample_rate_hz));
     reset();
 }
 
 void KWeighting::add_power(const float* samples, float* power, int count) noexcept {
-    Biquad shelf = shelf_, highpass = highpass_;  // state in locals: kept in registers
-    for (int i = 0; i < count; ++i) {
-        const double y = highpass.process(shelf.process(samples[i]));
-        power[i] += static_cast<float>(y * y);
-    }
-    shelf_ = shelf;
-    highpass_ = highpass;
+    each(samples, count, [&](int i, double y) { power[i] += static_cast<float>(y * y); });
 }
 
 }  // namespace tactus

@@ -3,7 +3,10 @@
 // (Loudness) and of several, summed as the standard sums them (ChannelPower).
 #pragma once
 
+#include <array>
+
 #include "tactus/dsp/biquad.hpp"
+#include "tactus/dsp/biquad_cascade.hpp"
 #include "tactus/dsp/process_spec.hpp"
 
 namespace tactus {
@@ -12,17 +15,20 @@ class KWeighting {
   public:
     void prepare(const ProcessSpec& spec);
     void reset() noexcept {
-        shelf_.reset();
-        highpass_.reset();
+        for (auto& section : sections_) section.reset();
     }
     int latency() const { return 0; }
     // Adds the square of each K-weighted sample to power[i].
     void add_power(const float* samples, float* power, int count) noexcept;
-    // One sample, K-weighted.
-    double process(double x) noexcept { return highpass_.process(shelf_.process(x)); }
+    // For i < count, in order: sink(i, samples[i] K-weighted), in double.
+    template <typename Sink>
+    void each(const float* samples, int count, Sink sink) noexcept {
+        cascade_each<2>(
+            sections_.data(), count, [&](int i) { return static_cast<double>(samples[i]); }, sink);
+    }
 
   private:
-    Biquad shelf_, highpass_;
+    std::array<Biquad, 2> sections_;  // the shelf, then the high-pass
 };
 
 }  // namespace tactus

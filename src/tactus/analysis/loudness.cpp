@@ -25,13 +25,12 @@ void Loudness::reset() noexcept {
     sum_ = fresh_sum_ = 0.0;
 }
 
-template <typename Square>
-void Loudness::add(int count, Square square) noexcept {
+template <typename Squares>
+void Loudness::add(Squares squares) noexcept {
     const size_t length = squares_.size();
     double sum = sum_, fresh = fresh_sum_;  // in locals: kept in registers
     size_t position = position_;
-    for (int i = 0; i < count; ++i) {
-        const double y2 = square(i);
+    squares([&](double y2) {
         sum += y2 - squares_[position];
         squares_[position] = y2;
         fresh += y2;
@@ -40,23 +39,20 @@ void Loudness::add(int count, Square square) noexcept {
             sum = fresh;
             fresh = 0.0;
         }
-    }
+    });
     sum_ = sum;
     fresh_sum_ = fresh;
     position_ = position;
 }
 
 void Loudness::process(const float* samples, int count) noexcept {
-    KWeighting k = k_weighting_;
-    add(count, [&](int i) {
-        const double y = k.process(samples[i]);
-        return y * y;
-    });
-    k_weighting_ = k;
+    add([&](auto take) { k_weighting_.each(samples, count, [&](int, double y) { take(y * y); }); });
 }
 
 void Loudness::process_power(const float* power, int count) noexcept {
-    add(count, [&](int i) { return static_cast<double>(power[i]); });
+    add([&](auto take) {
+        for (int i = 0; i < count; ++i) take(static_cast<double>(power[i]));
+    });
 }
 
 double Loudness::mean_square() const noexcept {

@@ -26,8 +26,9 @@ class Loudness {
     static double db_of(double mean_square) noexcept;  // LKFS scale
 
   private:
-    template <typename Square>
-    void add(int count, Square square) noexcept;
+    // squares(take) calls take(y2) with each new square in order.
+    template <typename Squares>
+    void add(Squares squares) noexcept;
     KWeighting k_weighting_;
     std::vector<double> squares_;  // ring of K-weighted squares, one window long
     size_t position_ = 0;

@@ -1,6 +1,7 @@
-// A cascade of biquads run over a block. The sections are copied into locals of a size fixed
-// at compile time, so the compiler unrolls the section loop and keeps the states in
-// registers. On SSE2 the sections also run in a wavefront, two per vector: at step t,
+// A cascade of biquads run over a block, its output given sample by sample to a sink (a band's
+// energy, a K-weighted square) or written back (process_cascade). The sections are copied into
+// locals of a size fixed at compile time, so the compiler unrolls the section loop and keeps the
+// states in registers. On SSE2 the sections also run in a wavefront, two per vector: at step t,
 // section k filters sample t - k, so all sections advance at once instead of one after the
 // other. Each section does exactly Biquad::process's arithmetic on every sample, in the same
 // order: the output is bit-identical to applying the sections in turn, for any block split.
@@ -18,10 +19,11 @@
 
 namespace tactus {
 
-// For i < count: sink(i, the N sections in turn applied to input(i)), in double. The
-// sections are copied into locals (unrolled, states in registers) and written back after.
+namespace detail {
+// cascade_each, one section after the other: the sections are copied into locals (unrolled,
+// states in registers) and written back after.
 template <int N, typename Input, typename Sink>
-void cascade_each(Biquad* sections, int count, Input input, Sink sink) noexcept {
+void serial_each(Biquad* sections, int count, Input input, Sink sink) noexcept {
     std::array<Biquad, N> local;
     for (int s = 0; s < N; ++s) local[s] = sections[s];
     for (int i = 0; i < count; ++i) {
@@ -32,17 +34,10 @@ void cascade_each(Biquad* sections, int count, Input input, Sink sink) noexcept 
     for (int s = 0; s < N; ++s) sections[s] = local[s];
 }
 
-namespace detail {
-template <int N>
-void run_cascade(Biquad* sections, float* samples, int count, double gain) noexcept {
-    cascade_each<N>(
-        sections, count, [&](int i) { return samples[i] * gain; },
-        [&](int i, double y) { samples[i] = static_cast<float>(y); });
-}
-
 #if defined(__SSE2__)
-template <int N>
-void run_wavefront(Biquad* sections, float* samples, int count, double gain) noexcept {
+// cascade_each in a wavefront, two sections per vector.
+template <int N, typename Input, typename Sink>
+void wavefront_each(Biquad* sections, int count, Input input, Sink sink) noexcept {
     constexpr int V = (N + 1) / 2;  // vectors of two sections; a spare lane is a pass-through
     __m128d b0[V], b1[V], b2[V], a1[V], a2[V], s1[V], s2[V], y[V];
     for (std::ptrdiff_t v = 0; v < V; ++v) {
@@ -88,14 +83,14 @@ void run_wavefront(Biquad* sections, float* samples, int count, double gain) noe
         if (done >= 0 && done < count) {
             double last[2];
             _mm_storeu_pd(last, y[V - 1]);
-            samples[done] = static_cast<float>(last[(N - 1) % 2]);
+            sink(done, last[(N - 1) % 2]);
         }
     };
     const int steps = count + N - 1;
     const int steady_end = count;  // steps N-1 ... count-1 have every lane in range
     int t = 0;
-    for (; t < std::min(N - 1, steps); ++t) step(t < count ? samples[t] * gain : 0.0, true, t);
-    for (; t < steady_end; ++t) step(samples[t] * gain, false, t);
+    for (; t < std::min(N - 1, steps); ++t) step(t < count ? input(t) : 0.0, true, t);
+    for (; t < steady_end; ++t) step(input(t), false, t);
     for (; t < steps; ++t) step(0.0, true, t);
     for (std::ptrdiff_t v = 0; v < V; ++v) {
         double first[2], second[2];
@@ -106,13 +101,24 @@ void run_wavefront(Biquad* sections, float* samples, int count, double gain) noe
     }
 }
 #endif
+}  // namespace detail
 
+// For i < count, in increasing i: sink(i, the N sections in turn applied to input(i)), in
+// double.
+template <int N, typename Input, typename Sink>
+void cascade_each(Biquad* sections, int count, Input input, Sink sink) noexcept {
+#if defined(__SSE2__)
+    if constexpr (N >= 2) return detail::wavefront_each<N>(sections, count, input, sink);
+#endif
+    detail::serial_each<N>(sections, count, input, sink);
+}
+
+namespace detail {
 template <int N>
 void run(Biquad* sections, float* samples, int count, double gain) noexcept {
-#if defined(__SSE2__)
-    if constexpr (N >= 2) return run_wavefront<N>(sections, samples, count, gain);
-#endif
-    run_cascade<N>(sections, samples, count, gain);
+    cascade_each<N>(
+        sections, count, [&](int i) { return samples[i] * gain; },
+        [&](int i, double y) { samples[i] = static_cast<float>(y); });
 }
 
 template <int... N>
