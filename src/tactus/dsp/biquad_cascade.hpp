@@ -1,7 +1,7 @@
 // A cascade of biquads run over a block, its output given sample by sample to a sink (a band's
 // energy, a K-weighted square) or written back (process_cascade). The sections are copied into
 // locals of a size fixed at compile time, so the compiler unrolls the section loop and keeps the
-// states in registers. On SSE2 the sections also run in a wavefront, two per vector: at step t,
+// states in registers. Two or more sections also run in a wavefront, two per vector: at step t,
 // section k filters sample t - k, so all sections advance at once instead of one after the
 // other. Each section does exactly Biquad::process's arithmetic on every sample, in the same
 // order: the output is bit-identical to applying the sections in turn, for any block split.
@@ -12,10 +12,6 @@
 #include <utility>
 
 #include "tactus/dsp/biquad.hpp"
-
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 namespace tactus {
 
@@ -34,45 +30,43 @@ void serial_each(Biquad* sections, int count, Input input, Sink sink) noexcept {
     for (int s = 0; s < N; ++s) sections[s] = local[s];
 }
 
-#if defined(__SSE2__)
-// cascade_each in a wavefront, two sections per vector.
+// cascade_each in a wavefront, two sections per vector (the compiler's generic vectors: SSE2
+// on x86-64, NEON on arm64, pairs of scalars where the target has no double vectors).
 template <int N, typename Input, typename Sink>
 void wavefront_each(Biquad* sections, int count, Input input, Sink sink) noexcept {
+    using Pair = double __attribute__((vector_size(2 * sizeof(double))));
     constexpr int V = (N + 1) / 2;  // vectors of two sections; a spare lane is a pass-through
-    __m128d b0[V], b1[V], b2[V], a1[V], a2[V], s1[V], s2[V], y[V];
+    Pair b0[V], b1[V], b2[V], a1[V], a2[V], s1[V], s2[V], y[V];
     for (std::ptrdiff_t v = 0; v < V; ++v) {
         const BiquadCoefficients pass{};
         const BiquadCoefficients& c0 = sections[2 * v].coefficients();
         const BiquadCoefficients& c1 = 2 * v + 1 < N ? sections[2 * v + 1].coefficients() : pass;
-        b0[v] = _mm_set_pd(c1.b0, c0.b0);
-        b1[v] = _mm_set_pd(c1.b1, c0.b1);
-        b2[v] = _mm_set_pd(c1.b2, c0.b2);
-        a1[v] = _mm_set_pd(c1.a1, c0.a1);
-        a2[v] = _mm_set_pd(c1.a2, c0.a2);
+        b0[v] = Pair{c0.b0, c1.b0};
+        b1[v] = Pair{c0.b1, c1.b1};
+        b2[v] = Pair{c0.b2, c1.b2};
+        a1[v] = Pair{c0.a1, c1.a1};
+        a2[v] = Pair{c0.a2, c1.a2};
         const auto state0 = sections[2 * v].state();
         const auto state1 = 2 * v + 1 < N ? sections[2 * v + 1].state() : std::pair{0.0, 0.0};
-        s1[v] = _mm_set_pd(state1.first, state0.first);
-        s2[v] = _mm_set_pd(state1.second, state0.second);
-        y[v] = _mm_setzero_pd();
+        s1[v] = Pair{state0.first, state1.first};
+        s2[v] = Pair{state0.second, state1.second};
+        y[v] = Pair{0.0, 0.0};
     }
     // One step: every lane takes its left neighbour's last output (lane 0 the new sample).
     // Lanes outside 0 <= t - k < count keep their state (`masked`).
     auto step = [&](double input, bool masked, int t) {
-        __m128d x[V];
-        x[0] = _mm_unpacklo_pd(_mm_set_sd(input), y[0]);
-        for (int v = 1; v < V; ++v) x[v] = _mm_shuffle_pd(y[v - 1], y[v], 1);
+        Pair x[V];
+        x[0] = Pair{input, y[0][0]};
+        for (int v = 1; v < V; ++v) x[v] = Pair{y[v - 1][1], y[v][0]};
         for (int v = 0; v < V; ++v) {
-            const __m128d out = _mm_add_pd(_mm_mul_pd(b0[v], x[v]), s1[v]);
-            const __m128d n1 =
-                _mm_add_pd(_mm_sub_pd(_mm_mul_pd(b1[v], x[v]), _mm_mul_pd(a1[v], out)), s2[v]);
-            const __m128d n2 = _mm_sub_pd(_mm_mul_pd(b2[v], x[v]), _mm_mul_pd(a2[v], out));
+            const Pair out = b0[v] * x[v] + s1[v];
+            const Pair n1 = (b1[v] * x[v] - a1[v] * out) + s2[v];
+            const Pair n2 = b2[v] * x[v] - a2[v] * out;
             if (masked) {
-                const int k0 = 2 * v, k1 = 2 * v + 1;
-                const bool on0 = t - k0 >= 0 && t - k0 < count, on1 = t - k1 >= 0 && t - k1 < count;
-                const __m128d keep = _mm_castsi128_pd(
-                    _mm_set_epi64x(on1 ? -1 : 0, on0 ? -1 : 0));  // all ones: take the new state
-                s1[v] = _mm_or_pd(_mm_and_pd(keep, n1), _mm_andnot_pd(keep, s1[v]));
-                s2[v] = _mm_or_pd(_mm_and_pd(keep, n2), _mm_andnot_pd(keep, s2[v]));
+                for (int lane = 0; lane < 2; ++lane) {
+                    const int k = 2 * v + lane;
+                    if (t - k >= 0 && t - k < count) s1[v][lane] = n1[lane], s2[v][lane] = n2[lane];
+                }
             } else {
                 s1[v] = n1;
                 s2[v] = n2;
@@ -80,11 +74,7 @@ void wavefront_each(Biquad* sections, int count, Input input, Sink sink) noexcep
             y[v] = out;
         }
         const int done = t - (N - 1);
-        if (done >= 0 && done < count) {
-            double last[2];
-            _mm_storeu_pd(last, y[V - 1]);
-            sink(done, last[(N - 1) % 2]);
-        }
+        if (done >= 0 && done < count) sink(done, y[V - 1][(N - 1) % 2]);
     };
     const int steps = count + N - 1;
     const int steady_end = count;  // steps N-1 ... count-1 have every lane in range
@@ -93,24 +83,20 @@ void wavefront_each(Biquad* sections, int count, Input input, Sink sink) noexcep
     for (; t < steady_end; ++t) step(input(t), false, t);
     for (; t < steps; ++t) step(0.0, true, t);
     for (std::ptrdiff_t v = 0; v < V; ++v) {
-        double first[2], second[2];
-        _mm_storeu_pd(first, s1[v]);
-        _mm_storeu_pd(second, s2[v]);
-        sections[2 * v].set_state({first[0], second[0]});
-        if (2 * v + 1 < N) sections[2 * v + 1].set_state({first[1], second[1]});
+        sections[2 * v].set_state({s1[v][0], s2[v][0]});
+        if (2 * v + 1 < N) sections[2 * v + 1].set_state({s1[v][1], s2[v][1]});
     }
 }
-#endif
 }  // namespace detail
 
 // For i < count, in increasing i: sink(i, the N sections in turn applied to input(i)), in
 // double.
 template <int N, typename Input, typename Sink>
 void cascade_each(Biquad* sections, int count, Input input, Sink sink) noexcept {
-#if defined(__SSE2__)
-    if constexpr (N >= 2) return detail::wavefront_each<N>(sections, count, input, sink);
-#endif
-    detail::serial_each<N>(sections, count, input, sink);
+    if constexpr (N >= 2)
+        detail::wavefront_each<N>(sections, count, input, sink);
+    else
+        detail::serial_each<N>(sections, count, input, sink);
 }
 
 namespace detail {
