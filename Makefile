@@ -52,7 +52,7 @@ test-tsan: setup
 # unless ARM_SLOW=1, the threaded front end's and the allocation counters' (minutes under qemu,
 # no arithmetic of their own).
 ARM_TARGETS := tactus_tests engine_tests realtime_tests end_to_end_tests tactus_cli tactus_pd
-ARM_EXCLUDE := ^(Cli|BadInput|FullDisk|Interrupted|PdExternal|Sounds/Export)\.|fuzz_replay|^install\.|^report\.|_NOT_BUILT
+ARM_EXCLUDE := ^(Cli|HelperPrograms|BadInput|FullDisk|Interrupted|PdExternal|Sounds/Export)\.|fuzz_replay|^install\.|^report\.|_NOT_BUILT
 ARM_SLOW_TESTS := |^(EngineFrontEnd|RealTime)\.
 # Left out on arm64 until understood: under qemu-aarch64 it counts 2001 settings versions for
 # 2000 changes, every run (armhf and x86 count 2000).

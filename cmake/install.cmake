@@ -1,11 +1,18 @@
-# `cmake --install`: headers, the two libraries, the tactus program, presets and actuator
-# profiles, a CMake package (find_package(tactus): tactus::dsp, tactus::files) and pkg-config
-# files (tactus-dsp.pc, tactus.pc).
+# `cmake --install`: headers, the two libraries, the tactus program and its helpers, presets and
+# actuator profiles, a CMake package (find_package(tactus): tactus::dsp, tactus::files) and
+# pkg-config files (tactus-dsp.pc, tactus.pc).
 include(CMakePackageConfigHelpers)
 
 install(TARGETS tactus_dsp tactus_files EXPORT tactusTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS tactus_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The live and studio commands' helper programs, where `tactus` looks for them
+# (apps/tactus/helper_programs.hpp).
+foreach(helper tactus_live_program tactus_studio_program)
+  if(TARGET ${helper})
+    install(TARGETS ${helper} RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR}/tactus)
+  endif()
+endforeach()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/tactus DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
         FILES_MATCHING PATTERN "*.hpp")
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/presets ${PROJECT_SOURCE_DIR}/actuators

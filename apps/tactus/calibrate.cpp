@@ -12,6 +12,7 @@
 #include "actuator_option.hpp"
 #include "commands.hpp"
 #include "common.hpp"
+#include "helper_commands.hpp"
 #include "live/channel_list.hpp"
 #include "live/device_stream.hpp"
 #include "live/sweep_recorder.hpp"
@@ -106,8 +107,7 @@ void calibrate(const CalibrateOptions& o) {
 
 void add_calibrate(CLI::App& app) {
     auto o = std::make_shared<CalibrateOptions>();
-    CLI::App* command = app.add_subcommand(
-        "calibrate", "measure an actuator with a swept sine and a sensor; write its profile");
+    CLI::App* command = app.add_subcommand(kCalibrateCommand.name, kCalibrateCommand.description);
     command->add_option("--output", o->output, "the actuator: DEV:CH (CH from 1)")->required();
     command->add_option("--input", o->input, "the sensor on it: DEV:CH")->required();
     command->add_option("-o,--profile", o->profile_out, "actuator profile to write (.toml)")

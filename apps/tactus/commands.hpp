@@ -15,9 +15,11 @@ void add_simulate(CLI::App& app);
 void add_export(CLI::App& app);
 void add_actuators(CLI::App& app);
 void add_report(CLI::App& app);
-void add_studio(CLI::App& app);     // studio/, with cpp-httplib
-void add_live(CLI::App& app);       // live.cpp, with the live front end (live/)
-void add_devices(CLI::App& app);    // devices.cpp, with it
-void add_calibrate(CLI::App& app);  // calibrate.cpp, with it
+// In the helper programs (helper_programs.hpp): tactus-studio, with cpp-httplib
+void add_studio(CLI::App& app);  // studio/
+// and tactus-live, with the live front end (live/)
+void add_live(CLI::App& app);       // live.cpp
+void add_devices(CLI::App& app);    // devices.cpp
+void add_calibrate(CLI::App& app);  // calibrate.cpp
 
 }  // namespace tactus::cli

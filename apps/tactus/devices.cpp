@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "helper_commands.hpp"
 #include "live/device_stream.hpp"
 
 namespace tactus::cli {
@@ -39,8 +40,7 @@ void list_devices() {
 }  // namespace
 
 void add_devices(CLI::App& app) {
-    CLI::App* command =
-        app.add_subcommand("devices", "list the audio backends and devices `tactus live` can use");
+    CLI::App* command = app.add_subcommand(kDevicesCommand.name, kDevicesCommand.description);
     command->callback([] { list_devices(); });
 }
 

@@ -15,13 +15,17 @@ void add_global_options(CLI::App& app) {
     app.fallthrough();  // the flags above also after the command
 }
 
-std::optional<std::string> unknown_command(const CLI::App& app, int argc, const char* const* argv) {
-    if (argc < 2) return std::nullopt;
+int command_index(int argc, const char* const* argv) {
     int first = 1;
     while (first < argc &&
            (std::string(argv[first]) == "-q" || std::string(argv[first]) == "--quiet"))
         ++first;
-    if (first >= argc || argv[first][0] == '-') return std::nullopt;
+    return first < argc && argv[first][0] != '-' ? first : 0;
+}
+
+std::optional<std::string> unknown_command(const CLI::App& app, int argc, const char* const* argv) {
+    const int first = command_index(argc, argv);
+    if (first == 0) return std::nullopt;
     std::vector<std::string> names;
     for (const CLI::App* command : app.get_subcommands({})) {
         if (command->get_name() == argv[first]) return std::nullopt;

@@ -19,6 +19,7 @@
 #include "actuator_option.hpp"
 #include "commands.hpp"
 #include "common.hpp"
+#include "helper_commands.hpp"
 #include "live/channel_list.hpp"
 #include "live/console.hpp"
 #include "live/device_stream.hpp"
@@ -279,8 +280,7 @@ void live_run(const LiveOptions& o) {
 
 void add_live(CLI::App& app) {
     auto o = std::make_shared<LiveOptions>();
-    CLI::App* command = app.add_subcommand(
-        "live", "sound and vibration on audio devices, from an instrument's input or a player");
+    CLI::App* command = app.add_subcommand(kLiveCommand.name, kLiveCommand.description);
     command->add_option("--backend", o->backend,
                         "jack, alsa or pulse (default: the first with devices)");
     command->add_option("--input,-i", o->input,

@@ -1,50 +1,46 @@
 // tactus: music -> vibrotactile feedback. Data on stdout, messages on stderr, non-zero exit on
-// any error.
+// any error. The live and studio commands are run by helper programs (helper_programs.hpp), so
+// that the other commands load none of their libraries.
 #include <CLI/CLI.hpp>
-#include <iostream>
+#include <cstring>
 
+#include "app.hpp"
 #include "commands.hpp"
 #include "global_options.hpp"
-#include "tactus/io/temporary_path.hpp"
+#include "helper_programs.hpp"
+
+namespace {
+
+// This program's commands, by the name each registers. Only the chosen command's options are
+// built (building every command's took 1.3 M instructions at each start); all of them when none
+// is named (--help, --version) or the name is unknown (answered with the known ones).
+struct Command {
+    const char* name;
+    void (*add)(CLI::App&);
+};
+constexpr Command kCommands[] = {
+    {"render", tactus::cli::add_render},       {"analyze", tactus::cli::add_analyze},
+    {"onsets", tactus::cli::add_onsets},       {"presets", tactus::cli::add_presets},
+    {"placement", tactus::cli::add_placement}, {"meter", tactus::cli::add_meter},
+    {"simulate", tactus::cli::add_simulate},   {"export", tactus::cli::add_export},
+    {"actuators", tactus::cli::add_actuators}, {"report", tactus::cli::add_report},
+};
+
+}  // namespace
 
 // NOLINTNEXTLINE(bugprone-exception-escape): only set-up errors (bad_alloc) escape: they abort
 int main(int argc, char** argv) {
-    CLI::App app{"tactus: turns music into vibrotactile feedback (Birnbaum & Wanderley's system)"};
-    app.require_subcommand(1);
-    app.failure_message([](const CLI::App*, const CLI::Error& e) {  // one line, like every error
-        return std::string("tactus: error: ") + e.what() + '\n';
-    });
-    tactus::cli::add_global_options(app);
-    tactus::remove_temporaries_on_signals();  // Ctrl-C or kill leaves no partial output
-    tactus::cli::add_render(app);
-    tactus::cli::add_analyze(app);
-    tactus::cli::add_onsets(app);
-    tactus::cli::add_presets(app);
-    tactus::cli::add_placement(app);
-    tactus::cli::add_meter(app);
-    tactus::cli::add_simulate(app);
-    tactus::cli::add_export(app);
-    tactus::cli::add_actuators(app);
-    tactus::cli::add_report(app);
-#ifdef TACTUS_STUDIO
-    tactus::cli::add_studio(app);
-#endif
-#ifdef TACTUS_LIVE
-    tactus::cli::add_live(app);
-    tactus::cli::add_devices(app);
-    tactus::cli::add_calibrate(app);
-#endif
-    if (const auto unknown = tactus::cli::unknown_command(app, argc, argv)) {
-        std::cerr << "tactus: error: " << *unknown << '\n';
-        return 1;  // an error tactus finds (docs/robustness.md, exit codes)
-    }
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e);
-    } catch (const std::exception& e) {
-        std::cerr << "tactus: error: " << e.what() << '\n';
-        return 1;
-    }
-    return 0;
+    if (const auto* helper = tactus::cli::chosen_helper_command(argc, argv))
+        tactus::cli::run_helper(*helper, argv);
+    CLI::App app;
+    tactus::cli::set_up_app(app);
+    const int chosen = tactus::cli::command_index(argc, argv);
+    for (const Command& command : kCommands)
+        if (chosen != 0 && std::strcmp(command.name, argv[chosen]) == 0) {
+            command.add(app);
+            return tactus::cli::run_app(app, argc, argv);
+        }
+    for (const Command& command : kCommands) command.add(app);
+    tactus::cli::add_helper_commands(app, argv);
+    return tactus::cli::run_app(app, argc, argv);
 }

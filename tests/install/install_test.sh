@@ -2,7 +2,8 @@
 # `cmake --install` of the build tree into a temporary prefix, then as a user of the installed
 # package: examples/drum_engine.cpp built with find_package(tactus) and with pkg-config, and
 # run; it links the DSP core alone (no libsndfile, no toml++); the installed program finds its
-# presets and actuator profiles beside itself, with no environment, and renders a file.
+# presets and actuator profiles beside itself, with no environment, and renders a file loading
+# none of the live and studio commands' libraries; those commands run their installed helpers.
 # usage: install_test.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
 build=$1
@@ -45,4 +46,22 @@ env -i HOME="$home" PATH=/usr/bin:/bin "$prefix/bin/tactus" presets | grep -q '^
 env -i HOME="$home" PATH=/usr/bin:/bin "$prefix/bin/tactus" render "$work/drums.wav" \
     -o "$work/vibration.wav" --preset four-channel --actuator lra-175
 [ -s "$work/vibration.wav" ]
+LD_DEBUG=libs "$prefix/bin/tactus" render "$work/drums.wav" -o "$work/again.wav" 2>"$work/libs.log"
+if grep -Eo 'lib(rtaudio|jack|asound|lo|pulse|ssl|crypto|brotli[a-z]*)\.so[.0-9]*' "$work/libs.log" |
+    sort -u | grep .; then
+  echo "the installed tactus render loads the live or studio commands' libraries" >&2
+  exit 1
+fi
+if [ -e "$build/libexec/tactus/tactus-live" ]; then
+  [ -x "$prefix/libexec/tactus/tactus-live" ] || { echo "not installed: tactus-live" >&2; exit 1; }
+  env -i HOME="$home" PATH=/usr/bin:/bin "$prefix/bin/tactus" devices | grep '^jack ' >/dev/null
+  env -i HOME="$home" PATH=/usr/bin:/bin "$prefix/bin/tactus" live --help | grep -- '--backend' >/dev/null
+  # The helper finds the presets installed with the package.
+  if env -i HOME="$home" PATH=/usr/bin:/bin "$prefix/bin/tactus" live --preset nosuch \
+      2>"$work/live.err"; then exit 1; fi
+  grep -q "no preset named 'nosuch' (known: drums" "$work/live.err"
+fi
+if [ -e "$build/libexec/tactus/tactus-studio" ]; then
+  env -i HOME="$home" PATH=/usr/bin:/bin "$prefix/bin/tactus" studio --help | grep -- '--port' >/dev/null
+fi
 echo "installed package OK"

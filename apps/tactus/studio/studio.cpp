@@ -16,6 +16,7 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "global_options.hpp"
+#include "helper_commands.hpp"
 #include "server.hpp"
 #include "session.hpp"
 
@@ -69,8 +70,7 @@ void studio(const StudioOptions& o) {
 
 void add_studio(CLI::App& app) {
     auto options = std::make_shared<StudioOptions>();
-    CLI::App* command = app.add_subcommand(
-        "studio", "tune a sound's vibration in the browser: plots, controls, players, exports");
+    CLI::App* command = app.add_subcommand(kStudioCommand.name, kStudioCommand.description);
     command->add_option("files", options->files, "sound files to open (more can be dropped)");
     command
         ->add_option("--host", options->host,

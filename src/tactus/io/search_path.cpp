@@ -42,6 +42,12 @@ std::filesystem::path installed_data_dir() {
                 return dir / "share" / "tactus";
     }
     if (program.empty()) return {};
+    // A program: the first folder above it that holds share/tactus (bin/tactus, and the command
+    // line's helpers in libexec/tactus), else PROGRAM_DIR/../share/tactus.
+    std::error_code missing;
+    for (fs::path dir = program.parent_path().parent_path(); dir != dir.root_path();
+         dir = dir.parent_path())
+        if (fs::is_directory(dir / "share" / "tactus", missing)) return dir / "share" / "tactus";
     return program.parent_path().parent_path() / "share" / "tactus";
 }
 
