@@ -43,15 +43,37 @@ ReportPlot plot(std::string id, std::string title, std::string y_label,
 
 }  // namespace
 
-ReportRender render_report(const std::string& input, const Settings& settings,
-                           const std::optional<ActuatorProfile>& actuator,
-                           const RunCallbacks& callbacks) {
+// Input analysed past a render's end, kept for renders that ring out longer (a longer decay).
+constexpr double kRecordedPastEndS = 2.0;
+
+// The engine's frames after `input` for kRecordedPastEndS of silence more, into `recording`.
+void record_past_end(Engine& engine, int channels, RecordedAnalysis& recording) {
+    const std::vector<float> silence(Engine::kMaxBlock, 0.0f);
+    std::vector<std::vector<float>> vibration(static_cast<size_t>(engine.actuators()), silence);
+    std::vector<const float*> in(static_cast<size_t>(channels), silence.data());
+    std::vector<float*> out;
+    for (auto& v : vibration) out.push_back(v.data());
+    const auto total = static_cast<int64_t>(kRecordedPastEndS * engine.sample_rate_hz());
+    for (int64_t done = 0; done < total; done += Engine::kMaxBlock) {
+        engine.process(in.data(), out.data(), Engine::kMaxBlock);
+        for (AnalysisFrame f; engine.pop_frame(f);) recording.frames.push_back(f.features);
+    }
+}
+
+// One render, playing `replayed` back or (null) analysing the file into `recording` (if given).
+ReportRender render_once(const std::string& input, const Settings& settings,
+                         const std::optional<ActuatorProfile>& actuator,
+                         const RunCallbacks& callbacks,
+                         std::shared_ptr<const RecordedAnalysis> replayed,
+                         RecordedAnalysis* recording) {
     const ActuatorProfile metered =
         actuator ? *actuator : load_actuator(resolve_actuator(kDefaultActuator));
     ReportRender out;
     out.metered_name = metered.name;
     Engine engine(settings);
     engine.set_actuator(actuator);
+    out.analysis_replayed = replayed != nullptr;
+    engine.replay_analysis(std::move(replayed));
     perception::MeterSummariser summariser;
     std::vector<std::vector<double>> features, program, levels;
     const auto on_reading = [&](const perception::MeterReading& r) {
@@ -73,11 +95,17 @@ ReportRender render_report(const std::string& input, const Settings& settings,
         meter->write(vib[0], frames);
     };
     UnfeltSound unfelt(settings[P::mapping_gate_db]);
+    int channels = 0;
     RunCallbacks run = callbacks;
+    run.on_start = [&](double rate, int input_channels) {
+        channels = input_channels;
+        if (callbacks.on_start) callbacks.on_start(rate, input_channels);
+    };
     run.on_output = [&](const float* const* v, int frames) {
         unfelt.on_output(v, engine.actuators(), frames);
     };
     const FrameSink on_frame = [&](const AnalysisFrame& f) {
+        if (recording) recording->frames.push_back(f.features);
         unfelt.on_loudness(f.features.loudness_db);
         const double t = static_cast<double>(f.features.frame_end_sample) / engine.sample_rate_hz();
         const bool pitched = f.features.pitch_confidence > 0 && f.features.pitch_hz > 0;
@@ -86,6 +114,11 @@ ReportRender render_report(const std::string& input, const Settings& settings,
         program.push_back({t, f.control.frequency_hz, f.control.amplitude});
     };
     const HapticTrack track = render_haptic_track(input, engine, sink, run, on_frame);
+    if (out.analysis_replayed && engine.replay_ran_out()) {  // the caller renders again
+        out.analysis_replayed = false;
+        return out;
+    }
+    if (recording) record_past_end(engine, channels, *recording);
     out.unfelt_warning =
         unfelt.warning(input, engine.sample_rate_hz(), settings[P::envelope_sustain] != 0);
     if (meter) meter->finish();  // the worker's readings are all in, and it is gone
@@ -138,6 +171,21 @@ ReportRender render_report(const std::string& input, const Settings& settings,
         felt_plot,
         plot("sensation", "Sensation level per channel of touch (through " + metered.name + ")",
              "dB SL", {"P", "NPI", "NPII", "NPIII", "combined"}, thinned(levels))};
+    return out;
+}
+
+ReportRender render_report(const std::string& input, const Settings& settings,
+                           const std::optional<ActuatorProfile>& actuator,
+                           const RunCallbacks& callbacks, AnalysisCache* analyses) {
+    if (!analyses) return render_once(input, settings, actuator, callbacks, nullptr, nullptr);
+    const std::string key = AnalysisCache::key_of(input, settings);
+    if (auto kept = analyses->find(key)) {
+        ReportRender out = render_once(input, settings, actuator, callbacks, kept, nullptr);
+        if (out.analysis_replayed) return out;
+    }
+    auto recording = std::make_shared<RecordedAnalysis>();
+    ReportRender out = render_once(input, settings, actuator, callbacks, nullptr, recording.get());
+    analyses->keep(key, std::move(recording));
     return out;
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis_cache.hpp"
 #include "tactus/actuator/profile.hpp"
 #include "tactus/export/html_report.hpp"
 #include "tactus/io/run_file.hpp"
@@ -28,13 +29,17 @@ struct ReportRender {
     int64_t latency_frames = 0;
     perception::MeterSummary summary;  // metered through `metered_name`
     std::string metered_name;
-    std::string unfelt_warning;  // render's warning of sound left unfelt, or ""
+    std::string unfelt_warning;      // render's warning of sound left unfelt, or ""
+    bool analysis_replayed = false;  // the analysis kept in `analyses` played back
 };
 
 // Renders `input` with `settings` for `actuator` (none: no compensation, metered through the
-// default actuator); throws std::runtime_error with a one-line message naming the file.
+// default actuator); throws std::runtime_error with a one-line message naming the file. With
+// `analyses`, an analysis kept there for the file and the analysis's settings is played back
+// (the same vibration, bit for bit, without analysing again), else the file is analysed and
+// its analysis kept (a render ringing out past what was kept analyses again).
 ReportRender render_report(const std::string& input, const Settings& settings,
                            const std::optional<ActuatorProfile>& actuator,
-                           const RunCallbacks& callbacks = {});
+                           const RunCallbacks& callbacks = {}, AnalysisCache* analyses = nullptr);
 
 }  // namespace tactus::cli

@@ -162,6 +162,7 @@ def test_three_controls_change_the_plots_and_equal_render(browser, clip, tmp_pat
     after_pixels = canvases(browser)
     changed = [a != b for a, b in zip(before_pixels, after_pixels)]
     assert changed[6] and changed[7], "the vibration and felt plots did not change"
+    assert browser.execute_script("return studio.render.analysis") == "replayed"
     latency = browser.execute_script("return studio.render.latency_frames")
     rendered = cli_render(clip, tmp_path, "cli.wav", *sets(settings))
     assert_equals_render(page_vibration(browser), latency, rendered)
@@ -351,6 +352,39 @@ def test_token_and_paths(server, tmp_path):
     assert "tick.flac" in json.loads(request(server, "GET", "/api/files", token)[1])["files"]
     status, body = request(server, "POST", "/api/render", token, b"{not json")
     assert status == 400 and json.loads(body)["error"]
+
+
+def test_kept_analysis_renders_as_tactus_render(server, clip, tmp_path):
+    """A change that leaves the analysis's parameters as they were plays the file's analysis
+    back; the vibration equals `tactus render --set` bit for bit, whether analysed or replayed,
+    a render ringing out past what was analysed included (then it is analysed again)."""
+    token = urllib.parse.parse_qs(urllib.parse.urlsplit(server).query)["token"][0]
+    onsets = {"onset.threshold": "11.5"}  # an analysis no render has made yet
+    held = {"mapping.gate_db": "-120", "envelope.sustain": "1"}
+    for step, (settings, analysis) in enumerate([
+            (onsets, "analysed"),
+            (onsets | {"envelope.decay_ms": "300", "mapping.amplitude.source": "pitch_confidence",
+                       "post.drive_db": "3"}, "replayed"),
+            (onsets | {"envelope.decay_ms": "5000", "flutter.weight": "0.3"}, "replayed"),
+            # Held at full amplitude in the silence after the sound: rings out for the longest
+            # tail (10 s), past what was analysed, so analysed again, and kept for the next.
+            (onsets | held | {"mapping.amplitude.source": "pitch_confidence",
+                              "mapping.amplitude.in_min": "1", "mapping.amplitude.in_max": "0"},
+             "analysed"),
+            (onsets | held | {"mapping.amplitude.source": "onset_odf",
+                              "mapping.amplitude.in_min": "100", "mapping.amplitude.in_max": "-100"},
+             "replayed"),
+            ({"onset.threshold": "12.5"}, "analysed")]):
+        status, body = request(server, "POST", "/api/render", token, json.dumps(
+            {"file": clip.name, "settings": settings}))
+        assert status == 200, body
+        answer = json.loads(body)
+        assert answer["analysis"] == analysis, (step, settings)
+        status, data = request(server, "GET",
+                               f"/api/samples?render={answer['render']}&what=vibration", token)
+        assert status == 200
+        rendered = cli_render(clip, tmp_path, f"kept{step}.wav", *sets(settings))
+        assert_equals_render(np.frombuffer(data, dtype="<f4"), answer["latency_frames"], rendered)
 
 
 def test_answers_are_not_compressed(server):

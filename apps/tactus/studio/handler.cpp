@@ -118,7 +118,7 @@ StudioResponse render(StudioSession& session, const StudioRequest& request) {
     const auto actuator = actuator_of(field(body, "actuator"));
     std::lock_guard lock(render_mutex());
     const auto start = std::chrono::steady_clock::now();
-    ReportRender r = render_report(input.string(), settings, actuator);
+    ReportRender r = render_report(input.string(), settings, actuator, {}, &session.analyses());
     const double render_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     json out{{"file", name},
@@ -127,6 +127,7 @@ StudioResponse render(StudioSession& session, const StudioRequest& request) {
              {"frames", r.vibration.size()},
              {"render_ms", render_ms},
              {"metered", r.metered_name},
+             {"analysis", r.analysis_replayed ? "replayed" : "analysed"},
              {"set", pipeline.assignments}};
     for (const ReportOnset& o : r.onsets)
         out["onsets"].push_back({o.time_s, std::string(name_of(o.part))});

@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "analysis_cache.hpp"
+
 namespace tactus::cli {
 
 class StudioSession {
@@ -51,6 +53,8 @@ class StudioSession {
     };
     int64_t keep_render(std::shared_ptr<const Samples> samples);
     std::shared_ptr<const Samples> render(int64_t id) const;
+    // The analyses of the files rendered, played back while a change leaves them as they were.
+    AnalysisCache& analyses() { return analyses_; }
 
   private:
     std::string token_;
@@ -60,6 +64,7 @@ class StudioSession {
     size_t uploads_ = 0;
     std::map<int64_t, std::shared_ptr<const Samples>> renders_;
     int64_t next_render_ = 1;
+    AnalysisCache analyses_;
 };
 
 // Throws std::runtime_error unless `name` is a plain file name (no '/', '\\', NUL, not "." or

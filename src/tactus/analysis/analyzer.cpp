@@ -94,6 +94,15 @@ HitSettings Analyzer::hit_settings(const Settings& s) {
     return {.brightness_max_hz = s[P::brightness_max_hz], .settle_ms = s[P::parts_settle_ms]};
 }
 
+bool Analyzer::reads(P id) {
+    static constexpr P kRead[] = {
+        P::analysis_window_ms, P::analysis_hop_ms,   P::loudness_window_ms,    P::pitch_min_hz,
+        P::pitch_max_hz,       P::pitch_threshold,   P::onset_window_ms,       P::onset_threshold,
+        P::onset_ratio,        P::onset_history_ms,  P::onset_min_interval_ms, P::onset_low_weight,
+        P::onset_high_weight,  P::brightness_max_hz, P::parts_settle_ms};
+    return std::find(std::begin(kRead), std::end(kRead), id) != std::end(kRead);
+}
+
 void Analyzer::set_live(const Settings& s) noexcept {
     hits_.set_live(hit_settings(s));
     onsets_.set_thresholds(onset_settings(s));

@@ -80,6 +80,10 @@ class Analyzer {
     const HitAnalysis& hits() const { return hits_; }
     // The onset detector's settings among `settings`.
     static OnsetSettings onset_settings(const Settings& settings);
+    // Whether the analysis reads parameter `id` (prepare() or set_live()): the features of an
+    // input change with these only, so a recorded analysis (engine/recorded_analysis.hpp) stays
+    // valid while the others change.
+    static bool reads(P id);
 
   private:
     static int hop_for(const Settings& settings, double analysis_rate_hz);

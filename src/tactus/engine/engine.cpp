@@ -77,6 +77,7 @@ std::unique_ptr<Pipeline> Engine::make_pipeline(const Settings& settings, int64_
                       fitted(settings), outputs_, origin);
     pipeline->set_extra_features(extra_features());
     pipeline->set_source(source_);
+    pipeline->replay(recording_.get());
     return pipeline;
 }
 
@@ -129,6 +130,11 @@ void Engine::reset() noexcept {
 void Engine::set_observer(FrameObserver* observer) {
     observer_ = observer;
     if (active_) active_->set_extra_features(extra_features());
+}
+
+void Engine::replay_analysis(std::shared_ptr<const RecordedAnalysis> recording) {
+    recording_ = std::move(recording);
+    if (active_) active_->replay(recording_.get());
 }
 
 void Engine::enable_frame_queue() {
@@ -415,8 +421,8 @@ void Engine::process_chunk(const float* const* in, float* const* out, int offset
                            int count) noexcept {
     const float* mono = downmix(in, offset, count);
     const float* power = nullptr;
-    if (summed_loudness_) {
-        channel_power_.process(in, offset, count, power_.data());
+    if (summed_loudness_) {  // the analysis's loudness (a replayed analysis has it)
+        if (!recording_) channel_power_.process(in, offset, count, power_.data());
         power = power_.data();
     }
     const float* const lanes[] = {mono, power};

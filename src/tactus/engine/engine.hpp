@@ -106,6 +106,15 @@ class Engine {
     static void check_sample_rate(double sample_rate_hz);
     void reset() noexcept;
     void set_observer(FrameObserver* observer);
+    // Plays `recording` (recorded_analysis.hpp: this input's frames, recorded by an engine with
+    // the same values of the parameters Analyzer::reads()) back in place of the analysis: the
+    // input is then only passed through, the vibration is the one analysing it would give, bit
+    // for bit, without the analysis's cost. Null: analyses the input again. The caller keeps the
+    // analysis parameters as recorded (they are not checked).
+    void replay_analysis(std::shared_ptr<const RecordedAnalysis> recording);
+    // Setup thread: whether the input went on past the recording's last frame (the vibration
+    // after it followed no analysis: render again, analysing).
+    bool replay_ran_out() const { return active_ && active_->replay_ran_out(); }
     // Frames for pop_frame(), up to kQueueCapacity ahead of the reader (while it is that far
     // behind, new frames are dropped).
     void enable_frame_queue();
@@ -233,6 +242,7 @@ class Engine {
     std::vector<float> power_, power_catch_up_;  // one chunk
     FrameForwarder forwarder_{*this};
     FrameObserver* observer_ = nullptr;
+    std::shared_ptr<const RecordedAnalysis> recording_;  // played back in place of the analysis
 
     moodycamel::ReaderWriterQueue<Change> changes_{kChangeCapacity};
     moodycamel::ReaderWriterQueue<ControlFrame> injected_{kQueueCapacity};

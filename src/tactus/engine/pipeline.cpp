@@ -61,6 +61,7 @@ void Pipeline::prepare(const ProcessSpec& spec, const Settings& settings,
     update_features();
     reset();
     origin_ = position_ = origin_sample;
+    replay(recording_);
 }
 
 void Pipeline::reset() noexcept {
@@ -69,6 +70,48 @@ void Pipeline::reset() noexcept {
     voice_.reset();
     for (auto& chain : chains_) chain.reset();
     origin_ = position_ = 0;
+    replay(recording_);
+}
+
+void Pipeline::replay(const RecordedAnalysis* recording) noexcept {
+    recording_ = recording;
+    ran_out_ = false;
+    if (!recording) return;
+    const auto& frames = recording->frames;
+    next_recorded_ = static_cast<size_t>(
+        std::upper_bound(frames.begin(), frames.end(), position_,
+                         [](int64_t at, const Features& f) { return at < f.frame_end_sample; }) -
+        frames.begin());
+}
+
+// The input samples up to the next frame (at most `count`), from the analysis or the recording.
+int Pipeline::take_input(const float* mono, const float* power, int count,
+                         bool& frame_due) noexcept {
+    if (!recording_) {
+        const int chunk = std::min(count, analyzer_.samples_to_next_frame());
+        frame_due = analyzer_.process(mono, power, chunk);
+        return chunk;
+    }
+    const auto& frames = recording_->frames;
+    frame_due = false;
+    if (next_recorded_ >= frames.size()) {  // ran out once a frame may have been due
+        const auto shortest_hop = static_cast<int64_t>(analyzer_.hop_samples());
+        if (position_ + count >= recording_->end_sample() + shortest_hop) ran_out_ = true;
+        return count;
+    }
+    const int64_t to_frame = frames[next_recorded_].frame_end_sample - position_;
+    if (to_frame > count) return count;
+    frame_due = true;
+    return static_cast<int>(to_frame);
+}
+
+// The features of the frame due: analysed, or the recording's next.
+Features Pipeline::next_features() noexcept {
+    if (recording_) return recording_->frames[next_recorded_++];
+    Features features = analyzer_.analyse();
+    features.frame_end_sample += origin_;
+    features.onset_sample += origin_;
+    return features;
 }
 
 void Pipeline::set_extra_features(FeatureSet features) noexcept {
@@ -123,9 +166,9 @@ void Pipeline::process(const float* mono, const float* power, float* const* out,
     float* const pressure = pressure_.empty() ? nullptr : pressure_.data();
     int done = 0, rendered = 0;
     while (done < count) {
-        const int chunk = std::min(count - done, analyzer_.samples_to_next_frame());
-        const bool frame_due =
-            analyzer_.process(mono + done, power ? power + done : nullptr, chunk);
+        bool frame_due = false;
+        const int chunk = take_input(mono ? mono + done : nullptr, power ? power + done : nullptr,
+                                     count - done, frame_due);
         // Internal sample k stands at input sample k * divisor (from the origin).
         const int64_t at = position_ - origin_;
         const auto due = static_cast<int>(ceil_div(at + chunk, divisor) - ceil_div(at, divisor));
@@ -135,9 +178,7 @@ void Pipeline::process(const float* mono, const float* power, float* const* out,
         position_ += chunk;
         if (frame_due) {
             if (live_.gliding() && live_.step()) apply_live();
-            Features features = analyzer_.analyse();
-            features.frame_end_sample += origin_;
-            features.onset_sample += origin_;
+            const Features features = next_features();
             ControlFrame control = mapper_.map(features);
             if (source_ != ProgramSource::external) voice_.apply(control);
             if (observer) observer->on_frame(features, control);

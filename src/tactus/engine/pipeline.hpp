@@ -15,6 +15,7 @@
 #include "tactus/engine/actuator_chain.hpp"
 #include "tactus/engine/live_settings.hpp"
 #include "tactus/engine/output_trim.hpp"
+#include "tactus/engine/recorded_analysis.hpp"
 #include "tactus/mapping/mapper.hpp"
 #include "tactus/synthesis/voice.hpp"
 
@@ -56,6 +57,12 @@ class Pipeline {
     void apply(ControlFrame frame) noexcept;  // an injected frame, from now
     // The features the analysis computes beyond the mapping's (the engine's readers').
     void set_extra_features(FeatureSet features) noexcept;
+    // Setup: frames played back in place of the analysis, from the next position on (the input
+    // is then not analysed: `mono` and `power` are not read); null: analyses the input. The
+    // recording must outlive the processing.
+    void replay(const RecordedAnalysis* recording) noexcept;
+    // Whether input past the recording's end was taken where a frame may have been due.
+    bool replay_ran_out() const { return ran_out_; }
 
     // mono: count <= max_block samples; power: their K-weighted power summed over the input
     // channels (engine/channel_power.hpp), or null (the loudness of `mono`); out: one buffer
@@ -74,6 +81,8 @@ class Pipeline {
   private:
     void apply_live() noexcept;
     void update_features() noexcept;
+    int take_input(const float* mono, const float* power, int count, bool& frame_due) noexcept;
+    Features next_features() noexcept;
 
     double sample_rate_hz_ = 48000;
     int rate_divisor_ = 1;
@@ -88,6 +97,9 @@ class Pipeline {
     std::vector<float> carrier_, flutter_, pressure_;  // synthesis, internal rate, one block
     ProgramSource source_ = ProgramSource::analysis;
     FeatureSet extra_features_ = FeatureSet::none();
+    const RecordedAnalysis* recording_ = nullptr;
+    size_t next_recorded_ = 0;  // the recording's next frame
+    bool ran_out_ = false;
     bool post_dirty_ = false;
 };
 
