@@ -83,8 +83,9 @@ void wavefront_each(Biquad* sections, int count, Input input, Sink sink) noexcep
     for (; t < steady_end; ++t) step(input(t), false, t);
     for (; t < steps; ++t) step(0.0, true, t);
     for (std::ptrdiff_t v = 0; v < V; ++v) {
-        sections[2 * v].set_state({s1[v][0], s2[v][0]});
-        if (2 * v + 1 < N) sections[2 * v + 1].set_state({s1[v][1], s2[v][1]});
+        const double first0 = s1[v][0], second0 = s2[v][0], first1 = s1[v][1], second1 = s2[v][1];
+        sections[2 * v].set_state({first0, second0});
+        if (2 * v + 1 < N) sections[2 * v + 1].set_state({first1, second1});
     }
 }
 }  // namespace detail
