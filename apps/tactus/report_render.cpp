@@ -52,6 +52,7 @@ void record_past_end(Engine& engine, int channels, RecordedAnalysis& recording) 
     std::vector<std::vector<float>> vibration(static_cast<size_t>(engine.actuators()), silence);
     std::vector<const float*> in(static_cast<size_t>(channels), silence.data());
     std::vector<float*> out;
+    out.reserve(vibration.size());
     for (auto& v : vibration) out.push_back(v.data());
     const auto total = static_cast<int64_t>(kRecordedPastEndS * engine.sample_rate_hz());
     for (int64_t done = 0; done < total; done += Engine::kMaxBlock) {
