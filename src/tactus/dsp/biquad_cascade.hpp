@@ -1,10 +1,11 @@
 // A cascade of biquads run over a block, its output given sample by sample to a sink (a band's
 // energy, a K-weighted square) or written back (process_cascade). The sections are copied into
 // locals of a size fixed at compile time, so the compiler unrolls the section loop and keeps the
-// states in registers. Two or more sections also run in a wavefront, two per vector: at step t,
-// section k filters sample t - k, so all sections advance at once instead of one after the
-// other. Each section does exactly Biquad::process's arithmetic on every sample, in the same
-// order: the output is bit-identical to applying the sections in turn, for any block split.
+// states in registers. Two or more sections also run in a wavefront (where the compiler does not
+// fuse multiply-adds), two per vector: at step t, section k filters sample t - k, so all sections
+// advance at once instead of one after the other. Each section does exactly Biquad::process's
+// arithmetic on every sample, in the same order: the output is bit-identical to applying the
+// sections in turn, for any block split.
 #pragma once
 
 #include <array>
@@ -31,7 +32,7 @@ void serial_each(Biquad* sections, int count, Input input, Sink sink) noexcept {
 }
 
 // cascade_each in a wavefront, two sections per vector (the compiler's generic vectors: SSE2
-// on x86-64, NEON on arm64, pairs of scalars where the target has no double vectors).
+// on x86-64, pairs of scalars where the target has no double vectors).
 template <int N, typename Input, typename Sink>
 void wavefront_each(Biquad* sections, int count, Input input, Sink sink) noexcept {
     using Pair = double __attribute__((vector_size(2 * sizeof(double))));
@@ -92,9 +93,17 @@ void wavefront_each(Biquad* sections, int count, Input input, Sink sink) noexcep
 
 // For i < count, in increasing i: sink(i, the N sections in turn applied to input(i)), in
 // double.
+// Where the compiler fuses multiplies and adds (arm64: __FP_FAST_FMA), it fuses the wavefront's
+// and Biquad::process's differently: the sections then run in turn, so the output stays the
+// sections' own, bit for bit.
 template <int N, typename Input, typename Sink>
 void cascade_each(Biquad* sections, int count, Input input, Sink sink) noexcept {
-    if constexpr (N >= 2)
+#if defined(__FP_FAST_FMA)
+    constexpr bool kWavefront = false;
+#else
+    constexpr bool kWavefront = N >= 2;
+#endif
+    if constexpr (kWavefront)
         detail::wavefront_each<N>(sections, count, input, sink);
     else
         detail::serial_each<N>(sections, count, input, sink);
