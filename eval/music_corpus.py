@@ -210,12 +210,21 @@ def place(mix, sample, time_s, gain_db, rate):
     mix[start:end] += 10 ** (gain_db / 20) * sample[:end - start]
 
 
+def layer_for(gain_db, layered):
+    """The item of `layered` ([(highest velocity, anything)], softest first) a hit of gain_db
+    plays: the layer of velocity 10 ** (gain_db / 40) (a level of 40 log10 v, so 0 to -24 dB spans
+    velocities 1 to 0.25: the loud hits and the ghost notes of a kit sampled at several strengths
+    take their own recordings, duller when soft, as a drummer's do)."""
+    velocity = 10 ** (gain_db / 40)
+    return next((item for top, item in layered if velocity <= top), layered[-1][1])
+
+
 def drum_stem(hits, samples, length, rate):
     """`samples`: {instrument: [(highest velocity, audio)]}, each hit playing its velocity's layer
-    (eval/recorded_kits.py; one-shots are one layer)."""
+    (one-shots are one layer)."""
     stem = np.zeros(length)
     for t, instrument, gain in hits:
-        place(stem, recorded_kits.layer_for(gain, samples[instrument]), t, gain, rate)
+        place(stem, layer_for(gain, samples[instrument]), t, gain, rate)
     return stem
 
 
@@ -479,7 +488,7 @@ def write_gain_series(song, bed, kit_samples, out):
         layered = load_layers(kit_samples[instrument], rate)
         hits = gain_hits(instrument, np.random.default_rng([song["seed"], role_seed(instrument)]))
         drums = drum_stem(hits, {instrument: layered}, song["length"], rate)
-        loudest = recorded_kits.layer_for(-1, layered)
+        loudest = layer_for(-1, layered)
         reference = rms(10 ** (-1 / 20) * loudest[:int(REFERENCE_S * rate)])
         for level in (None,) + GAIN_BED_LEVELS_DB:
             name = f"{song['name'].replace('gainbed', 'gain')}-{instrument}-{level_name(level)}"

@@ -1,10 +1,8 @@
 """Recorded drum kits for the music corpus (eval/music_corpus.py): Hydrogen's kits from Debian's
 hydrogen-drumkits, acoustic kits sampled at several strengths and electronic kits, read from each
 kit's drumkit.xml. Each instrument is its velocity layers, (highest velocity, sample path), softest
-first; a hit of gain g dB plays the layer of velocity 10 ** (g / 40) (a level of 40 log10 v, so
-0 to -24 dB spans velocities 1 to 0.25: the loud hits and the ghost notes take their own
-recordings, duller when soft, as a drummer's do). Two parts, no kit (nor a kit sampled from the
-same drums) in both."""
+first (which layer a hit plays: music_corpus.layer_for). Two parts, no kit (nor a kit sampled
+from the same drums) in both."""
 import pathlib
 import xml.etree.ElementTree as ET
 
@@ -31,10 +29,6 @@ KITS = {
 INSTRUMENTS = ("kick", "snare", "hat")
 
 
-def velocity(gain_db):
-    return 10 ** (gain_db / 40)
-
-
 def layers(kit_dir, instrument_name):
     """[(highest velocity, sample path)] of one instrument, softest first."""
     root = ET.parse(kit_dir / "drumkit.xml").getroot()
@@ -56,9 +50,3 @@ def kits(part):
             {role: layers(DRUMKITS / kit, name) for role, name in zip(INSTRUMENTS, names)}
             for kit, names in KITS[part].items()}
 
-
-def layer_for(gain_db, layered):
-    """The item of `layered` ([(highest velocity, anything)], softest first) a hit of gain_db
-    plays."""
-    v = velocity(gain_db)
-    return next((item for top, item in layered if v <= top), layered[-1][1])

@@ -90,7 +90,7 @@ void export_files(const ExportOptions& o) {
             ogg->write(channels.data(), frames);
         };
     Progress progress("export");
-    UnfeltSound unfelt(settings[P::mapping_gate_db]);
+    UnfeltSound unfelt(settings);
     RunCallbacks callbacks = with_progress(progress);
     callbacks.on_output = [&](const float* const* vibration, int frames) {
         unfelt.on_output(vibration, engine.actuators(), frames);
@@ -113,8 +113,7 @@ void export_files(const ExportOptions& o) {
     }
     if (ogg) ogg->commit();
     for (TextOutput& text : texts) text.commit();
-    if (const std::string warning =
-            unfelt.warning(o.input, engine.sample_rate_hz(), settings[P::envelope_sustain] != 0);
+    if (const std::string warning = unfelt.warning(o.input, engine.sample_rate_hz());
         !warning.empty())
         note(warning);
     for (size_t i = 0; i < o.outputs.size(); ++i)

@@ -21,30 +21,20 @@ MeterWorker::MeterWorker(double sample_rate_hz, const ActuatorProfile& actuator,
                                   contact_area_cm2, kSlowChannels);
           },
           [this](const float* displacement, int count) {
-              slow_meter_.write(displacement, count, [this](const perception::MeterReading& r) {
-                  slow_readings_.push_back(r);
-              });
+              slow_meter_.write(displacement, count, keep_slow_);
           },
-          [this] {
-              slow_meter_.finish(
-                  [this](const perception::MeterReading& r) { slow_readings_.push_back(r); });
-          }),
+          [this] { slow_meter_.finish(keep_slow_); }),
       drive_stage_(
           [this, sample_rate_hz, actuator, contact_area_cm2] {
               drive_meter_.prepare(sample_rate_hz, actuator, contact_area_cm2, kDriveChannels);
           },
           [this](const float* drive, int count) {
-              drive_meter_.write(
-                  drive, count,
-                  [this](const perception::MeterReading& r) { drive_readings_.push_back(r); },
-                  [this](const float* displacement, int n) {
-                      displacement_stage_.write(displacement, n);
-                  });
+              drive_meter_.write(drive, count, keep_drive_,
+                                 [this](const float* displacement, int n) {
+                                     displacement_stage_.write(displacement, n);
+                                 });
           },
-          [this] {
-              drive_meter_.finish(
-                  [this](const perception::MeterReading& r) { drive_readings_.push_back(r); });
-          }) {}
+          [this] { drive_meter_.finish(keep_drive_); }) {}
 
 void MeterWorker::finish() {
     drive_stage_.finish();         // every drive block modelled, its displacement handed on

@@ -31,6 +31,13 @@ class MeterWorker {
     DriveMeter drive_meter_;                 // P and NPII: the drive stage's
     perception::SensationMeter slow_meter_;  // NPI and NPIII: the displacement stage's
     std::vector<perception::MeterReading> drive_readings_, slow_readings_;
+    // Each stage's readings kept, in order, for finish().
+    const DriveMeter::OnReading keep_drive_ = [this](const perception::MeterReading& r) {
+        drive_readings_.push_back(r);
+    };
+    const DriveMeter::OnReading keep_slow_ = [this](const perception::MeterReading& r) {
+        slow_readings_.push_back(r);
+    };
     // Declared last, destroyed first (the drive stage feeds the displacement stage).
     BlockWorker displacement_stage_, drive_stage_;
 };

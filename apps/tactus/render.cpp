@@ -42,7 +42,7 @@ using Job = BatchJob;
 // that audible input gave no vibration, in whole or for a long stretch).
 class RenderStats final : public FrameObserver {
   public:
-    explicit RenderStats(double gate_db) : unfelt(gate_db) {}
+    explicit RenderStats(const Settings& settings) : unfelt(settings) {}
     void on_frame(const Features& features, const ControlFrame& control) noexcept override {
         onsets += control.trigger;
         unfelt.on_loudness(features.loudness_db);
@@ -72,7 +72,7 @@ std::string render_one(const Job& job, const Settings& settings,
     Engine engine(settings);
     engine.set_actuators(std::vector<ActuatorOutput>(static_cast<size_t>(channels),
                                                      ActuatorOutput{.profile = actuator}));
-    RenderStats stats(settings[P::mapping_gate_db]);
+    RenderStats stats(settings);
     engine.set_observer(&stats);
     std::optional<AudioWriter> writer;  // opened at the input's sample rate
     const auto write = [&](const float* const* v, int n) {
@@ -90,8 +90,8 @@ std::string render_one(const Job& job, const Settings& settings,
         job.input, engine, {.on_output = write, .on_progress = on_progress, .on_start = open},
         RunTail::ring_out);
     writer->commit();
-    if (const std::string warning = stats.unfelt.warning(job.input.string(), summary.sample_rate_hz,
-                                                         settings[P::envelope_sustain] != 0);
+    if (const std::string warning =
+            stats.unfelt.warning(job.input.string(), summary.sample_rate_hz);
         !warning.empty())
         note(warning);
     return fmt::format(

@@ -41,8 +41,6 @@ ReportPlot plot(std::string id, std::string title, std::string y_label,
     return p;
 }
 
-}  // namespace
-
 // Input analysed past a render's end, kept for renders that ring out longer (a longer decay).
 constexpr double kRecordedPastEndS = 2.0;
 
@@ -95,7 +93,7 @@ ReportRender render_once(const std::string& input, const Settings& settings,
         out.vibration.insert(out.vibration.end(), vib[0], vib[0] + frames);
         meter->write(vib[0], frames);
     };
-    UnfeltSound unfelt(settings[P::mapping_gate_db]);
+    UnfeltSound unfelt(settings);
     int channels = 0;
     RunCallbacks run = callbacks;
     run.on_start = [&](double rate, int input_channels) {
@@ -120,8 +118,7 @@ ReportRender render_once(const std::string& input, const Settings& settings,
         return out;
     }
     if (recording) record_past_end(engine, channels, *recording);
-    out.unfelt_warning =
-        unfelt.warning(input, engine.sample_rate_hz(), settings[P::envelope_sustain] != 0);
+    out.unfelt_warning = unfelt.warning(input, engine.sample_rate_hz());
     if (meter) meter->finish();  // the worker's readings are all in, and it is gone
     out.summary = summariser.summary();
     out.sample_rate_hz = engine.sample_rate_hz();
@@ -174,6 +171,8 @@ ReportRender render_once(const std::string& input, const Settings& settings,
              "dB SL", {"P", "NPI", "NPII", "NPIII", "combined"}, thinned(levels))};
     return out;
 }
+
+}  // namespace
 
 ReportRender render_report(const std::string& input, const Settings& settings,
                            const std::optional<ActuatorProfile>& actuator,

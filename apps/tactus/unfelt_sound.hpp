@@ -14,6 +14,8 @@
 #include <limits>
 #include <string>
 
+#include "tactus/params/params.hpp"
+
 namespace tactus::cli {
 
 class UnfeltSound {
@@ -24,7 +26,10 @@ class UnfeltSound {
     static constexpr float kUnfelt = 0.01f;
     static constexpr double kLongStretchS = 1.0;  // what a warning is worth
 
-    explicit UnfeltSound(double gate_db) : gate_db_(gate_db) {}
+    // The render's settings: the mapping's gate, and whether its envelope sustains (a sustaining
+    // preset follows a sound past its onset: only "no vibration at all" is warned of).
+    explicit UnfeltSound(const Settings& settings)
+        : gate_db_(settings[P::mapping_gate_db]), sustains_(settings[P::envelope_sustain] != 0) {}
 
     void on_loudness(double loudness_db) noexcept {
         loudest_db_ = std::max(loudest_db_, loudness_db);
@@ -35,10 +40,6 @@ class UnfeltSound {
         float peak = 0.0f;
         for (int c = 0; c < channels; ++c)
             for (int i = 0; i < frames; ++i) peak = std::max(peak, std::abs(v[c][i]));
-        on_output(peak, frames);
-    }
-    // One output block: `frames` samples whose largest magnitude (all channels) is `peak`.
-    void on_output(float peak, int frames) noexcept {
         peak_ = std::max(peak_, peak);
         if (sounding_ && peak < kUnfelt) {
             if (run_frames_ == 0) run_start_ = written_;
@@ -53,19 +54,16 @@ class UnfeltSound {
         written_ += frames;
     }
 
-    int64_t longest_frames() const { return longest_frames_; }
-    int64_t longest_start_frame() const { return longest_start_; }  // output frames
-    float peak() const { return peak_; }                            // the output's, all blocks
-    double loudest_db() const { return loudest_db_; }
+    float peak() const { return peak_; }  // the output's, all blocks
 
     // The one-line warning for `input` once its run is over, or "" when the vibration followed
     // the sound: audible input and no vibration at all, or (a preset without sustain) a long
     // stretch of sound after an onset's pulse. Names the preset that follows loudness.
-    std::string warning(const std::string& input, double sample_rate_hz, bool sustains) const;
+    std::string warning(const std::string& input, double sample_rate_hz) const;
 
   private:
     double gate_db_, loudest_db_ = -std::numeric_limits<double>::infinity();
-    bool sounding_ = false;
+    bool sustains_, sounding_ = false;
     float peak_ = 0;
     int64_t written_ = 0, run_start_ = 0, run_frames_ = 0;
     int64_t longest_frames_ = 0, longest_start_ = 0;

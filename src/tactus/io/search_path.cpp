@@ -5,6 +5,7 @@
 #include <link.h>
 
 #include <cstdlib>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -12,6 +13,18 @@
 #include "tactus/core/printable.hpp"
 
 namespace tactus {
+namespace {
+
+// FROM/share/tactus, or the first such folder above FROM, if one exists.
+std::optional<std::filesystem::path> share_above(std::filesystem::path from) {
+    std::error_code missing;
+    for (; from != from.root_path(); from = from.parent_path())
+        if (std::filesystem::is_directory(from / "share" / "tactus", missing))
+            return from / "share" / "tactus";
+    return std::nullopt;
+}
+
+}  // namespace
 
 std::filesystem::path installed_data_dir() {
     namespace fs = std::filesystem;
@@ -33,22 +46,18 @@ std::filesystem::path installed_data_dir() {
         std::error_code unreadable;
         const fs::path file = fs::weakly_canonical(module.dli_fname, unreadable);
         std::error_code missing;
-        if (!unreadable && (fs::is_directory(file.parent_path() / "presets", missing) ||
-                            fs::is_directory(file.parent_path() / "actuators", missing)))
-            return file.parent_path();
-        for (fs::path dir = file.parent_path(); !unreadable && dir != dir.root_path();
-             dir = dir.parent_path())
-            if (fs::is_directory(dir / "share" / "tactus", missing))
-                return dir / "share" / "tactus";
+        if (!unreadable) {
+            if (fs::is_directory(file.parent_path() / "presets", missing) ||
+                fs::is_directory(file.parent_path() / "actuators", missing))
+                return file.parent_path();
+            if (auto data = share_above(file.parent_path())) return *data;
+        }
     }
     if (program.empty()) return {};
     // A program: the first folder above it that holds share/tactus (bin/tactus, and the command
     // line's helpers in libexec/tactus), else PROGRAM_DIR/../share/tactus.
-    std::error_code missing;
-    for (fs::path dir = program.parent_path().parent_path(); dir != dir.root_path();
-         dir = dir.parent_path())
-        if (fs::is_directory(dir / "share" / "tactus", missing)) return dir / "share" / "tactus";
-    return program.parent_path().parent_path() / "share" / "tactus";
+    return share_above(program.parent_path().parent_path())
+        .value_or(program.parent_path().parent_path() / "share" / "tactus");
 }
 
 std::vector<std::filesystem::path> search_path(const char* environment_variable,

@@ -54,9 +54,9 @@ struct SensationMeter::ChannelState {
     Channel channel = Channel::P;
     int hop_steps = 1;
     RealFft fft;
-    std::vector<float> window;
-    std::vector<double> weight;  // per bin: 2 g_k (D / thr)^2 / (M sum w^2)
-    std::vector<double> frames;  // P: the last second of frame values
+    std::shared_ptr<const Window> window;  // the process's, shared by meters of its length
+    std::vector<double> weight;            // per bin: 2 g_k (D / thr)^2 / (M sum w^2)
+    std::vector<double> frames;            // P: the last second of frame values
     size_t next_frame = 0;
     double value = 0;  // latest (peak displacement / threshold)^2
 };
@@ -79,9 +79,8 @@ void SensationMeter::prepare(double sample_rate_hz, const Calibration& displacem
         longest = std::max(longest, n);
         c->fft.prepare(next_power_of_two(n));
         const int m = c->fft.size();
-        const auto window = hann_window(n);
-        c->window = window->values;
-        const double window_power = window->power;
+        c->window = hann_window(n);
+        const double window_power = c->window->power;
         c->weight.assign(static_cast<size_t>(c->fft.bins()), 0.0);
         const Gains threshold = threshold_gains(info.channel, sample_rate_hz, m, contact_area_cm2);
         for (int k = 0; k < c->fft.bins(); ++k) {
@@ -131,10 +130,11 @@ void SensationMeter::step(const std::function<void(const MeterReading&)>& on_rea
     reading.time_s = static_cast<double>(steps_ * step_samples_) / sample_rate_hz_;
     for (auto& c : channels_) {
         if (steps_ % c->hop_steps == 0) {
-            const int n = static_cast<int>(c->window.size());
+            const std::vector<float>& window = c->window->values;
+            const int n = static_cast<int>(window.size());
             float* time = c->fft.time();
             history_.read_latest(time, n);
-            for (int i = 0; i < n; ++i) time[i] *= c->window[i];
+            for (int i = 0; i < n; ++i) time[i] *= window[i];
             std::fill(time + n, time + c->fft.size(), 0.0f);
             c->fft.forward();
             const std::complex<float>* x = c->fft.spectrum();
