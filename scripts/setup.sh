@@ -46,5 +46,11 @@ done
 [ ${#missing[@]} -eq 0 ] && exit 0
 
 echo "setup: installing ${missing[*]}" >&2
-$sudo apt-get update -qq
+# A mirror caught mid-sync serves an index of the wrong size: try again, then go on with the
+# indexes that did come (the install below fails, naming the package, if one is missing).
+for attempt in 1 2 3; do
+  $sudo apt-get update -qq && break
+  echo "setup: apt-get update failed (attempt $attempt of 3)" >&2
+  sleep $((attempt * 10))
+done
 DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2

@@ -93,17 +93,11 @@ void wavefront_each(Biquad* sections, int count, Input input, Sink sink) noexcep
 
 // For i < count, in increasing i: sink(i, the N sections in turn applied to input(i)), in
 // double.
-// Where the compiler fuses multiplies and adds (arm64: __FP_FAST_FMA), it fuses the wavefront's
-// and Biquad::process's differently: the sections then run in turn, so the output stays the
-// sections' own, bit for bit.
+// Bit for bit the sections' own output: multiplies and adds are never fused (-ffp-contract=off,
+// CMakeLists.txt), so the wavefront rounds as Biquad::process does.
 template <int N, typename Input, typename Sink>
 void cascade_each(Biquad* sections, int count, Input input, Sink sink) noexcept {
-#if defined(__FP_FAST_FMA)
-    constexpr bool kWavefront = false;
-#else
-    constexpr bool kWavefront = N >= 2;
-#endif
-    if constexpr (kWavefront)
+    if constexpr (N >= 2)
         detail::wavefront_each<N>(sections, count, input, sink);
     else
         detail::serial_each<N>(sections, count, input, sink);
