@@ -35,19 +35,28 @@ inline int next_power_of_two(int64_t n) {
     return p;
 }
 
-// The even size with no prime factor above 5 nearest to n (FFTW's fast sizes; the smaller on a
-// tie): an FFT window within 4 % of the duration asked for any n >= 24.
+// An even size with no prime factor above 5: FFTW transforms it about as fast as a power of two.
+inline bool is_fast_fft_size(int64_t n) {
+    if (n < 2 || n % 2 != 0) return false;
+    for (const int64_t p : {2, 3, 5})
+        while (n % p == 0) n /= p;
+    return n == 1;
+}
+
+// The fast FFT size nearest to n (the smaller on a tie): an FFT window within 4 % of the
+// duration asked for any n >= 24.
 inline int nearest_fft_size(int64_t n) {
-    const auto fast = [](int64_t m) {
-        if (m < 2 || m % 2 != 0) return false;
-        for (const int64_t p : {2, 3, 5})
-            while (m % p == 0) m /= p;
-        return m == 1;
-    };
     for (int64_t d = 0;; ++d) {
-        if (fast(n - d)) return static_cast<int>(n - d);
-        if (fast(n + d)) return static_cast<int>(n + d);
+        if (is_fast_fft_size(n - d)) return static_cast<int>(n - d);
+        if (is_fast_fft_size(n + d)) return static_cast<int>(n + d);
     }
+}
+
+// The smallest fast FFT size >= n: a window of n samples zero-padded by at most a few percent
+// (the next power of two pads 17 640 to 32 768).
+inline int fft_size_at_least(int64_t n) {
+    while (!is_fast_fft_size(n)) ++n;
+    return static_cast<int>(n);
 }
 
 constexpr double kPi = 3.14159265358979323846;

@@ -1,6 +1,7 @@
 #include "tactus/perception/meter.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <tuple>
@@ -48,6 +49,18 @@ std::shared_ptr<const Window> hann_window(int n) {
     });
 }
 
+// sum over k < bins of weight[k] |x[k]|^2, in four partial sums so that each addition need not
+// wait for the one before (a long spectrum's sum is otherwise bound by the adder's latency).
+double weighted_power(const double* weight, const std::complex<float>* x, int bins) {
+    constexpr int kLanes = 4;
+    std::array<double, kLanes> sums{};
+    int k = 0;
+    for (; k + kLanes <= bins; k += kLanes)
+        for (int j = 0; j < kLanes; ++j) sums[j] += weight[k + j] * std::norm(x[k + j]);
+    for (; k < bins; ++k) sums[0] += weight[k] * std::norm(x[k]);
+    return (sums[0] + sums[1]) + (sums[2] + sums[3]);
+}
+
 }  // namespace
 
 struct SensationMeter::ChannelState {
@@ -77,7 +90,7 @@ void SensationMeter::prepare(double sample_rate_hz, const Calibration& displacem
         c->hop_steps = kHopSteps[static_cast<int>(info.channel)];
         const int n = kHopsPerWindow * c->hop_steps * step_samples_;
         longest = std::max(longest, n);
-        c->fft.prepare(next_power_of_two(n));
+        c->fft.prepare(fft_size_at_least(n));
         const int m = c->fft.size();
         c->window = hann_window(n);
         const double window_power = c->window->power;
@@ -137,9 +150,7 @@ void SensationMeter::step(const std::function<void(const MeterReading&)>& on_rea
             for (int i = 0; i < n; ++i) time[i] *= window[i];
             std::fill(time + n, time + c->fft.size(), 0.0f);
             c->fft.forward();
-            const std::complex<float>* x = c->fft.spectrum();
-            double power = 0;
-            for (int k = 0; k < c->fft.bins(); ++k) power += c->weight[k] * std::norm(x[k]);
+            const double power = weighted_power(c->weight.data(), c->fft.spectrum(), c->fft.bins());
             c->frames[c->next_frame] = power;
             if (++c->next_frame == c->frames.size()) c->next_frame = 0;
             double sum = 0;
