@@ -93,8 +93,8 @@ void wavefront_each(Biquad* sections, int count, Input input, Sink sink) noexcep
 
 // For i < count, in increasing i: sink(i, the N sections in turn applied to input(i)), in
 // double.
-// Bit for bit the sections' own output: multiplies and adds are never fused (-ffp-contract=off,
-// CMakeLists.txt), so the wavefront rounds as Biquad::process does.
+// Bit for bit the sections' own output where multiplies and adds are not fused (tactus builds
+// with -ffp-contract=off, CMakeLists.txt): the wavefront then rounds as Biquad::process does.
 template <int N, typename Input, typename Sink>
 void cascade_each(Biquad* sections, int count, Input input, Sink sink) noexcept {
     if constexpr (N >= 2)
