@@ -9,13 +9,13 @@
 set -euo pipefail
 build=$1
 qemu=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-mkfifo "$work/log"
 if [ ! -x "$build/bin/tactus_startup_bench" ]; then
   echo "arm_instructions.sh: $build/bin/tactus_startup_bench is missing (cmake --build $build --target tactus_startup_bench)" >&2
   exit 1
 fi
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+mkfifo "$work/log"
 
 # Instructions the guest executes in `startup_bench process SECONDS 64`.
 count() {

@@ -44,6 +44,7 @@ BEFORE_S = 0.01  # against the felt level over this long before it
 DISTINCT_DB = 6.0
 ISOLATED_PULSE_S = 0.08
 PRIORITY = ("kick", "snare", "hat")
+NAMED = PRIORITY + ("other",)  # the parts `tactus onsets` names
 DETECTORS = ("tactus", "aubio mkl", "aubio specflux")
 LEVELS = (None,) + music_corpus.BED_LEVELS_DB
 GAIN_LEVELS = (None,) + music_corpus.GAIN_BED_LEVELS_DB
@@ -131,7 +132,7 @@ def unmatched_parts(labels, matches):
     """{part: count} of the onsets no drum hit matches (over a bed: the bed's own)."""
     matched = {j for _, j in matches}
     counts = collections.Counter(label for j, label in enumerate(labels) if j not in matched)
-    return {p: counts[p] for p in PRIORITY + ("other",)}
+    return {p: counts[p] for p in NAMED}
 
 
 def count_parts(parts, labels, matches):
@@ -213,15 +214,13 @@ def pooled_accuracy(results):
     return {p: (right / total if total else float("nan")) for p, (right, total) in counts.items()}
 
 
-def unmatched_shares(part, level):
-    """{kick, snare, hat, other: share} of the onsets no drum hit matches at `level` (the bed's
-    own over a bed), and their number; None when tactus prints no part."""
+def unmatched_counts(part, level):
+    """{kick, snare, hat, other: count} of the onsets no drum hit matches at `level` (the bed's
+    own over a bed), pooled; None when tactus prints no part."""
     results = [r["unmatched"] for _, r in part["mixes"][level]]
     if not results or any(r is None for r in results):
         return None
-    counts = {p: sum(r[p] for r in results) for p in PRIORITY + ("other",)}
-    total = sum(counts.values())
-    return {p: (c / total if total else float("nan")) for p, c in counts.items()}, total
+    return {p: sum(r[p] for r in results) for p in NAMED}
 
 
 def rhos(part, level):
@@ -268,13 +267,22 @@ def accuracy_cell(part, level):
 
 
 def unmatched_cell(part, level):
-    shares = unmatched_shares(part, level)
-    if shares is None:
+    counts = unmatched_counts(part, level)
+    if counts is None:
         return "n/a"
-    named, total = shares
+    total = sum(counts.values())
     if total == 0:
         return "none"
-    return " / ".join(f"{named[p]:.3f}" for p in PRIORITY + ("other",)) + f" ({total})"
+    return " / ".join(f"{counts[p] / total:.3f}" for p in NAMED) + f" ({total})"
+
+
+def level_table(text, names, parts, cell, columns=""):
+    """A paragraph, then a table of one row per bed level: its label, then cell(part, level) for
+    each part (headed by its name and `columns`)."""
+    return (["", text, "", "| bed | " + " | ".join(n + columns for n in names) + " |",
+             "|---" * (len(names) + 1) + "|"] +
+            [f"| {level_label(level)} | " + " | ".join(cell(p, level) for p in parts) + " |"
+             for level in LEVELS])
 
 
 def summary(result):
@@ -353,16 +361,14 @@ def section(result):
                               if e["style"] == style]) for level in LEVELS]
             per_style.append(f"{style} " + "/".join(f"{c:.2f}" for c in cells))
         lines.append(f"- {name}: " + ", ".join(per_style))
-    lines += ["", "## Drum hits that give a felt pulse", "",
-              f"A hit gives a felt pulse when the felt render's envelope peaks within "
-              f"{1000 * PULSE_S:.0f} ms after it, {DISTINCT_DB:.0f} dB above its level over the "
-              f"{1000 * BEFORE_S:.0f} ms before (which holds the previous hit's and the bed's "
-              "vibration), and a tactus onset is matched to it (+-50 ms, one-to-one). Share of "
-              "the drum hits' distinct times.", "",
-              "| bed | " + " | ".join(names) + " |", "|---" + rule]
-    for level in LEVELS:
-        lines.append(f"| {level_label(level)} | " +
-                     " | ".join(f"{pulse_share(p, level):.3f}" for p in parts) + " |")
+    lines += ["", "## Drum hits that give a felt pulse"]
+    lines += level_table(
+        f"A hit gives a felt pulse when the felt render's envelope peaks within "
+        f"{1000 * PULSE_S:.0f} ms after it, {DISTINCT_DB:.0f} dB above its level over the "
+        f"{1000 * BEFORE_S:.0f} ms before (which holds the previous hit's and the bed's "
+        "vibration), and a tactus onset is matched to it (+-50 ms, one-to-one). Share of "
+        "the drum hits' distinct times.",
+        names, parts, lambda p, level: f"{pulse_share(p, level):.3f}")
     lines += ["", "## Isolated hits over music", "",
               "Each kit's kick alone and snare alone, 9 hits 1 s apart at 0 to -24 dB, without "
               "bed and over a bed at -12 and -6 dB re the loudest hit (the bed's RMS against the "
@@ -385,27 +391,21 @@ def section(result):
         for level in GAIN_LEVELS:
             lines.append(f"| {label} | {level_label(level)} | " +
                          " | ".join(cell(p, level) for p in parts) + " |")
-    lines += ["", "## Drum part", "",
-              "`tactus onsets`' 4th column (kick, snare, hat, other), over its onsets matched "
-              "one-to-one to a drum hit within +-50 ms: the share naming the hit's part, per "
-              "true part and overall; where hits coincide the true part is the first of kick, "
-              "snare, hat among them. n/a: tactus prints no part. The part model "
-              "(src/tactus/analysis/part_model.hpp) is fitted on the tuning part only; "
-              "`eval/fit_parts.py BUILD_DIR --work DIR` re-runs this table alone (about 10 s on "
-              "a built corpus) and `--write-header` refits it; it also prints the model fitted "
-              "with two tuning kits left out at a time, measured on them.", "",
-              "| bed | " + " | ".join(f"{n}: kick / snare / hat / all" for n in names) + " |",
-              "|---" + rule]
-    for level in LEVELS:
-        lines.append(f"| {level_label(level)} | " +
-                     " | ".join(accuracy_cell(p, level) for p in parts) + " |")
-    lines += ["", "The onsets no drum hit matches (+-50 ms), by the part tactus names them: over a "
-              "bed, the bed's own onsets (bass, chords, melody, voice), which a drums-only "
-              "mapping (`presets/drums.toml`: `parts.other.gain_db = -60`) plays as drums unless "
-              "they are named other; alone, the drums' own false onsets. Shares and count.", "",
-              "| bed | " + " | ".join(f"{n}: kick / snare / hat / other" for n in names) + " |",
-              "|---" + rule]
-    for level in LEVELS:
-        lines.append(f"| {level_label(level)} | " +
-                     " | ".join(unmatched_cell(p, level) for p in parts) + " |")
+    lines += ["", "## Drum part"]
+    lines += level_table(
+        "`tactus onsets`' 4th column (kick, snare, hat, other), over its onsets matched "
+        "one-to-one to a drum hit within +-50 ms: the share naming the hit's part, per "
+        "true part and overall; where hits coincide the true part is the first of kick, "
+        "snare, hat among them. n/a: tactus prints no part. The part model "
+        "(src/tactus/analysis/part_model.hpp) is fitted on the tuning part only; "
+        "`eval/fit_parts.py BUILD_DIR --work DIR` re-runs this table alone (about 10 s on "
+        "a built corpus) and `--write-header` refits it; it also prints the model fitted "
+        "with two tuning kits left out at a time, measured on them.",
+        names, parts, accuracy_cell, ": kick / snare / hat / all")
+    lines += level_table(
+        "The onsets no drum hit matches (+-50 ms), by the part tactus names them: over a bed, the "
+        "bed's own onsets (bass, chords, melody, voice), which a drums-only mapping "
+        "(`presets/drums.toml`: `parts.other.gain_db = -60`) plays as drums unless they are "
+        "named other; alone, the drums' own false onsets. Shares and count.",
+        names, parts, unmatched_cell, ": kick / snare / hat / other")
     return lines
