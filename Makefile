@@ -29,16 +29,19 @@ test: build
 	ctest --preset release -j $(JOBS)
 
 # Every test but realtime_tests (ASan owns malloc) again under AddressSanitizer +
-# UndefinedBehaviorSanitizer (build/asan).
+# UndefinedBehaviorSanitizer (build/asan), at -O1 with line tables only (-g1): reports keep their
+# files and lines, and a file compiles 2.5 times faster than at -O2 -g (export_test.cpp: 24 s
+# against 58 s).
 test-asan: setup
 	cmake --preset asan
 	cmake --build --preset asan -j $(JOBS)
 	ctest --preset asan -j $(JOBS)
 
 # The tests labelled `threads` (engine, live front end, tactus~ in pd, the plugin in its hosts)
-# under ThreadSanitizer (build/tsan): only the targets they need are built. pd and Ardour's VST3
-# scanner, not instrumented, run with the TSan runtime preloaded. Races inside Debian's libraries
-# are suppressed in tsan.supp; the tests that replace malloc are left out (TSan owns it).
+# under ThreadSanitizer (build/tsan), -O2 with line tables only: only the targets they need are
+# built. pd and Ardour's VST3 scanner, not instrumented, run with the TSan runtime preloaded.
+# Races inside Debian's libraries are suppressed in tsan.supp; the tests that replace malloc are
+# left out (TSan owns it).
 test-tsan: setup
 	cmake --preset tsan
 	cmake --build --preset tsan -j $(JOBS)

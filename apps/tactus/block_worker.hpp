@@ -1,5 +1,5 @@
 // A thread that takes blocks of samples, in order, from the thread that feeds it: the feeder
-// writes and goes on. The meter's stages (meter_worker.hpp) run on such threads. Samples are
+// writes and goes on. The metered renders' meter (meter_worker.hpp) runs on one. Samples are
 // handed over in blocks of kHandOverSamples or more (fewer wake-ups). Not real-time: write()
 // allocates.
 #pragma once

@@ -34,9 +34,9 @@ struct Metered {
 };
 
 Metered meter(const std::vector<float>& x, const SensationMeter::Calibration& calibration,
-              double area_cm2 = kReferenceAreaCm2) {
+              double area_cm2 = kReferenceAreaCm2, double sample_rate_hz = kFs) {
     SensationMeter m;
-    m.prepare(kFs, calibration, area_cm2);
+    m.prepare(sample_rate_hz, calibration, area_cm2);
     Metered run;
     const auto keep = [&](const MeterReading& r) { run.readings.push_back(r); };
     for (size_t i = 0; i < x.size(); i += 1000)
@@ -51,7 +51,7 @@ double level(Channel c, const MeterReading& r) {
 }
 
 TEST(SensationMeter, SteadySineReadsLevelMinusThreshold) {
-    for (double f : {40.0, 80.0, 250.0, 400.0}) {
+    for (double f : {40.0, 80.0, 250.0, 400.0, 1000.0}) {
         // 0.5 full scale x 10 um = 5 um peak: 20 log10(5) = 14 dB re 1 um.
         const auto x = test::sine(f, kFs, static_cast<size_t>(3 * kFs), 0.5);
         const MeterReading r = meter(x, flat_10um).at(2.8);
@@ -64,6 +64,35 @@ TEST(SensationMeter, SteadySineReadsLevelMinusThreshold) {
         // P alone: the combination is P's level again, up to the rounding of its dB -> magnitude
         // -> dB round trip (an ulp below it on aarch64).
         EXPECT_GE(r.combined_db, level(Channel::P, r) - 1e-9);
+    }
+}
+
+// The channels read the signal at SensationMeter::kRateHz: a sweep and a pulse train read the same
+// from 8 to 96 kHz, reading for reading (a pulse's first reading, where its rise meets the
+// window's edge, is the most sensitive to the reduction's fraction of a sample).
+TEST(SensationMeter, ReadsTheSameAtEveryInputRate) {
+    const auto signal = [](double fs) {
+        std::vector<float> x(static_cast<size_t>(4 * fs));
+        for (size_t i = 0; i < x.size(); ++i) {
+            const double t = static_cast<double>(i) / fs;
+            const double sweep = std::sin(2 * M_PI * (20 * t + 60 * t * t));  // 20-500 Hz
+            const double pulse = std::fmod(t, 0.25) < 0.03 ? std::sin(2 * M_PI * 180 * t) : 0.0;
+            x[i] = static_cast<float>(0.4 * sweep + 0.4 * pulse);
+        }
+        return x;
+    };
+    const Metered reference = meter(signal(8000), flat_10um, kReferenceAreaCm2, 8000);
+    for (const double fs : {16000.0, 44100.0, 48000.0, 96000.0}) {
+        const Metered run = meter(signal(fs), flat_10um, kReferenceAreaCm2, fs);
+        ASSERT_EQ(run.readings.size(), reference.readings.size()) << fs;
+        double worst = 0;
+        for (size_t i = 0; i < run.readings.size(); ++i) {
+            EXPECT_NEAR(run.readings[i].time_s, reference.readings[i].time_s, 1e-9);
+            for (int c = 0; c < 4; ++c)
+                worst = std::max(worst, std::abs(run.readings[i].level_db[c] -
+                                                 reference.readings[i].level_db[c]));
+        }
+        EXPECT_LT(worst, 0.2) << fs;
     }
 }
 

@@ -77,9 +77,13 @@ struct SensationMeter::ChannelState {
 SensationMeter::SensationMeter() = default;
 SensationMeter::~SensationMeter() = default;
 
-void SensationMeter::prepare(double sample_rate_hz, const Calibration& displacement_um,
+void SensationMeter::prepare(double input_rate_hz, const Calibration& displacement_um,
                              double contact_area_cm2, const Channels& channels) {
-    sample_rate_hz_ = sample_rate_hz;
+    input_rate_hz_ = input_rate_hz;
+    reduced_ = input_rate_hz > kRateHz;
+    if (reduced_) resampler_.prepare(input_rate_hz, kRateHz, kChunk);
+    const double sample_rate_hz = reduced_ ? resampler_.output_rate_hz() : input_rate_hz;
+    rate_hz_ = sample_rate_hz;
     step_samples_ = static_cast<int>(std::lround(kStepS * sample_rate_hz));
     channels_.clear();
     int longest = 0;
@@ -111,18 +115,37 @@ void SensationMeter::prepare(double sample_rate_hz, const Calibration& displacem
         channels_.push_back(std::move(c));
     }
     history_.prepare(std::max(longest, step_samples_));
-    clean_.assign(static_cast<size_t>(step_samples_), 0.0f);
+    clean_.assign(kChunk, 0.0f);
+    reduced_samples_.assign(kChunk, 0.0f);
+    resampler_.reset();
+    delay_left_ = reduced_ ? static_cast<int>(std::lround(resampler_.delay_output_samples())) : 0;
     filled_ = 0;
-    steps_ = 0;
+    steps_ = written_ = 0;
 }
 
 void SensationMeter::write(const float* samples, int count,
                            const std::function<void(const MeterReading&)>& on_reading) {
+    written_ += count;
     for (int done = 0; done < count;) {
-        const int chunk = std::min(count - done, step_samples_ - filled_);
+        const int chunk = std::min(count - done, kChunk);
         for (int i = 0; i < chunk; ++i)
             clean_[i] = std::isfinite(samples[done + i]) ? samples[done + i] : 0.0f;
-        history_.write(clean_.data(), chunk);
+        done += chunk;
+        if (reduced_) {
+            const int produced = resampler_.process(clean_.data(), chunk, reduced_samples_.data());
+            const int skipped = std::min(produced, delay_left_);
+            delay_left_ -= skipped;
+            meter(reduced_samples_.data() + skipped, produced - skipped, on_reading);
+        } else
+            meter(clean_.data(), chunk, on_reading);
+    }
+}
+
+void SensationMeter::meter(const float* samples, int count,
+                           const std::function<void(const MeterReading&)>& on_reading) {
+    for (int done = 0; done < count;) {
+        const int chunk = std::min(count - done, step_samples_ - filled_);
+        history_.write(samples + done, chunk);
         done += chunk;
         if ((filled_ += chunk) == step_samples_) {
             filled_ = 0;
@@ -132,15 +155,19 @@ void SensationMeter::write(const float* samples, int count,
 }
 
 void SensationMeter::finish(const std::function<void(const MeterReading&)>& on_reading) {
-    const std::vector<float> silence(static_cast<size_t>(step_samples_), 0.0f);
-    const int steps = kHopsPerWindow * std::max(kHopSteps[0], kHopSteps[1]);
-    for (int s = 0; s < steps; ++s) write(silence.data(), step_samples_, on_reading);
+    // As many readings as the input's own 10 ms steps give, the longest window's silence added.
+    const int64_t input_step = std::max<int64_t>(1, std::llround(kStepS * input_rate_hz_));
+    const int64_t steps =
+        (written_ + kHopsPerWindow * std::max(kHopSteps[0], kHopSteps[1]) * input_step) /
+        input_step;
+    const std::vector<float> silence(kChunk, 0.0f);
+    while (steps_ < steps) write(silence.data(), step_samples_, on_reading);
 }
 
 void SensationMeter::step(const std::function<void(const MeterReading&)>& on_reading) {
     ++steps_;
     MeterReading reading;
-    reading.time_s = static_cast<double>(steps_ * step_samples_) / sample_rate_hz_;
+    reading.time_s = static_cast<double>(steps_ * step_samples_) / rate_hz_;
     for (auto& c : channels_) {
         if (steps_ % c->hop_steps == 0) {
             const std::vector<float>& window = c->window->values;

@@ -15,7 +15,11 @@
 // stimuli, it does not make a sensation outlast its stimulus. NP channels do not sum over time
 // and read their window alone (bursts shorter than ~3/8 of the window read low). Windows resolve
 // each channel's lowest frequencies: 0.16 s (P, from 40 Hz: 6.25 Hz bins), 0.4 s (NPI: 2.5 Hz
-// bins), 0.08 s (NPII, from 100 Hz), 5.12 s (NPIII, from 0.4 Hz). Readings are causal, every
+// bins), 0.08 s (NPII, from 100 Hz), 5.12 s (NPIII, from 0.4 Hz). The channels read the signal
+// reduced to kRateHz (dsp/resampler.hpp, its analysis band: flat to 2.8 kHz, where every
+// channel's threshold lies 30 dB and more above its best and vibration output ends; 1 kHz at
+// the latest, post.band_high_hz), so each window's transform is 5.5 times shorter at 44.1 kHz.
+// Readings are causal, every
 // 10 ms; a static offset reads 3 dB high (its peak equals its RMS). Sensation levels are dB SL,
 // 0 = below threshold (not engaged); the combined column is perception::combined_sensation_db
 // (Hollins & Roy 1996).
@@ -26,6 +30,7 @@
 #include <memory>
 #include <vector>
 
+#include "tactus/dsp/resampler.hpp"
 #include "tactus/dsp/sample_history.hpp"
 #include "tactus/perception/sensation.hpp"
 
@@ -44,6 +49,7 @@ struct MeterReading {
 class SensationMeter {
   public:
     static constexpr double kStepS = 0.01;
+    static constexpr double kRateHz = 8000;        // signals at higher rates are reduced to it
     static constexpr double kPIntegrationS = 1.0;  // P temporal summation up to ~1 s
     // Each channel's hop, in 10 ms steps; its window is kHopsPerWindow hops.
     static constexpr std::array<int, 4> kHopSteps = {2, 5, 1, 64};  // P, NPI, NPII, NPIII
@@ -70,13 +76,20 @@ class SensationMeter {
 
   private:
     struct ChannelState;
+    // Samples at the meter's rate in.
+    void meter(const float* samples, int count,
+               const std::function<void(const MeterReading&)>& on_reading);
     void step(const std::function<void(const MeterReading&)>& on_reading);
 
-    double sample_rate_hz_ = 0;
-    int step_samples_ = 0, filled_ = 0;
-    int64_t steps_ = 0;
-    SampleHistory history_;     // the longest window
-    std::vector<float> clean_;  // one step of input, non-finite samples read as 0
+    static constexpr int kChunk = 1024;       // input samples cleaned and reduced at a time
+    double input_rate_hz_ = 0, rate_hz_ = 0;  // the input's and the meter's
+    bool reduced_ = false;                    // rate_hz_ < input_rate_hz_, through resampler_
+    Resampler resampler_;
+    int delay_left_ = 0;  // its first outputs, dropped: the readings keep the input's timing
+    int step_samples_ = 0, filled_ = 0;           // at the meter's rate
+    int64_t steps_ = 0, written_ = 0;             // readings given, input samples taken
+    SampleHistory history_;                       // the longest window
+    std::vector<float> clean_, reduced_samples_;  // a chunk of input, non-finite samples as 0
     std::vector<std::unique_ptr<ChannelState>> channels_;
 };
 
