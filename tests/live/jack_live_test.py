@@ -13,7 +13,7 @@ import sys
 import numpy as np
 import soundfile
 
-from jack_server import JackServer, check, fail, hits, onsets
+from jack_server import JackServer, check, fail, hits, onsets, xruns
 
 tactus, client, source_dir = sys.argv[1:4]
 AMEN = "/usr/share/sonic-pi/samples/loop_amen.flac"
@@ -23,19 +23,25 @@ jack = JackServer(RATE_HZ, PERIOD)
 d = jack.dir
 
 
-def live_recording(source, name, extra=(), channels=2):
+def live_recording(source, name, extra=(), channels=2, attempts=3):
     """Plays `source` with tactus live into the recorder: channel 1 the vibration, 2 the sound;
-    the rest as `extra` routes them. Returns the recorded channels."""
+    the rest as `extra` routes them. Returns the recorded channels. A run with xruns (the
+    machine missed a period: at 16 frames, 0.36 ms) is played again, up to `attempts` times; the
+    checks read the last run."""
     seconds = soundfile.info(source).duration + 4
     out = os.path.join(d, name + ".wav")
-    recorder = jack.client(client, "record", name, str(channels), str(seconds), out)
-    live = jack.run([tactus, "live", "--backend", "jack", "--play", source, "--output", name,
-                     "--sound-channels", "2", "--duration", "30", "--block", str(PERIOD),
-                     *(extra or ["--actuator-channels", "1"])])
-    print(live.stderr, end="")
+    for attempt in range(1, attempts + 1):
+        recorder = jack.client(client, "record", name, str(channels), str(seconds), out)
+        live = jack.run([tactus, "live", "--backend", "jack", "--play", source, "--output", name,
+                         "--sound-channels", "2", "--duration", "30", "--block", str(PERIOD),
+                         *(extra or ["--actuator-channels", "1"])])
+        print(live.stderr, end="")
+        recorder.terminate()
+        recorder.wait(timeout=30)
+        if live.returncode != 0 or xruns(live.stderr) == 0 or attempt == attempts:
+            break
+        print("blocks were lost: playing it again")
     check(live.returncode == 0, f"tactus live {' '.join(extra)} exits 0")
-    recorder.terminate()
-    recorder.wait(timeout=30)
     recording, rate = soundfile.read(out, dtype="float32")
     check(rate == RATE_HZ, "the recording is at the server's rate")
     return recording.T

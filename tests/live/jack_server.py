@@ -7,6 +7,7 @@ everything started is stopped on exit, whatever happens."""
 import atexit
 import ctypes
 import os
+import re
 import shutil
 import signal
 import socket
@@ -109,6 +110,14 @@ def skip(why):
 def fail(why):
     print(f"FAIL: {why}")
     sys.exit(1)
+
+
+def xruns(stderr):
+    """The xruns `tactus live` reported when it stopped ("..., N xruns"; 0 if it did not say).
+    A run with xruns lost blocks to the machine's scheduling, not to tactus: tests that compare
+    recordings sample for sample play it again."""
+    found = re.search(r"(\d+) xruns", stderr)
+    return int(found.group(1)) if found else 0
 
 
 def check(condition, what):
