@@ -158,8 +158,7 @@ void SensationMeter::finish(const std::function<void(const MeterReading&)>& on_r
     // As many readings as the input's own 10 ms steps give, the longest window's silence added.
     const int64_t input_step = std::max<int64_t>(1, std::llround(kStepS * input_rate_hz_));
     const int64_t steps =
-        (written_ + kHopsPerWindow * std::max(kHopSteps[0], kHopSteps[1]) * input_step) /
-        input_step;
+        written_ / input_step + int64_t{kHopsPerWindow} * std::max(kHopSteps[0], kHopSteps[1]);
     const std::vector<float> silence(kChunk, 0.0f);
     while (steps_ < steps) write(silence.data(), step_samples_, on_reading);
 }
