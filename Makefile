@@ -54,11 +54,11 @@ test-tsan: setup
 # the unit tests, the engine's, the drum corpus and the Amen break rendered as the x86 release
 # build renders it, within 1e-4 (cross.amen_render_as_host). Left out: the tests that run the
 # command line or pd as a child process (qemu-user runs one program, not what it executes) and,
-# unless ARM_SLOW=1, the threaded front end's and the allocation counters' (minutes under qemu,
-# no arithmetic of their own).
+# unless ARM_SLOW=1, the threaded front end's and the allocation counters' and the check that the
+# analysis reads only the parameters it names (minutes under qemu, no arithmetic of their own).
 ARM_TARGETS := tactus_tests engine_tests realtime_tests end_to_end_tests tactus_cli tactus_pd
 ARM_EXCLUDE := ^(Cli|HelperPrograms|BadInput|FullDisk|Interrupted|PdExternal|Sounds/Export)\.|fuzz_replay|^install\.|^report\.|_NOT_BUILT
-ARM_SLOW_TESTS := |^(EngineFrontEnd|RealTime)\.
+ARM_SLOW_TESTS := |^(EngineFrontEnd|RealTime)\.|^ReplayAnalysis\.TheAnalysisReadsOnlyTheParametersItNames$$
 test-arm: test-arm64 test-armhf
 
 test-arm64 test-armhf: test-%: setup-arm
