@@ -113,9 +113,8 @@ def fail(why):
 
 
 def xruns(stderr):
-    """The xruns `tactus live` reported when it stopped ("..., N xruns"; 0 if it did not say).
-    A run with xruns lost blocks to the machine's scheduling, not to tactus: tests that compare
-    recordings sample for sample play it again."""
+    """The xruns `tactus live` reported when it stopped ("..., N xruns"; 0 if it did not say):
+    periods the machine missed."""
     found = re.search(r"(\d+) xruns", stderr)
     return int(found.group(1)) if found else 0
 

@@ -18,7 +18,7 @@ import time
 import numpy as np
 import soundfile
 
-from jack_server import JackServer, check, free_udp_port, hits, onsets, xruns
+from jack_server import JackServer, check, free_udp_port, hits, onsets
 
 tactus, client = sys.argv[1:3]
 RATE_HZ = 44100
@@ -35,28 +35,24 @@ path = os.path.join(d, "hits.wav")
 soundfile.write(path, x, RATE_HZ, subtype="FLOAT")
 
 recording_path = os.path.join(d, "rec.wav")
-for attempt in range(1, 4):  # a run with xruns lost blocks (jack_server.xruns): again
-    recorder = jack.client(client, "record", "rec", "2", str(n / RATE_HZ + 4), recording_path)
-    port = free_udp_port()
-    live = jack.start([tactus, "live", "--backend", "jack", "--play", path, "--output", "rec",
-                       "--actuator-channels", "1", "--sound-channels", "2", "--sync",
-                       "--osc-port", str(port), "--duration", "40"],
-                      stderr=subprocess.PIPE, text=True)
-    started = live.stderr.readline() + live.stderr.readline()
-    print(started, end="")
-    check("live on rec" in started, "tactus live started")
-    time.sleep(0.45 * n / RATE_HZ)  # the player starts at once: the change comes near the middle
-    sent = jack.run([client, "osc-send", str(port), "/tactus/analysis.hop_ms", "f", str(HOP_MS)])
-    check(sent.returncode == 0, f"sent /tactus/analysis.hop_ms {HOP_MS}")
-    live.wait(timeout=60)
-    messages = live.stderr.read()
-    print(messages, end="")
-    recorder.terminate()
-    recorder.wait(timeout=30)
-    if live.returncode != 0 or xruns(messages) == 0:
-        break
-    print("blocks were lost: playing it again")
+recorder = jack.client(client, "record", "rec", "2", str(n / RATE_HZ + 4), recording_path)
+port = free_udp_port()
+live = jack.start([tactus, "live", "--backend", "jack", "--play", path, "--output", "rec",
+                   "--actuator-channels", "1", "--sound-channels", "2", "--sync",
+                   "--osc-port", str(port), "--duration", "40"],
+                  stderr=subprocess.PIPE, text=True)
+started = live.stderr.readline() + live.stderr.readline()
+print(started, end="")
+check("live on rec" in started, "tactus live started")
+time.sleep(0.45 * n / RATE_HZ)  # the player starts at once: the change comes near the middle
+sent = jack.run([client, "osc-send", str(port), "/tactus/analysis.hop_ms", "f", str(HOP_MS)])
+check(sent.returncode == 0, f"sent /tactus/analysis.hop_ms {HOP_MS}")
+live.wait(timeout=60)
+messages = live.stderr.read()
+print(messages, end="")
 check(live.returncode == 0, "tactus live exits 0")
+recorder.terminate()
+recorder.wait(timeout=30)
 vibration, sound = soundfile.read(recording_path, dtype="float32")[0].T
 
 # ---- onsets line up before and after the change ----

@@ -136,8 +136,9 @@ void SensationMeter::write(const float* samples, int count,
             const int skipped = std::min(produced, delay_left_);
             delay_left_ -= skipped;
             meter(reduced_samples_.data() + skipped, produced - skipped, on_reading);
-        } else
+        } else {
             meter(clean_.data(), chunk, on_reading);
+        }
     }
 }
 

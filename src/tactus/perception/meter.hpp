@@ -17,12 +17,11 @@
 // each channel's lowest frequencies: 0.16 s (P, from 40 Hz: 6.25 Hz bins), 0.4 s (NPI: 2.5 Hz
 // bins), 0.08 s (NPII, from 100 Hz), 5.12 s (NPIII, from 0.4 Hz). The channels read the signal
 // reduced to kRateHz (dsp/resampler.hpp, its analysis band: flat to 2.8 kHz, where every
-// channel's threshold lies 30 dB and more above its best and vibration output ends; 1 kHz at
+// channel's threshold lies 29 dB and more above its best and vibration output ends; 1 kHz at
 // the latest, post.band_high_hz), so each window's transform is 5.5 times shorter at 44.1 kHz.
-// Readings are causal, every
-// 10 ms; a static offset reads 3 dB high (its peak equals its RMS). Sensation levels are dB SL,
-// 0 = below threshold (not engaged); the combined column is perception::combined_sensation_db
-// (Hollins & Roy 1996).
+// Readings are causal, every 10 ms; a static offset reads 3 dB high (its peak equals its RMS).
+// Sensation levels are dB SL, 0 = below threshold (not engaged); the combined column is
+// perception::combined_sensation_db (Hollins & Roy 1996).
 #pragma once
 
 #include <array>
@@ -76,7 +75,7 @@ class SensationMeter {
 
   private:
     struct ChannelState;
-    // Samples at the meter's rate in.
+    // Meters samples at the meter's rate (reduced, or the input's own).
     void meter(const float* samples, int count,
                const std::function<void(const MeterReading&)>& on_reading);
     void step(const std::function<void(const MeterReading&)>& on_reading);
