@@ -46,6 +46,12 @@ def first_nonzero(x):
     return int(nz[0]) if len(nz) else None
 
 
+def carries_the_file(sound, start, source, n):
+    """Whether the recorded sound channel holds the file's first channel from `start` on."""
+    return start >= 0 and start + n <= len(sound) and \
+        np.array_equal(sound[start:start + n], source[:, 0])
+
+
 # ---- tactus live --play equals tactus render ----
 rendered_path = os.path.join(d, "render.wav")
 r = jack.run([tactus, "render", AMEN, "-o", rendered_path])
@@ -66,13 +72,12 @@ for attempt in range(1, 4):
         AMEN, "rec", ["--actuator-channels", "1,3", "--actuator-gain-db", f"0,{TRIM_DB}",
                       "--actuator-delay-ms", f"0,{DELAY_MS}"], channels=3)
     start = first_nonzero(sound) - first_nonzero(source[:, 0])  # where the stream began
-    whole = start >= 0 and start + n <= len(sound)
-    if (whole and np.array_equal(sound[start:start + n], source[:, 0])) or not lost or attempt == 3:
+    if carries_the_file(sound, start, source, n) or not lost or attempt == 3:
         break
     print(f"the recording lost samples ({lost} xruns): recording again")
 print(f"the stream began {start} frames into the recording")
 check(start >= 0 and start + n <= len(sound), "the recording holds the whole file")
-check(np.array_equal(sound[start:start + n], source[:, 0]),
+check(carries_the_file(sound, start, source, n),
       "the sound channel carries the file's first channel sample for sample")
 difference = np.max(np.abs(vibration[start:start + n] - rendered))
 print(f"largest difference from tactus render: {difference:.3g}")

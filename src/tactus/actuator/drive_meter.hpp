@@ -16,19 +16,10 @@ namespace tactus {
 class DriveMeter {
   public:
     using OnReading = std::function<void(const perception::MeterReading&)>;
-    // The displacement, in the meter's units, as the model gives it.
-    using OnDisplacement = std::function<void(const float* displacement, int count)>;
     static constexpr int kChunk = 4096;  // samples modelled at a time
 
-    // The meter's calibration for `actuator`'s model output (um peak per full scale): a
-    // SensationMeter fed the displacement reads what this meter reads.
-    static perception::SensationMeter::Calibration calibration(const ActuatorProfile& actuator);
-
-    void prepare(double sample_rate_hz, const ActuatorProfile& actuator, double contact_area_cm2,
-                 const perception::SensationMeter::Channels& channels =
-                     perception::SensationMeter::kAllChannels);
-    void write(const float* drive, int count, const OnReading& on_reading,
-               const OnDisplacement& on_displacement = {});
+    void prepare(double sample_rate_hz, const ActuatorProfile& actuator, double contact_area_cm2);
+    void write(const float* drive, int count, const OnReading& on_reading);
     void finish(const OnReading& on_reading) { meter_.finish(on_reading); }
 
   private:

@@ -79,12 +79,12 @@ SensationMeter::~SensationMeter() = default;
 
 void SensationMeter::prepare(double input_rate_hz, const Calibration& displacement_um,
                              double contact_area_cm2, const Channels& channels) {
-    input_rate_hz_ = input_rate_hz;
-    reduced_ = input_rate_hz > kRateHz;
-    if (reduced_) resampler_.prepare(input_rate_hz, kRateHz, kChunk);
-    const double sample_rate_hz = reduced_ ? resampler_.output_rate_hz() : input_rate_hz;
-    rate_hz_ = sample_rate_hz;
-    step_samples_ = static_cast<int>(std::lround(kStepS * sample_rate_hz));
+    input_rate_hz_ = rate_hz_ = input_rate_hz;
+    if (input_rate_hz > kRateHz) {
+        resampler_.prepare(input_rate_hz, kRateHz, kChunk);
+        rate_hz_ = resampler_.output_rate_hz();
+    }
+    step_samples_ = static_cast<int>(std::lround(kStepS * rate_hz_));
     channels_.clear();
     int longest = 0;
     for (const auto& info : kChannels) {
@@ -99,9 +99,9 @@ void SensationMeter::prepare(double input_rate_hz, const Calibration& displaceme
         c->window = hann_window(n);
         const double window_power = c->window->power;
         c->weight.assign(static_cast<size_t>(c->fft.bins()), 0.0);
-        const Gains threshold = threshold_gains(info.channel, sample_rate_hz, m, contact_area_cm2);
+        const Gains threshold = threshold_gains(info.channel, rate_hz_, m, contact_area_cm2);
         for (int k = 0; k < c->fft.bins(); ++k) {
-            const double f = k * sample_rate_hz / m;
+            const double f = k * rate_hz_ / m;
             const double ratio = displacement_um(f) / (*threshold)[static_cast<size_t>(k)];
             const double one_sided = (k == 0 || k == m / 2) ? 1.0 : 2.0;
             const double w = 2.0 * one_sided * ratio * ratio / (m * window_power);
@@ -118,7 +118,7 @@ void SensationMeter::prepare(double input_rate_hz, const Calibration& displaceme
     clean_.assign(kChunk, 0.0f);
     reduced_samples_.assign(kChunk, 0.0f);
     resampler_.reset();
-    delay_left_ = reduced_ ? static_cast<int>(std::lround(resampler_.delay_output_samples())) : 0;
+    delay_left_ = reduced() ? static_cast<int>(std::lround(resampler_.delay_output_samples())) : 0;
     filled_ = 0;
     steps_ = written_ = 0;
 }
@@ -131,7 +131,7 @@ void SensationMeter::write(const float* samples, int count,
         for (int i = 0; i < chunk; ++i)
             clean_[i] = std::isfinite(samples[done + i]) ? samples[done + i] : 0.0f;
         done += chunk;
-        if (reduced_) {
+        if (reduced()) {
             const int produced = resampler_.process(clean_.data(), chunk, reduced_samples_.data());
             const int skipped = std::min(produced, delay_left_);
             delay_left_ -= skipped;
@@ -160,7 +160,7 @@ void SensationMeter::finish(const std::function<void(const MeterReading&)>& on_r
     const int64_t input_step = std::max<int64_t>(1, std::llround(kStepS * input_rate_hz_));
     const int64_t steps =
         written_ / input_step + int64_t{kHopsPerWindow} * std::max(kHopSteps[0], kHopSteps[1]);
-    const std::vector<float> silence(kChunk, 0.0f);
+    const std::vector<float> silence(static_cast<size_t>(step_samples_), 0.0f);
     while (steps_ < steps) write(silence.data(), step_samples_, on_reading);
 }
 

@@ -64,7 +64,7 @@ class SensationMeter {
     SensationMeter();
     ~SensationMeter();
     // May allocate.
-    void prepare(double sample_rate_hz, const Calibration& displacement_um, double contact_area_cm2,
+    void prepare(double input_rate_hz, const Calibration& displacement_um, double contact_area_cm2,
                  const Channels& channels = kAllChannels);
     // Feeds samples; calls on_reading for every 10 ms step completed. Not real-time safe
     // (callback), but allocation-free after prepare().
@@ -82,7 +82,7 @@ class SensationMeter {
 
     static constexpr int kChunk = 1024;       // input samples cleaned and reduced at a time
     double input_rate_hz_ = 0, rate_hz_ = 0;  // the input's and the meter's
-    bool reduced_ = false;                    // rate_hz_ < input_rate_hz_, through resampler_
+    bool reduced() const { return rate_hz_ < input_rate_hz_; }  // through resampler_
     Resampler resampler_;
     int delay_left_ = 0;  // its first outputs, dropped: the readings keep the input's timing
     int step_samples_ = 0, filled_ = 0;           // at the meter's rate
