@@ -446,6 +446,44 @@ TEST(EngineFrontEnd, StructuralChangesLateInAFileKeepTheHopGrid) {
     EXPECT_EQ(changed_log.onsets, held_log.onsets);
 }
 
+// A new pipeline hears as much input as its stages remember (Engine::prime_seconds: 0.56 s at
+// the defaults, where the limiter's release is the longest memory; longer memories more, up to
+// kPrimeSeconds): once the crossfade is over it plays as an engine that had the new settings
+// from the start, sample for sample within 60 dB of the output's peak.
+TEST(EngineFrontEnd, APrimedPipelinePlaysAsOneThatRanFromTheStart) {
+    const double fs = 48000;
+    constexpr int kBlock = 64;
+    const auto x = test::drum_pattern(fs, 7.0, 15).audio;
+    Settings after;
+    after.set(P::onset_window_ms, 8.0);  // keeps the hop: frames line up
+    EXPECT_NEAR(Engine::prime_seconds(after), 0.56, 0.01);
+    Engine held(after);
+    held.prepare(fs, kBlock);
+    const auto reference = test::process_in_blocks(held, x, kBlock);
+    Engine engine;
+    engine.prepare(fs, kBlock);
+    std::vector<float> y(x.size());
+    const auto change_at = static_cast<size_t>(4.0 * fs) / kBlock * kBlock;
+    test::process_in_blocks(engine, x.data(), y.data(), change_at, {kBlock});
+    engine.set(P::onset_window_ms, 8.0);
+    test::process_in_blocks(engine, x.data() + change_at, y.data() + change_at,
+                            x.size() - change_at, {kBlock});
+    const auto settled = change_at + static_cast<size_t>(0.05 * fs);
+    const double peak = test::peak(std::span(reference).subspan(settled));
+    ASSERT_GT(peak, 0.05);
+    double largest = 0;
+    for (size_t i = settled; i < x.size(); ++i)
+        largest = std::max(largest, std::abs(double(y[i]) - reference[i]));
+    EXPECT_LT(largest, 1e-3 * peak) << 20 * std::log10(largest / peak) << " dB re the peak";
+
+    Settings long_memory = after;
+    long_memory.set(P::envelope_decay_ms, 1200);
+    EXPECT_NEAR(Engine::prime_seconds(long_memory), 1.21, 0.01) << "the decay's 60 dB";
+    long_memory.set(P::onset_history_ms, 2000);
+    long_memory.set(P::post_release_ms, 2000);
+    EXPECT_EQ(Engine::prime_seconds(long_memory), Engine::kPrimeSeconds);
+}
+
 // A control thread turning parameters (live and structural) while the audio thread runs:
 // the output stays finite and under the ceiling (under AddressSanitizer: no memory error).
 TEST(EngineFrontEnd, ControlAndAudioThreadsAtOnce) {

@@ -245,10 +245,32 @@ int Engine::changes_needed(const Settings& was, const Settings& now) const {
     return live;
 }
 
+// What each stage remembers, to -60 dB where it fades (a one-pole time constant: 6.9 of them) or
+// whole where it is a window: the analysis's windows, onset history and refractory interval; the
+// smoothing of the mappings in use; the envelope's decay (60 dB in decay_ms); the limiter's
+// release; and the crossfade the new pipeline is heard through.
+double Engine::prime_seconds(const Settings& s) {
+    constexpr double kTimeConstantsTo60Db = 6.908;  // ln(1000)
+    double smoothing_ms = std::max({s[P::amplitude_smoothing_ms], s[P::frequency_smoothing_ms],
+                                    s[P::square_mix_smoothing_ms]});
+    if (s[P::flutter_weight] > 0)
+        smoothing_ms = std::max({smoothing_ms, s[P::flutter_level_smoothing_ms],
+                                 s[P::flutter_rate_smoothing_ms]});
+    if (s[P::pressure_weight] > 0)
+        smoothing_ms = std::max(smoothing_ms, s[P::pressure_level_smoothing_ms]);
+    const double analysis_ms = s[P::analysis_window_ms] + s[P::loudness_window_ms] +
+                               s[P::onset_window_ms] + s[P::onset_history_ms] +
+                               s[P::onset_min_interval_ms] + s[P::parts_settle_ms];
+    const double longest_ms =
+        std::max({analysis_ms, kTimeConstantsTo60Db * smoothing_ms, s[P::envelope_decay_ms],
+                  kTimeConstantsTo60Db * s[P::post_release_ms]});
+    return std::min(kPrimeSeconds, (longest_ms + kCrossfadeMs) * 1e-3);
+}
+
 // A pipeline for `settings`, primed with the input the running one has heard, handed to the
 // audio thread (which catches it up and crossfades to it).
 void Engine::swap_in(const Settings& settings) {
-    const auto prime = static_cast<int64_t>(kPrimeSeconds * spec_.sample_rate_hz);
+    const auto prime = static_cast<int64_t>(prime_seconds(settings) * spec_.sample_rate_hz);
     // The new pipeline starts on the grids one with these settings from the first sample has
     // (analysis frames: Analyzer::frame_grid_samples; an internal sample every rate_divisor_
     // input samples), so a change that keeps the hop keeps every frame and onset time.

@@ -76,9 +76,13 @@ class Engine {
     static constexpr int kQueueCapacity = 1024;   // frames or injected frames in flight
     static constexpr int kChangeCapacity = 256;   // changes in flight
     static constexpr double kCrossfadeMs = 10;    // a structural change's handover
-    static constexpr double kPrimeSeconds = 2.5;  // input a new pipeline hears before it plays:
-                                                  // onset.history_ms's longest plus windows
+    static constexpr double kPrimeSeconds = 2.5;  // the most input a new pipeline hears
+                                                  // before it plays (prime_seconds())
     static constexpr int kPrimeBlock = 1024;      // samples a new pipeline is primed with at a time
+
+    // The input a new pipeline for `settings` hears before it plays, so its state is the
+    // running one's: the longest its stages remember, at most kPrimeSeconds. Any thread.
+    static double prime_seconds(const Settings& settings);
 
     explicit Engine(Settings settings = {});
     ~Engine();
