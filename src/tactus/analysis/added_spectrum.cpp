@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tactus/core/vector_clones.hpp"
+
 namespace tactus {
 
 void AddedSpectrum::prepare(int bins, int hop_samples, int longest_wait_samples,
@@ -24,8 +26,8 @@ void AddedSpectrum::reset() noexcept {
     position_ = 0;
 }
 
-void AddedSpectrum::analyse(std::span<const float> powers, int64_t now,
-                            int64_t onset_start) noexcept {
+TACTUS_VECTOR_CLONES void AddedSpectrum::analyse(std::span<const float> powers, int64_t now,
+                                                 int64_t onset_start) noexcept {
     position_ = (position_ + 1) % frames_;
     std::copy_n(powers.data(), bins_, ring_.data() + static_cast<size_t>(position_) * bins_);
     if (onset_start >= 0) {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "tactus/core/units.hpp"
+#include "tactus/core/vector_clones.hpp"
 
 namespace tactus {
 namespace {
@@ -45,7 +46,7 @@ void Loudness::add(Squares squares) noexcept {
     position_ = position;
 }
 
-void Loudness::process(const float* samples, int count) noexcept {
+TACTUS_VECTOR_CLONES void Loudness::process(const float* samples, int count) noexcept {
     add([&](auto take) { k_weighting_.each(samples, count, [&](int, double y) { take(y * y); }); });
 }
 

@@ -5,6 +5,7 @@
 
 #include "tactus/core/fast_math.hpp"
 #include "tactus/core/units.hpp"
+#include "tactus/core/vector_clones.hpp"
 
 namespace tactus {
 namespace {
@@ -73,8 +74,8 @@ void OnsetDetector::reset() noexcept {
     armed_ = true;
 }
 
-OnsetDecision OnsetDetector::analyse(const SampleHistory& history,
-                                     std::array<double, 2> band_power) noexcept {
+TACTUS_VECTOR_CLONES OnsetDecision
+OnsetDetector::analyse(const SampleHistory& history, std::array<double, 2> band_power) noexcept {
     stft_.analyse(history);
     const auto& magnitudes = stft_.magnitudes();
     // Rise over the louder of the frames one and two lags back (SuperFlux's temporal maximum,

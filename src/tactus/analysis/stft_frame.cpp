@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "tactus/core/units.hpp"
+#include "tactus/core/vector_clones.hpp"
 
 namespace tactus {
 
@@ -22,7 +23,7 @@ void StftFrame::prepare(int window_samples, double sample_rate_hz) {
     bin_hz_ = sample_rate_hz / window_samples;
 }
 
-void StftFrame::analyse(const SampleHistory& history) noexcept {
+TACTUS_VECTOR_CLONES void StftFrame::analyse(const SampleHistory& history) noexcept {
     const int n = fft_.size();
     float* time = fft_.time();
     history.read_latest(time, n);

@@ -2,16 +2,18 @@
 // energy, a K-weighted square) or written back (process_cascade). The sections are copied into
 // locals of a size fixed at compile time, so the compiler unrolls the section loop and keeps the
 // states in registers. Two or more sections also run in a wavefront (where the compiler does not
-// fuse multiply-adds), two per vector: at step t, section k filters sample t - k, so all sections
-// advance at once instead of one after the other. Each section does exactly Biquad::process's
-// arithmetic on every sample, in the same order: the output is bit-identical to applying the
-// sections in turn, for any block split.
+// fuse multiply-adds), two or four per vector: at step t, section k filters sample t - k, so all
+// sections advance at once instead of one after the other. Each section does exactly
+// Biquad::process's arithmetic on every sample, in the same order: the output is bit-identical to
+// applying the sections in turn, for any block split.
 #pragma once
 
 #include <array>
 #include <cstddef>
+#include <type_traits>
 #include <utility>
 
+#include "tactus/core/vector_clones.hpp"
 #include "tactus/dsp/biquad.hpp"
 
 namespace tactus {
@@ -31,41 +33,48 @@ void serial_each(Biquad* sections, int count, Input input, Sink sink) noexcept {
     for (int s = 0; s < N; ++s) sections[s] = local[s];
 }
 
-// cascade_each in a wavefront, two sections per vector (the compiler's generic vectors: SSE2
-// on x86-64, pairs of scalars where the target has no double vectors).
+// cascade_each in a wavefront, kLanes sections per vector: four for cascades of three or more
+// sections, two for two (the compiler's generic vectors: one AVX2 vector or two SSE2 ones on
+// x86-64, where the function is cloned for AVX2; two NEON vectors on arm64; pairs of scalars
+// where the target has no double vectors).
 template <int N, typename Input, typename Sink>
-void wavefront_each(Biquad* sections, int count, Input input, Sink sink) noexcept {
+TACTUS_VECTOR_CLONES void wavefront_each(Biquad* sections, int count, Input input,
+                                         Sink sink) noexcept {
     using Pair = double __attribute__((vector_size(2 * sizeof(double))));
-    constexpr int V = (N + 1) / 2;  // vectors of two sections; a spare lane is a pass-through
-    Pair b0[V], b1[V], b2[V], a1[V], a2[V], s1[V], s2[V], y[V];
-    for (std::ptrdiff_t v = 0; v < V; ++v) {
-        const BiquadCoefficients pass{};
-        const BiquadCoefficients& c0 = sections[2 * v].coefficients();
-        const BiquadCoefficients& c1 = 2 * v + 1 < N ? sections[2 * v + 1].coefficients() : pass;
-        b0[v] = Pair{c0.b0, c1.b0};
-        b1[v] = Pair{c0.b1, c1.b1};
-        b2[v] = Pair{c0.b2, c1.b2};
-        a1[v] = Pair{c0.a1, c1.a1};
-        a2[v] = Pair{c0.a2, c1.a2};
-        const auto state0 = sections[2 * v].state();
-        const auto state1 = 2 * v + 1 < N ? sections[2 * v + 1].state() : std::pair{0.0, 0.0};
-        s1[v] = Pair{state0.first, state1.first};
-        s2[v] = Pair{state0.second, state1.second};
-        y[v] = Pair{0.0, 0.0};
+    using Quad = double __attribute__((vector_size(4 * sizeof(double))));
+    using Lanes = std::conditional_t<(N > 2), Quad, Pair>;
+    constexpr int kLanes = sizeof(Lanes) / sizeof(double);
+    constexpr int V = (N + kLanes - 1) / kLanes;  // spare lanes are pass-throughs
+    Lanes b0[V], b1[V], b2[V], a1[V], a2[V], s1[V], s2[V], y[V];
+    for (int v = 0; v < V; ++v) {
+        for (int lane = 0; lane < kLanes; ++lane) {
+            const int k = kLanes * v + lane;
+            const BiquadCoefficients pass{};
+            const BiquadCoefficients& c = k < N ? sections[k].coefficients() : pass;
+            const auto state = k < N ? sections[k].state() : std::pair{0.0, 0.0};
+            b0[v][lane] = c.b0, b1[v][lane] = c.b1, b2[v][lane] = c.b2;
+            a1[v][lane] = c.a1, a2[v][lane] = c.a2;
+            s1[v][lane] = state.first, s2[v][lane] = state.second;
+            y[v][lane] = 0.0;
+        }
     }
-    // One step: every lane takes its left neighbour's last output (lane 0 the new sample).
+    // One step: every lane takes its left neighbour's last output (lane 0 the new sample); the
+    // vectors go from the last, so each still reads its left neighbour's previous output.
     // Lanes outside 0 <= t - k < count keep their state (`masked`).
     auto step = [&](double input, bool masked, int t) {
-        Pair x[V];
-        x[0] = Pair{input, y[0][0]};
-        for (int v = 1; v < V; ++v) x[v] = Pair{y[v - 1][1], y[v][0]};
-        for (int v = 0; v < V; ++v) {
-            const Pair out = b0[v] * x[v] + s1[v];
-            const Pair n1 = (b1[v] * x[v] - a1[v] * out) + s2[v];
-            const Pair n2 = b2[v] * x[v] - a2[v] * out;
+        for (int v = V - 1; v >= 0; --v) {
+            const double first = v == 0 ? input : y[v - 1][kLanes - 1];
+            Lanes x;
+            if constexpr (kLanes == 4)
+                x = Lanes{first, y[v][0], y[v][1], y[v][2]};
+            else
+                x = Lanes{first, y[v][0]};
+            const Lanes out = b0[v] * x + s1[v];
+            const Lanes n1 = (b1[v] * x - a1[v] * out) + s2[v];
+            const Lanes n2 = b2[v] * x - a2[v] * out;
             if (masked) {
-                for (int lane = 0; lane < 2; ++lane) {
-                    const int k = 2 * v + lane;
+                for (int lane = 0; lane < kLanes; ++lane) {
+                    const int k = kLanes * v + lane;
                     if (t - k >= 0 && t - k < count) s1[v][lane] = n1[lane], s2[v][lane] = n2[lane];
                 }
             } else {
@@ -75,7 +84,7 @@ void wavefront_each(Biquad* sections, int count, Input input, Sink sink) noexcep
             y[v] = out;
         }
         const int done = t - (N - 1);
-        if (done >= 0 && done < count) sink(done, y[V - 1][(N - 1) % 2]);
+        if (done >= 0 && done < count) sink(done, y[V - 1][(N - 1) % kLanes]);
     };
     const int steps = count + N - 1;
     const int steady_end = count;  // steps N-1 ... count-1 have every lane in range
@@ -83,10 +92,9 @@ void wavefront_each(Biquad* sections, int count, Input input, Sink sink) noexcep
     for (; t < std::min(N - 1, steps); ++t) step(t < count ? input(t) : 0.0, true, t);
     for (; t < steady_end; ++t) step(input(t), false, t);
     for (; t < steps; ++t) step(0.0, true, t);
-    for (std::ptrdiff_t v = 0; v < V; ++v) {
-        const double first0 = s1[v][0], second0 = s2[v][0], first1 = s1[v][1], second1 = s2[v][1];
-        sections[2 * v].set_state({first0, second0});
-        if (2 * v + 1 < N) sections[2 * v + 1].set_state({first1, second1});
+    for (int k = 0; k < N; ++k) {
+        const double first = s1[k / kLanes][k % kLanes], second = s2[k / kLanes][k % kLanes];
+        sections[k].set_state({first, second});
     }
 }
 }  // namespace detail
@@ -105,7 +113,7 @@ void cascade_each(Biquad* sections, int count, Input input, Sink sink) noexcept 
 
 namespace detail {
 template <int N>
-void run(Biquad* sections, float* samples, int count, double gain) noexcept {
+TACTUS_VECTOR_CLONES void run(Biquad* sections, float* samples, int count, double gain) noexcept {
     cascade_each<N>(
         sections, count, [&](int i) { return samples[i] * gain; },
         [&](int i, double y) { samples[i] = static_cast<float>(y); });

@@ -5,6 +5,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "tactus/core/vector_clones.hpp"
 #include "tactus/dsp/resampler_kernel.hpp"
 
 namespace tactus {
@@ -84,7 +85,7 @@ void Resampler::reset() noexcept {
     next_output_ = next_base_ = phase_ = written_ = 0;
 }
 
-int Resampler::process(const float* in, int count, float* out) noexcept {
+TACTUS_VECTOR_CLONES int Resampler::process(const float* in, int count, float* out) noexcept {
     const int taps = taps_;
     float* const history = history_.data();
     std::copy_n(in, count, history + taps - 1);

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "tactus/core/vector_clones.hpp"
 #include "tactus/dsp/upsampler_taps.hpp"
 
 namespace tactus {
@@ -14,7 +15,8 @@ using Taps = std::array<std::array<float, Upsampler::kMaxFactor>, Upsampler::kTa
 // The outputs from phase r on, F a constant: the phase loop unrolls and vectorises (each output
 // sums its taps in the same order as for any F). Returns the phase after the last output.
 template <int F>
-int run(const Taps& taps, const float* x, int r, float* out, int count) noexcept {
+TACTUS_VECTOR_CLONES int run(const Taps& taps, const float* x, int r, float* out,
+                             int count) noexcept {
     if constexpr (F < 2) {
         return 0;  // factor 1 copies (process())
     } else {

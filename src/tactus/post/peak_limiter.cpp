@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "tactus/core/units.hpp"
+#include "tactus/core/vector_clones.hpp"
 
 namespace tactus {
 
@@ -64,7 +65,7 @@ double PeakLimiter::curve(double peak) const noexcept {
 }
 
 // The state in locals for the block (kept in registers), written back at its end.
-void PeakLimiter::process(float* samples, int count) noexcept {
+TACTUS_VECTOR_CLONES void PeakLimiter::process(float* samples, int count) noexcept {
     const size_t capacity = minimum_.size();
     const auto length = static_cast<size_t>(lookahead_);
     const int64_t lookahead = lookahead_;
