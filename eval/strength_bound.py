@@ -1,0 +1,96 @@
+#!/usr/bin/python3
+"""How well a hit's strength can be read from the power it adds, at best, inside music: the
+bound the hit analysis (src/tactus/analysis/hit_analysis.hpp) works under.
+
+usage: eval/strength_bound.py [--work DIR] [--bed -6]
+
+On the music corpus's isolated hits (eval/music_corpus.py: each kit's kick alone and snare alone,
+9 hits 1 s apart at 0 to -24 dB, over a bed at --bed dB), without any detection: at each hit's
+true time, the power the 10 ms spectrum (Hann, 1.45 ms hop, as the onset detector's) gained over
+the frame that ended 1 ms before the hit, the largest over the 25 ms after it, summed
+  whole     over every bin up to 5.6 kHz (the analysis band);
+  by part   over the hit's own part's band: below 150 Hz for kicks, 150 Hz-5.6 kHz for snares
+            (the part known);
+  strongest over whichever of below 150 Hz, 150 Hz-1 kHz and 1-5.6 kHz gained most;
+  stem      whole, on the drum stem alone (no bed: the reading's own bound).
+Prints Spearman's rho of hit gain -> that power per file, median and worst over the files, per
+part of the corpus and instrument: what `gain -> felt peak rho` in eval/results.md could reach if
+the pulse followed the added power exactly. The corpus is built in --work once (cached)."""
+import argparse
+import pathlib
+import sys
+
+import numpy as np
+import scipy.stats
+import soundfile
+
+import music
+import music_corpus
+from shared import read_hits
+
+WINDOW_S, HOP_S = 0.010, 0.00145
+REFERENCE_GAP_S, LOOK_S = 0.001, 0.025
+TOP_HZ, LOW_HZ, MID_HZ = 5600, 150, 1000
+
+
+def spectra(path):
+    """(power spectra of the Hann frames, each frame's end time s, bin frequencies Hz)."""
+    x, rate = soundfile.read(path, dtype="float64")
+    if x.ndim > 1:
+        x = x.mean(axis=1)
+    n, hop = int(rate * WINDOW_S), int(rate * HOP_S)
+    starts = np.arange(0, len(x) - n, hop)
+    frames = np.stack([x[s:s + n] for s in starts]) * np.hanning(n)
+    power = np.abs(np.fft.rfft(frames, axis=1)) ** 2
+    return power, (starts + n) / rate, np.fft.rfftfreq(n, 1 / rate)
+
+
+def added(power, ends, freqs, t, bands):
+    """The largest power gained within `bands` ((low, high) Hz each) after time t, of the
+    strongest band, over the frame ending REFERENCE_GAP_S before t."""
+    reference = power[np.flatnonzero(ends <= t - REFERENCE_GAP_S)[-1]]
+    after = np.flatnonzero((ends > t) & (ends <= t + LOOK_S + WINDOW_S))
+    gained = np.clip(power[after] - reference, 0, None)
+    return max(gained[:, (freqs >= low) & (freqs < high)].sum(axis=1).max() for low, high in bands)
+
+
+def readings(entry, directory):
+    """{reading: rho of gain -> added power} for one isolated-hit file."""
+    hits = read_hits(directory / f"{entry['name']}.hits.csv")
+    gains = [g for _, _, g in hits]
+    own = [(0, LOW_HZ)] if entry["instrument"] == "kick" else [(LOW_HZ, TOP_HZ)]
+    variants = {"whole": [(0, TOP_HZ)], "by part": own,
+                "strongest": [(0, LOW_HZ), (LOW_HZ, MID_HZ), (MID_HZ, TOP_HZ)]}
+    mix = spectra(directory / f"{entry['name']}.wav")
+    out = {name: scipy.stats.spearmanr(gains, [added(*mix, t, bands) for t, _, _ in hits])[0]
+           for name, bands in variants.items()}
+    stem = spectra(directory / f"{entry['name']}.drums.wav")
+    out["stem"] = scipy.stats.spearmanr(gains, [added(*stem, t, [(0, TOP_HZ)])
+                                                for t, _, _ in hits])[0]
+    return out
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--work", type=pathlib.Path, default=pathlib.Path("/tmp/tactus-music"))
+    parser.add_argument("--bed", type=int, default=-6, choices=music_corpus.GAIN_BED_LEVELS_DB)
+    args = parser.parse_args()
+    manifests = music_corpus.build(args.work, args.work / "gm-samples", music.PARTS, 2)
+    print(f"isolated hits over a bed at {args.bed:+g} dB: rho of hit gain -> added power, "
+          "median / worst over the files")
+    print("| part | instrument | files | whole | by part | strongest | stem |")
+    print("|---|---|---|---|---|---|---|")
+    for part in music.PARTS:
+        entries = [e for e in manifests[part]["gain"] if e["bed_db"] == args.bed]
+        for instrument in ("kick", "snare"):
+            rows = [readings(e, args.work / part) for e in entries
+                    if e["instrument"] == instrument]
+            cells = [f"{np.median([r[k] for r in rows]):.2f} / {np.min([r[k] for r in rows]):.2f}"
+                     for k in ("whole", "by part", "strongest", "stem")]
+            print(f"| {music.PART_NAMES[part]} | {instrument} | {len(rows)} | "
+                  + " | ".join(cells) + " |")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
