@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "tactus/core/units.hpp"
-#include "tactus/core/vector_clones.hpp"
 #include "tactus/dsp/biquad_cascade.hpp"
 
 namespace tactus {
@@ -41,7 +40,7 @@ void BandPower::reset() noexcept {
     position_ = 0;
 }
 
-TACTUS_VECTOR_CLONES void BandPower::process(const float* samples, int count) noexcept {
+void BandPower::process(const float* samples, int count) noexcept {
     if (!active_) return;
     // Summed sample by sample into the frame's total: the same order for any block split.
     double energy = energy_[position_];

@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "tactus/core/units.hpp"
-#include "tactus/core/vector_clones.hpp"
 
 namespace tactus {
 namespace {
@@ -46,7 +45,7 @@ void Loudness::add(Squares squares) noexcept {
     position_ = position;
 }
 
-TACTUS_VECTOR_CLONES void Loudness::process(const float* samples, int count) noexcept {
+void Loudness::process(const float* samples, int count) noexcept {
     add([&](auto take) { k_weighting_.each(samples, count, [&](int, double y) { take(y * y); }); });
 }
 

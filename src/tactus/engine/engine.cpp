@@ -246,9 +246,9 @@ int Engine::changes_needed(const Settings& was, const Settings& now) const {
 }
 
 // What each stage remembers, to -60 dB where it fades (a one-pole time constant: 6.9 of them) or
-// whole where it is a window: the analysis's windows, onset history and refractory interval; the
-// smoothing of the mappings in use; the envelope's decay (60 dB in decay_ms); the limiter's
-// release; and the crossfade the new pipeline is heard through.
+// whole where it is a window: the analysis's windows, onset history, refractory interval and
+// part decision; the smoothing of the mappings in use; the envelope's decay (60 dB in decay_ms);
+// the limiter's release; and the crossfade the new pipeline is heard through.
 double Engine::prime_seconds(const Settings& s) {
     constexpr double kTimeConstantsTo60Db = 6.908;  // ln(1000)
     double smoothing_ms = std::max({s[P::amplitude_smoothing_ms], s[P::frequency_smoothing_ms],
