@@ -34,11 +34,13 @@ def energy(x):
 
 
 # Each pulse's amplitude is read from the analysis frame its onset lands on, so where the hop grid
-# (analysis.hop_ms, 1.45 ms: 64 samples here) falls on the file moves the render's level (by about
-# 2.5 dB on the Amen break): the file rendered after 0, 8, ..., 56 samples of silence gives the
-# range the live level may take.
+# (analysis.hop_ms, 64 samples here at the default preset) falls on the file moves the render's
+# level (by about 2.5 dB on the Amen break): the file rendered after 0, 8, 16, ... samples of
+# silence, across one hop, gives the range the live level may take.
 amen, amen_rate = soundfile.read(AMEN, dtype="float32")
-hop_samples = int(round(0.00145 * amen_rate))
+shown = jack.run([tactus, "presets", "--show", "music"]).stdout
+hop_samples = int(round(float(re.search(r"analysis\.hop_ms\s+([\d.]+)", shown).group(1)) * 1e-3 *
+                        amen_rate))
 phase_levels_db = []
 for delay in range(0, hop_samples, 8):
     shifted_path, out_path = os.path.join(d, "shifted.wav"), os.path.join(d, "shifted-render.wav")

@@ -113,7 +113,7 @@ void cascade_each(Biquad* sections, int count, Input input, Sink sink) noexcept 
 
 namespace detail {
 template <int N>
-TACTUS_VECTOR_CLONES void run(Biquad* sections, float* samples, int count, double gain) noexcept {
+void run(Biquad* sections, float* samples, int count, double gain) noexcept {
     cascade_each<N>(
         sections, count, [&](int i) { return samples[i] * gain; },
         [&](int i, double y) { samples[i] = static_cast<float>(y); });

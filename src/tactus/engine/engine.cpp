@@ -253,10 +253,10 @@ double Engine::prime_seconds(const Settings& s) {
     constexpr double kTimeConstantsTo60Db = 6.908;  // ln(1000)
     double smoothing_ms = std::max({s[P::amplitude_smoothing_ms], s[P::frequency_smoothing_ms],
                                     s[P::square_mix_smoothing_ms]});
-    if (s[P::flutter_weight] > 0)
+    if (flutter_enabled(s))
         smoothing_ms = std::max(
             {smoothing_ms, s[P::flutter_level_smoothing_ms], s[P::flutter_rate_smoothing_ms]});
-    if (s[P::pressure_weight] > 0)
+    if (pressure_enabled(s))
         smoothing_ms = std::max(smoothing_ms, s[P::pressure_level_smoothing_ms]);
     const double analysis_ms = s[P::analysis_window_ms] + s[P::loudness_window_ms] +
                                s[P::onset_window_ms] + s[P::onset_history_ms] +
