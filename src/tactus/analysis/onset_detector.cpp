@@ -29,15 +29,20 @@ void OnsetDetector::prepare(const ProcessSpec& spec, int hop_samples, const Onse
     hop_samples_ = hop_samples;
     stft_.prepare(nearest_fft_size(ms_to_samples(s.window_ms, sample_rate_hz)), sample_rate_hz);
     bins_ = stft_.bins();
-    lag_frames_ =
-        std::max(1, static_cast<int>(std::lround(kLagMs * 1e-3 * sample_rate_hz / hop_samples)));
+    const auto frames_in = [&](double ms) {
+        return std::max(1, static_cast<int>(std::lround(ms * 1e-3 * sample_rate_hz / hop_samples)));
+    };
+    lag_frames_ = frames_in(kLagMs);
+    span_frames_ = std::max(lag_frames_, frames_in(kSpanMs));
+    reference_.assign(static_cast<size_t>(stft_.bins()), 0.0f);
     past_log_.assign(static_cast<size_t>(past_frames()) * static_cast<size_t>(bins_), 0.0f);
     const double band_lags_ms[2] = {kLowBandLagMs, kLagMs};
+    const double band_spans_ms[2] = {kLowBandSpanMs, 2 * kLagMs};
     for (size_t b = 0; b < bands_.size(); ++b) {
-        bands_[b].lag_frames = std::max(
-            1,
-            static_cast<int>(std::lround(band_lags_ms[b] * 1e-3 * sample_rate_hz / hop_samples)));
-        bands_[b].past.assign(2 * static_cast<size_t>(bands_[b].lag_frames), 0.0f);
+        bands_[b].lag_frames = frames_in(band_lags_ms[b]);
+        bands_[b].past.assign(
+            static_cast<size_t>(std::max(2 * bands_[b].lag_frames, frames_in(band_spans_ms[b]))),
+            0.0f);
     }
     rise_.assign(static_cast<size_t>(stft_.bins()), 0.0f);
     const auto history_frames =
@@ -78,22 +83,28 @@ TACTUS_VECTOR_CLONES OnsetDecision
 OnsetDetector::analyse(const SampleHistory& history, std::array<double, 2> band_power) noexcept {
     stft_.analyse(history);
     const auto& magnitudes = stft_.magnitudes();
-    // Rise over the louder of the frames one and two lags back (SuperFlux's temporal maximum,
-    // Böck & Widmer 2013): a noise bin must beat both to count, a new sound beats both. The ring
-    // slot at past_position_ holds the frame two lags back; it takes this frame's.
+    // Rise over the loudest of the frames one lag to kSpanMs back (SuperFlux's temporal maximum,
+    // Böck & Widmer 2013, held over a bass note's period): a noise bin, or a low note's bin
+    // swelling as the short window slides along its period, must beat them all to count; a new
+    // sound beats them all. The ring slot at past_position_ holds the oldest frame; it takes
+    // this frame's.
     const int frames = past_frames();
     const auto slot = [&](int frames_back) {
         return past_log_.data() +
                static_cast<size_t>((past_position_ + frames - frames_back) % frames) *
                    static_cast<size_t>(bins_);
     };
-    const float* one_lag = slot(lag_frames_);
-    float* two_lags = slot(frames);
+    float* oldest = slot(frames);
+    std::copy(oldest, oldest + bins_, reference_.data());
+    for (int back = lag_frames_; back < frames; ++back) {
+        const float* past = slot(back);
+        for (int k = 0; k < bins_; ++k) reference_[k] = std::max(reference_[k], past[k]);
+    }
     for (int k = 0; k < bins_; ++k) {
         const float log_magnitude =
             fast_log(1.0f + static_cast<float>(kLogCompression) * magnitudes[k]);
-        rise_[k] = std::max(0.0f, log_magnitude - std::max(one_lag[k], two_lags[k]));
-        two_lags[k] = log_magnitude;
+        rise_[k] = std::max(0.0f, log_magnitude - reference_[k]);
+        oldest[k] = log_magnitude;
     }
     past_position_ = (past_position_ + 1) % frames;
     // Each band as `weight` more bins, its power read as a sine's amplitude sqrt(2 P).
@@ -125,10 +136,10 @@ OnsetDetector::analyse(const SampleHistory& history, std::array<double, 2> band_
 }
 
 float OnsetDetector::BandRing::rise(float log_power) noexcept {
-    const int frames = static_cast<int>(past.size());  // the slot at position: two lags back
-    const float louder =
-        std::max(past[static_cast<size_t>((position + frames - lag_frames) % frames)],
-                 past[static_cast<size_t>(position)]);
+    const int frames = static_cast<int>(past.size());  // the slot at position: the oldest
+    float louder = past[static_cast<size_t>(position)];
+    for (int back = lag_frames; back < frames; ++back)
+        louder = std::max(louder, past[static_cast<size_t>((position + frames - back) % frames)]);
     past[static_cast<size_t>(position)] = log_power;
     position = (position + 1) % frames;
     return std::max(0.0f, log_power - louder);

@@ -1,7 +1,7 @@
 // Causal onset detection (the role of bonk~ in the paper, §6).
 // Detection function: log-compressed spectral flux of a short-window STFT, i.e. the mean over
-// bins of the half-wave rectified rise of log(1 + gamma |X|) over the louder of the frames
-// kLagMs and 2 kLagMs before (Klapuri 1999; Böck & Widmer 2013 for the log compression and the
+// bins of the half-wave rectified rise of log(1 + gamma |X|) over the loudest of the frames
+// kLagMs to kSpanMs before (Klapuri 1999; Böck & Widmer 2013 for the log compression and the
 // temporal maximum). The lags are in time, not frames: a shorter hop samples the same function
 // more often, so it decides sooner with the same thresholds. Peak picking is causal: an onset is
 // decided the first frame the flux exceeds an adaptive threshold, threshold + ratio * mean of the
@@ -43,8 +43,16 @@ class OnsetDetector {
   public:
     // Two default hops (1.45 ms), where the thresholds were tuned.
     static constexpr double kLagMs = 2.9;
+    // A period of a 67 Hz bass note: the 10 ms window sees a part of a low note's period, so its
+    // bins swell and fade each period and a reference only 2 lags back reads each swell as a
+    // rise (onsets in music at a 0 dB bed, eval/results.md: precision 0.79-0.86 with the frames
+    // 2.9 and 5.8 ms back, 0.88-0.92 with these).
+    static constexpr double kSpanMs = 15;
     // The low band's: a kick's body takes a quarter period or so to rise (16 ms at 60 Hz).
     static constexpr double kLowBandLagMs = 8.7;
+    // Its rise is over the loudest of its frames back to a 29 Hz period: the band's power swells
+    // and fades with its lowest notes' periods and a rumble's slow beats (a rumble's onsets).
+    static constexpr double kLowBandSpanMs = 35;
 
     void prepare(const ProcessSpec& spec, int hop_samples, const OnsetSettings& settings);
     void reset() noexcept;
@@ -65,15 +73,16 @@ class OnsetDetector {
     StftFrame stft_;
     std::vector<float> rise_, segment_;  // rise_: per bin, this frame
     std::vector<float> past_log_;        // the last past_frames() frames, bins_ each, a ring
-    // The bands' log power over their own lags (BandRing::lag_frames and twice it), a ring each.
+    std::vector<float> reference_;       // per bin, the loudest of the frames the rise is over
+    // The bands' log power over their own lags (BandRing::lag_frames to its span), a ring each.
     struct BandRing {
         std::vector<float> past;
         int lag_frames = 1, position = 0;
-        float rise(float log_power) noexcept;  // over the louder of the two lags; stores it
+        float rise(float log_power) noexcept;  // over the loudest of its lags; stores it
     };
     std::array<BandRing, 2> bands_;  // low, high
-    int past_frames() const { return 2 * lag_frames_; }
-    int lag_frames_ = 1, past_position_ = 0;
+    int past_frames() const { return span_frames_; }
+    int lag_frames_ = 1, span_frames_ = 2, past_position_ = 0;
     std::vector<double> flux_history_, scratch_, block_energy_;
     size_t history_position_ = 0;
     int hop_samples_ = 0, sub_block_samples_ = 0, bins_ = 0;

@@ -56,7 +56,7 @@ constexpr auto kTable = joined_rows(
      "YIN absolute threshold on the cumulative-mean-normalised difference"},
     {P::onset_window_ms, 7, "onset.window_ms", "ms", real, 2, 50, 10, log, structural, 0,
      "STFT window of the onset detection function (short, for low latency; nearest fast FFT size)"},
-    {P::onset_threshold, 8, "onset.threshold", "", real, 0, 100, 12, lin, live, 0,
+    {P::onset_threshold, 8, "onset.threshold", "", real, 0, 100, 11, lin, live, 0,
      "fixed part of the adaptive threshold on the log spectral flux"},
     {P::onset_ratio, 9, "onset.ratio", "", real, 0, 10, 1.25, lin, live, 0,
      "multiple of the recent mean flux the flux must exceed to be an onset"},
