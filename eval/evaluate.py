@@ -12,7 +12,8 @@ frequency ratio, hit gain -> pulse peak Spearman rho, share of output energy in 
 output peak, silence in -> silence out, felt snare/kick in the breakbeats, and the time from
 each hit's true onset to the output
 reaching half its pulse peak, each as felt (eval/felt.py) and raw, with a summary up front; then Sonic Pi's Amen break at every sample rate from 16 to 192 kHz
-(eval/sample_rates.py), and the corpus through each shipped actuator profile
+(eval/sample_rates.py), held synth notes at bass and lead pitches (eval/held_notes.py), and
+the corpus through each shipped actuator profile
 (eval/actuators.py). The same measures follow on a held-out corpus: General MIDI drum
 kits from three Debian soundfonts (eval/gm_kits.py), which no parameter was tuned on. Last, drums
 inside music (eval/music.py): full mixes with exact drum truth (eval/music_corpus.py), a tuning
@@ -35,6 +36,7 @@ import soundfile
 import actuators
 import felt
 import gm_kits
+import held_notes
 import music
 import sample_rates
 from shared import AUBIO_ARGS, band_share, read_hits, run
@@ -277,6 +279,8 @@ def main():
     lines += [f"- digital silence in -> exact silence out: {'yes' if silence_exact else 'NO'}", ""]
     lines += sample_rates.section(sample_rates.measure(args.build_dir, work / "sample-rates",
                                                        args.preset)) + [""]
+    lines += held_notes.section(held_notes.measure(args.build_dir, work / "held-notes",
+                                                   args.preset)) + [""]
     lines += actuators.evaluate(args.build_dir, work / "sonic-pi" / "corpus", work / "actuators",
                                 args.preset) + [""]
     if args.held_out == "gm":
