@@ -4,7 +4,7 @@
 // kLagMs to kSpanMs before (Klapuri 1999; Böck & Widmer 2013 for the log compression and the
 // temporal maximum). The lags are in time, not frames: a shorter hop samples the same function
 // more often, so it decides sooner with the same thresholds. Peak picking is causal: an onset is
-// decided the first frame the flux exceeds an adaptive threshold, threshold + ratio * mean of the
+// decided the first frame the flux exceeds an adaptive threshold, threshold + ratio * median of the
 // recent flux, at least min_interval after the previous onset; it re-arms when the flux falls back
 // below the threshold. The onset time is then refined in the time domain to the sub-millisecond
 // block with the largest energy rise in the newest window.
@@ -51,7 +51,7 @@ class OnsetDetector {
     // The low band's: a kick's body takes a quarter period or so to rise (16 ms at 60 Hz).
     static constexpr double kLowBandLagMs = 8.7;
     // Its rise is over the loudest of its frames back to a 29 Hz period: the band's power swells
-    // and fades with its lowest notes' periods and a rumble's slow beats (a rumble's onsets).
+    // and fades with its lowest notes' periods and with a rumble's slow beats, not hits.
     static constexpr double kLowBandSpanMs = 35;
 
     void prepare(const ProcessSpec& spec, int hop_samples, const OnsetSettings& settings);
