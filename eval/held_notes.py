@@ -10,16 +10,13 @@ line for each. The short onset window sees a part of a low note's period, and th
 crossing the wave's step each period reads as a rise (src/tactus/analysis/onset_detector.hpp,
 kSpanMs); with `onset.min_interval_ms` 50 a note that re-triggers every period gives about 55.
 """
-import argparse
-import pathlib
 import sys
-import tempfile
 
 import numpy as np
 import scipy.signal
 import soundfile
 
-from shared import run
+from shared import onset_times_s, section_main
 
 RATE_HZ = 48000
 PITCHES_HZ = (41.2, 55.0, 65.4, 82.4, 110.0, 146.8, 220.0, 440.0)  # E1 A1 C2 E2 A2 D3 A3 A4
@@ -52,8 +49,7 @@ def measure(build_dir, work, preset="music"):
                 x = scipy.signal.sosfilt(low_pass, sawtooth(hz))
             wav = work / f"sawtooth-{hz:g}-{name}.wav"
             soundfile.write(wav, x, RATE_HZ, subtype="FLOAT")
-            out = run([tactus, "onsets", str(wav), "--preset", preset]).stdout
-            counts.append(sum(1 for line in out.splitlines() if line.strip()))
+            counts.append(len(onset_times_s(tactus, wav, preset)))
         rows.append({"pitch": hz, "full": counts[0], "low": counts[1]})
     return rows
 
@@ -70,16 +66,5 @@ def section(rows):
     return lines
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("build_dir", type=pathlib.Path)
-    parser.add_argument("--work", type=pathlib.Path, default=None)
-    parser.add_argument("--preset", default="music")
-    args = parser.parse_args()
-    work = args.work or pathlib.Path(tempfile.mkdtemp(prefix="tactus-held-"))
-    print("\n".join(section(measure(args.build_dir, work, args.preset))))
-    return 0
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(section_main(__doc__, measure, section, "tactus-held-"))

@@ -10,11 +10,9 @@ pulses (onsets the render answers with a felt pulse), and for each 44.1 kHz onse
 (eval/felt.py, measured from that onset in both renders) its frequency and peak, the worst
 deviations over all pulses; then each render's output peak.
 """
-import argparse
 import math
 import pathlib
 import sys
-import tempfile
 
 import mir_eval
 import numpy as np
@@ -22,18 +20,13 @@ import scipy.signal
 import soundfile
 
 import felt
-from shared import run
+from shared import onset_times_s, run, section_main
 
 AMEN = pathlib.Path("/usr/share/sonic-pi/samples/loop_amen_full.flac")
 REFERENCE_HZ = 44100
 RATES_HZ = (16000, 22050, 32000, 44100, 48000, 88200, 96000, 176400, 192000)
 MATCH_S = 0.001
 PULSE_FLOOR_DB = -40  # a pulse: a felt peak within this of the render's loudest
-
-
-def onsets_s(tactus, wav, preset):
-    text = run([tactus, "onsets", wav, "--preset", preset]).stdout
-    return np.array([float(line.split()[0]) for line in text.splitlines() if line.strip()])
 
 
 def measure(build_dir, work, preset="music"):
@@ -54,7 +47,7 @@ def measure(build_dir, work, preset="music"):
         out = work / f"amen-{hz}.vibration.wav"
         run([tactus, "render", str(wav), "-o", str(out), "--force", "--preset", preset])
         vibration, _ = soundfile.read(out, dtype="float64", always_2d=True)
-        runs[hz] = (onsets_s(tactus, wav, preset), vibration[:, 0])
+        runs[hz] = (onset_times_s(tactus, wav, preset), vibration[:, 0])
     reference_onsets, reference_out = runs[REFERENCE_HZ]
     reference = felt.pulses(reference_out, REFERENCE_HZ, reference_onsets)
     rows = []
@@ -92,16 +85,5 @@ def section(rows):
     return lines
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("build_dir", type=pathlib.Path)
-    parser.add_argument("--work", type=pathlib.Path, default=None)
-    parser.add_argument("--preset", default="music")
-    args = parser.parse_args()
-    work = args.work or pathlib.Path(tempfile.mkdtemp(prefix="tactus-rates-"))
-    print("\n".join(section(measure(args.build_dir, work, args.preset))))
-    return 0
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(section_main(__doc__, measure, section, "tactus-rates-"))

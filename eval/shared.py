@@ -1,6 +1,10 @@
 """What the evaluation scripts share: running a tool, aubioonset's parameters, reading a corpus
-file's hits, and the share of a render's energy inside a band."""
+file's hits, `tactus onsets`' times, the share of a render's energy inside a band, and the command
+line of a script that prints one section of the report."""
+import argparse
+import pathlib
 import subprocess
+import tempfile
 
 import numpy as np
 
@@ -20,9 +24,28 @@ def read_hits(path):
     return [(float(t), instrument, float(g)) for t, instrument, g in rows]
 
 
+def onset_times_s(tactus, wav, preset):
+    """The onset times `tactus onsets` prints for `wav`."""
+    text = run([tactus, "onsets", wav, "--preset", preset]).stdout
+    return np.array([float(line.split()[0]) for line in text.splitlines() if line.strip()])
+
+
 def band_share(y, rate, low_hz=20.0, high_hz=1000.0):
     """The share of `y`'s energy within [low_hz, high_hz] (silence: all of it)."""
     power = np.abs(np.fft.rfft(y)) ** 2
     freqs = np.fft.rfftfreq(len(y), 1.0 / rate)
     total = power.sum()
     return 1.0 if total == 0 else power[(freqs >= low_hz) & (freqs <= high_hz)].sum() / total
+
+
+def section_main(doc, measure, section, work_prefix):
+    """`SCRIPT BUILD_DIR [--work DIR] [--preset NAME]`: prints section(measure(build dir, work,
+    preset)); the work folder a new temporary one unless given."""
+    parser = argparse.ArgumentParser(description=doc.splitlines()[0])
+    parser.add_argument("build_dir", type=pathlib.Path)
+    parser.add_argument("--work", type=pathlib.Path, default=None)
+    parser.add_argument("--preset", default="music")
+    args = parser.parse_args()
+    work = args.work or pathlib.Path(tempfile.mkdtemp(prefix=work_prefix))
+    print("\n".join(section(measure(args.build_dir, work, args.preset))))
+    return 0

@@ -32,19 +32,15 @@ void OnsetDetector::prepare(const ProcessSpec& spec, int hop_samples, const Onse
     const auto frames_in = [&](double ms) {
         return std::max(1, static_cast<int>(std::lround(ms * 1e-3 * sample_rate_hz / hop_samples)));
     };
-    lag_frames_ = frames_in(kLagMs);
-    span_frames_ = std::max(lag_frames_, frames_in(kSpanMs));
-    reference_.assign(static_cast<size_t>(stft_.bins()), 0.0f);
-    past_log_.assign(static_cast<size_t>(past_frames()) * static_cast<size_t>(bins_), 0.0f);
+    bins_max_.prepare(bins_, frames_in(kLagMs), frames_in(kSpanMs));
     const double band_lags_ms[2] = {kLowBandLagMs, kLagMs};
     const double band_spans_ms[2] = {kLowBandSpanMs, 2 * kLagMs};
     for (size_t b = 0; b < bands_.size(); ++b) {
-        bands_[b].lag_frames = frames_in(band_lags_ms[b]);
-        bands_[b].past.assign(
-            static_cast<size_t>(std::max(2 * bands_[b].lag_frames, frames_in(band_spans_ms[b]))),
-            0.0f);
+        const int lag = frames_in(band_lags_ms[b]);
+        bands_[b].prepare(1, lag, std::max(2 * lag, frames_in(band_spans_ms[b])));
     }
-    rise_.assign(static_cast<size_t>(stft_.bins()), 0.0f);
+    log_magnitudes_.assign(static_cast<size_t>(bins_), 0.0f);
+    rise_.assign(static_cast<size_t>(bins_), 0.0f);
     const auto history_frames =
         std::max<int64_t>(1, std::llround(s.history_ms * 1e-3 * sample_rate_hz / hop_samples));
     flux_history_.assign(static_cast<size_t>(history_frames), 0.0);
@@ -67,12 +63,8 @@ void OnsetDetector::set_thresholds(const OnsetSettings& s) noexcept {
 }
 
 void OnsetDetector::reset() noexcept {
-    std::fill(past_log_.begin(), past_log_.end(), 0.0f);
-    for (auto& band : bands_) {  // silence before the stream: at the floor
-        std::fill(band.past.begin(), band.past.end(), band_log(0.0));
-        band.position = 0;
-    }
-    past_position_ = 0;
+    bins_max_.fill(0.0f);
+    for (auto& band : bands_) band.fill(band_log(0.0));  // silence before the stream: the floor
     std::fill(flux_history_.begin(), flux_history_.end(), 0.0);
     history_position_ = 0;
     last_onset_sample_ = INT64_MIN / 2;
@@ -83,30 +75,11 @@ TACTUS_VECTOR_CLONES OnsetDecision
 OnsetDetector::analyse(const SampleHistory& history, std::array<double, 2> band_power) noexcept {
     stft_.analyse(history);
     const auto& magnitudes = stft_.magnitudes();
-    // Rise over the loudest of the frames one lag to kSpanMs back (SuperFlux's temporal maximum,
-    // Böck & Widmer 2013, held over a bass note's period): a noise bin, or a low note's bin
-    // swelling as the short window slides along its period, must beat them all to count; a new
-    // sound beats them all. The ring slot at past_position_ holds the oldest frame; it takes
-    // this frame's.
-    const int frames = past_frames();
-    const auto slot = [&](int frames_back) {
-        return past_log_.data() +
-               static_cast<size_t>((past_position_ + frames - frames_back) % frames) *
-                   static_cast<size_t>(bins_);
-    };
-    float* oldest = slot(frames);
-    std::copy(oldest, oldest + bins_, reference_.data());
-    for (int back = lag_frames_; back < frames; ++back) {
-        const float* past = slot(back);
-        for (int k = 0; k < bins_; ++k) reference_[k] = std::max(reference_[k], past[k]);
-    }
-    for (int k = 0; k < bins_; ++k) {
-        const float log_magnitude =
-            fast_log(1.0f + static_cast<float>(kLogCompression) * magnitudes[k]);
-        rise_[k] = std::max(0.0f, log_magnitude - reference_[k]);
-        oldest[k] = log_magnitude;
-    }
-    past_position_ = (past_position_ + 1) % frames;
+    // Each bin's rise over the loudest it was 1 lag to kSpanMs back: a low note's bin swelling as
+    // the short window slides along its period must beat its whole period to count.
+    for (int k = 0; k < bins_; ++k)
+        log_magnitudes_[k] = fast_log(1.0f + static_cast<float>(kLogCompression) * magnitudes[k]);
+    bins_max_.rise(log_magnitudes_.data(), rise_.data());
     // Each band as `weight` more bins, its power read as a sine's amplitude sqrt(2 P).
     const double weights[2] = {settings_.low_weight, settings_.high_weight};
     double bands_rise = 0;
@@ -133,16 +106,6 @@ OnsetDetector::analyse(const SampleHistory& history, std::array<double, 2> band_
         decision.onset_sample = refine_onset_sample(history);
     }
     return decision;
-}
-
-float OnsetDetector::BandRing::rise(float log_power) noexcept {
-    const int frames = static_cast<int>(past.size());  // the slot at position: the oldest
-    float louder = past[static_cast<size_t>(position)];
-    for (int back = lag_frames; back < frames; ++back)
-        louder = std::max(louder, past[static_cast<size_t>((position + frames - back) % frames)]);
-    past[static_cast<size_t>(position)] = log_power;
-    position = (position + 1) % frames;
-    return std::max(0.0f, log_power - louder);
 }
 
 // The sub-block with the largest energy rise over its predecessor, within the newest window and

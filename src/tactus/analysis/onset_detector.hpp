@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "tactus/analysis/stft_frame.hpp"
+#include "tactus/analysis/temporal_max.hpp"
 #include "tactus/dsp/process_spec.hpp"
 #include "tactus/dsp/sample_history.hpp"
 
@@ -71,18 +72,9 @@ class OnsetDetector {
     OnsetSettings settings_;
     double sample_rate_hz_ = 48000;
     StftFrame stft_;
-    std::vector<float> rise_, segment_;  // rise_: per bin, this frame
-    std::vector<float> past_log_;        // the last past_frames() frames, bins_ each, a ring
-    std::vector<float> reference_;       // per bin, the loudest of the frames the rise is over
-    // The bands' log power over their own lags (BandRing::lag_frames to its span), a ring each.
-    struct BandRing {
-        std::vector<float> past;
-        int lag_frames = 1, position = 0;
-        float rise(float log_power) noexcept;  // over the loudest of its lags; stores it
-    };
-    std::array<BandRing, 2> bands_;  // low, high
-    int past_frames() const { return span_frames_; }
-    int lag_frames_ = 1, span_frames_ = 2, past_position_ = 0;
+    std::vector<float> log_magnitudes_, rise_, segment_;  // the first two: per bin, this frame
+    TemporalMax bins_max_;              // the bins' log magnitudes, kLagMs to kSpanMs back
+    std::array<TemporalMax, 2> bands_;  // low, high: their log power over their own lags
     std::vector<double> flux_history_, scratch_, block_energy_;
     size_t history_position_ = 0;
     int hop_samples_ = 0, sub_block_samples_ = 0, bins_ = 0;
