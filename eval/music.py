@@ -397,7 +397,7 @@ def section(result):
         "one-to-one to a drum hit within +-50 ms: the share naming the hit's part, per "
         "true part and overall; where hits coincide the true part is the first of kick, "
         "snare, hat among them. n/a: tactus prints no part. The part model "
-        "(src/tactus/analysis/part_model.hpp) is fitted on the tuning part only; "
+        "(src/tactus/analysis/part_model.hpp) is fitted on the tuning parts only; "
         "`eval/fit_parts.py BUILD_DIR --work DIR` re-runs this table alone (about 10 s on "
         "a built corpus) and `--write-header` refits it; it also prints the model fitted "
         "with two tuning kits left out at a time, measured on them.",

@@ -27,15 +27,18 @@ constexpr double kTopEdgeHz = 4000;
 constexpr double kHatAboveShare = 0.15, kHatLowShare = 0.2;
 constexpr double kKickLowPerMid = 1.0, kKickLowShare = 0.2;
 
-// The part model (analysis/part_model.hpp): the features and their pairwise products,
-// standardised; the class of the largest linear score.
+// The part model (analysis/part_model.hpp): the hit's own numbers and their pairwise products,
+// then its numbers relative to the recent hits, standardised; the class of the largest linear
+// score.
 DrumPart modelled_part(std::span<const float> x) noexcept {
     using namespace part_model;
+    constexpr size_t kOwn = PartFeatures::kOwn;
     std::array<float, kTerms> z{};
     size_t t = 0;
-    for (const float v : x) z[t++] = v;
-    for (size_t i = 0; i < x.size(); ++i)
-        for (size_t j = i; j < x.size(); ++j) z[t++] = x[i] * x[j];
+    for (size_t i = 0; i < kOwn; ++i) z[t++] = x[i];
+    for (size_t i = 0; i < kOwn; ++i)
+        for (size_t j = i; j < kOwn; ++j) z[t++] = x[i] * x[j];
+    for (size_t i = kOwn; i < x.size(); ++i) z[t++] = x[i];
     for (size_t k = 0; k < z.size(); ++k) z[k] = (z[k] - kMean[k]) / kScale[k];
     int best = 0;
     double best_score = 0;
@@ -78,6 +81,7 @@ void HitAnalysis::set_live(const HitSettings& settings) noexcept {
 
 void HitAnalysis::reset() noexcept {
     for (AddedSpectrum* each : {&loudness_, &low_, &high_, &fast_, &fine_}) each->reset();
+    features_.reset();
     hit_start_ = -1;
     level_db_ = peak_db_ = kSilentDb;
     brightness_hz_ = 0;

@@ -31,7 +31,12 @@ void PartFeatures::prepare(SpectrumShape fast, SpectrumShape fine) {
             bin_of(fine, kLowestHz * std::pow(top_hz / kLowestHz, double(b) / kFineBands));
     fast_edges_ = {bin_of(fast, BandPower::kLowEdgeHz), bin_of(fast, 1000), bin_of(fast, 4000),
                    fast.bins};
+    reset();
+}
+
+void PartFeatures::reset() noexcept {
     values_.fill(0.0f);
+    has_recent_ = false;
 }
 
 bool PartFeatures::compute(const Added& a) noexcept {
@@ -64,6 +69,13 @@ bool PartFeatures::compute(const Added& a) noexcept {
     values_[v++] = static_cast<float>(std::clamp(
         std::log10((fine_total + kTinyPower) / (bed + kTinyPower)), -kRiseLimit, kRiseLimit));
     values_[v++] = static_cast<float>(a.decay_db / 10);
+    // The first hit of a song is its own recent mean.
+    if (!has_recent_) std::copy_n(values_.begin(), kOwn, recent_.begin());
+    has_recent_ = true;
+    for (size_t i = 0; i < kOwn; ++i) {
+        values_[kOwn + i] = values_[i] - recent_[i];
+        recent_[i] += values_[kOwn + i] / static_cast<float>(kRecentHits);
+    }
     return true;
 }
 

@@ -9,8 +9,12 @@
 //   the spectral flatness of the added power above 150 Hz (ln of geometric over arithmetic mean:
 //   noise 0, a tone far below), which tells a snare's wires from a chord's partials;
 //   how far the hit rises above what was sounding (log10 of added over bed power, clipped);
-//   how much it has decayed from its strongest reading (dB / 10), a hat's short, a tom's long.
-// Audio thread: compute(); prepare() sets band edges only.
+//   how much it has decayed from its strongest reading (dB / 10), a hat's short, a tom's long;
+// then the same numbers less their mean over the song's recent hits (exponential, over about
+// kRecentHits), so a kit is read against itself: one kit's snare sits below 150 Hz as another's
+// kick does, but above its own kick (as real-time drum transcription adapts its templates to the
+// kit playing: Dittmar & Gartner 2014, semi-adaptive NMF).
+// Audio thread: compute(), reset(); prepare() sets band edges only.
 #pragma once
 
 #include <array>
@@ -27,7 +31,11 @@ struct SpectrumShape {
 class PartFeatures {
   public:
     static constexpr int kFineBands = 7;
-    static constexpr int kCount = kFineBands + 2 + 3 + 3;
+    static constexpr int kOwn = kFineBands + 2 + 3 + 3;  // the hit's own numbers
+    static constexpr int kCount = 2 * kOwn;              // then relative to the recent hits
+    // The recent hits' mean moves 1/kRecentHits of the way to each hit (eval/fit_parts.py:
+    // chosen among 3-8 on the tuning part with two kits left out at a time).
+    static constexpr double kRecentHits = 4;
 
     struct Added {
         std::span<const float> fast, fine, fine_bed;  // power spectra: added, and the bed's
@@ -36,6 +44,7 @@ class PartFeatures {
     };
 
     void prepare(SpectrumShape fast, SpectrumShape fine);
+    void reset() noexcept;  // a new song: no recent hits
     // false: the hit added nothing (the features are left as they were).
     bool compute(const Added& added) noexcept;
     std::span<const float> values() const { return values_; }
@@ -44,6 +53,8 @@ class PartFeatures {
     std::array<int, kFineBands + 1> fine_edges_{};
     std::array<int, 4> fast_edges_{};  // 150 Hz, 1 kHz, 4 kHz, top
     std::array<float, kCount> values_{};
+    std::array<float, kOwn> recent_{};  // the recent hits' mean of the own numbers
+    bool has_recent_ = false;
 };
 
 }  // namespace tactus
