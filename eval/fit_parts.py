@@ -16,7 +16,8 @@ the figures).
 The model: multinomial logistic regression (kick, snare, hat) on a hit's own features and their
 pairwise products (quadratic terms) and, linearly, its features less the song's recent hits' mean
 (PartFeatures::kRecentHits; 3, 4, 6 and 8 measured with two Sonic Pi kits left out: 0.720-0.724
-over the bed levels, against 0.706 without them), standardised, L2-penalised (L2 from 1e-3, 1e-2,
+over the bed levels, against 0.706 without them; 2 to 8 with two of both tuning parts' kits left
+out: 0.790-0.796), standardised, L2-penalised (L2 from 1e-3, 1e-2,
 3e-2 and 1e-1 with two tuning kits left out), classes weighted to equal total weight,
 fitted on the onsets matched to a drum hit in the tuning parts only (every bed level), in their
 mixes and their isolated hits (without these a kick or a snare played alone, whose numbers equal

@@ -43,10 +43,9 @@ def measure(build_dir, work, preset="music"):
     low_pass = scipy.signal.butter(2, LOW_PASS_HZ, fs=RATE_HZ, output="sos")
     rows = []
     for hz in PITCHES_HZ:
+        note = sawtooth(hz)
         counts = []
-        for name, x in (("full", sawtooth(hz)), ("low-passed", None)):
-            if x is None:
-                x = scipy.signal.sosfilt(low_pass, sawtooth(hz))
+        for name, x in (("full", note), ("low-passed", scipy.signal.sosfilt(low_pass, note))):
             wav = work / f"sawtooth-{hz:g}-{name}.wav"
             soundfile.write(wav, x, RATE_HZ, subtype="FLOAT")
             counts.append(len(onset_times_s(tactus, wav, preset)))

@@ -33,8 +33,8 @@ class PartFeatures {
     static constexpr int kFineBands = 7;
     static constexpr int kOwn = kFineBands + 2 + 3 + 3;  // the hit's own numbers
     static constexpr int kCount = 2 * kOwn;              // then relative to the recent hits
-    // The recent hits' mean moves 1/kRecentHits of the way to each hit (eval/fit_parts.py:
-    // chosen among 3-8 on the tuning part with two kits left out at a time).
+    // The recent hits' mean moves 1/kRecentHits of the way to each hit (eval/fit_parts.py: 2 to
+    // 8 read alike with two tuning kits left out at a time).
     static constexpr double kRecentHits = 4;
 
     struct Added {

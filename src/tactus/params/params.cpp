@@ -61,7 +61,7 @@ constexpr auto kTable = joined_rows(
     {P::onset_ratio, 9, "onset.ratio", "", real, 0, 10, 1.25, lin, live, 0,
      "multiple of the recent median flux the flux must exceed to be an onset"},
     {P::onset_history_ms, 10, "onset.history_ms", "ms", real, 10, 2000, 60, log, structural, 0,
-     "length of the flux history the adaptive threshold averages"},
+     "length of the flux history whose median the adaptive threshold takes"},
     {P::onset_min_interval_ms, 11, "onset.min_interval_ms", "ms", real, 5, 500, 50, log, live, 0,
      "shortest time between two onsets"},
     // Mapping (paper §6): features -> the vibration program.
