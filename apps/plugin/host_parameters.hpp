@@ -8,7 +8,7 @@
 // engine's own lock-free queue, where they glide (live) or crossfade in (structural).
 //
 // Values are doubles, as the table's; hosts speak float. A host value that rounds to the same
-// float as the value held is no change, so a table default (23.2 ms) or a restored state's
+// float as the value held is no change, so a table default (1.45 ms) or a restored state's
 // value survives a host that echoes it back as a float, bit for bit.
 #pragma once
 

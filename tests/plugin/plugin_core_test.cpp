@@ -60,16 +60,16 @@ TEST(PluginParams, HostValuesAreClampedAndWholeWhereTheTableSays) {
 
 TEST(HostParameters, AFloatEchoKeepsTheDoubleAndAChangeIsTakenOnce) {
     HostParameters host;
-    const P window = P::analysis_window_ms;  // 23.2: not a float
-    host.set_from_host(window, static_cast<float>(spec(window).default_value));
+    const P hop = P::analysis_hop_ms;  // 1.45: not a float
+    host.set_from_host(hop, static_cast<float>(spec(hop).default_value));
     EXPECT_FALSE(host.changed());
-    EXPECT_EQ(host.value(window), spec(window).default_value);
-    host.set_from_host(window, 30.0f);
+    EXPECT_EQ(host.value(hop), spec(hop).default_value);
+    host.set_from_host(hop, 3.0f);
     EXPECT_TRUE(host.changed());
     std::vector<std::pair<P, double>> taken;
     host.for_each_marked([&](P id, double v) { taken.emplace_back(id, v); });
     ASSERT_EQ(taken.size(), 1u);
-    EXPECT_EQ(taken[0], std::make_pair(window, 30.0));
+    EXPECT_EQ(taken[0], std::make_pair(hop, 3.0));
     host.for_each_marked([&](P id, double v) { taken.emplace_back(id, v); });
     EXPECT_EQ(taken.size(), 1u);
 }

@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "tactus/core/units.hpp"
+#include "tactus/core/vector_clones.hpp"
 #include "tactus/dsp/real_fft.hpp"
 #include "tactus/dsp/sanitize.hpp"
 
@@ -125,7 +126,8 @@ void Analyzer::reset() noexcept {
     frames_ = 0;
 }
 
-bool Analyzer::process(const float* samples, const float* power, int count) noexcept {
+TACTUS_VECTOR_CLONES bool Analyzer::process(const float* samples, const float* power,
+                                            int count) noexcept {
     for (int i = 0; i < count; ++i) clean_[i] = sanitized(samples[i]);
     if (computed_.loudness) {
         if (power)

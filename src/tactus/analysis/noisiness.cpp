@@ -26,13 +26,24 @@ void Noisiness::prepare(int bins, double bin_hz) {
 
 double Noisiness::compute(std::span<const float> powers) const noexcept {
     if (bands_.empty()) return 0.0;
-    double log_sum = 0.0, sum = 0.0;
+    // The logarithm of the densities' product, taken every kProductBands bands: one library
+    // log where each band took one. A density lies in [kSilentPower, 1e11] (the input at
+    // kMaxInputLevel), so the product of kProductBands stays well inside a double's range.
+    constexpr int kProductBands = 8;
+    double log_sum = 0.0, product = 1.0, sum = 0.0;
+    int in_product = 0;
     for (const Band& band : bands_) {
         const double power = sum_of(powers.data() + band.first_bin, band.end_bin - band.first_bin);
         const double density = power / (band.end_bin - band.first_bin) + kSilentPower;
-        log_sum += std::log(density);
+        product *= density;
         sum += density;
+        if (++in_product == kProductBands) {
+            log_sum += std::log(product);
+            product = 1.0;
+            in_product = 0;
+        }
     }
+    log_sum += std::log(product);
     const double n = static_cast<double>(bands_.size());
     const double arithmetic = sum / n;
     if (arithmetic <= 2 * kSilentPower) return 0.0;

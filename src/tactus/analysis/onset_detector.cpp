@@ -43,8 +43,7 @@ void OnsetDetector::prepare(const ProcessSpec& spec, int hop_samples, const Onse
     rise_.assign(static_cast<size_t>(bins_), 0.0f);
     const auto history_frames =
         std::max<int64_t>(1, std::llround(s.history_ms * 1e-3 * sample_rate_hz / hop_samples));
-    flux_history_.assign(static_cast<size_t>(history_frames), 0.0);
-    scratch_.assign(static_cast<size_t>(history_frames), 0.0);
+    recent_flux_.prepare(static_cast<int>(history_frames));
     min_interval_samples_ = ms_to_samples(s.min_interval_ms, sample_rate_hz);
     sub_block_samples_ =
         std::max<int>(1, static_cast<int>(ms_to_samples(kSubBlockMs, sample_rate_hz)));
@@ -65,8 +64,7 @@ void OnsetDetector::set_thresholds(const OnsetSettings& s) noexcept {
 void OnsetDetector::reset() noexcept {
     bins_max_.fill(0.0f);
     for (auto& band : bands_) band.fill(band_log(0.0));  // silence before the stream: the floor
-    std::fill(flux_history_.begin(), flux_history_.end(), 0.0);
-    history_position_ = 0;
+    recent_flux_.fill(0.0);
     last_onset_sample_ = INT64_MIN / 2;
     armed_ = true;
 }
@@ -88,12 +86,8 @@ OnsetDetector::analyse(const SampleHistory& history, std::array<double, 2> band_
     const double flux = (sum_of(rise_.data(), bins_) + bands_rise) * 100.0 / bins_;  // per 100 bins
 
     // Median of the recent flux: the background level, not raised by the hits themselves.
-    std::copy(flux_history_.begin(), flux_history_.end(), scratch_.begin());
-    const auto middle = scratch_.begin() + static_cast<std::ptrdiff_t>(scratch_.size() / 2);
-    std::nth_element(scratch_.begin(), middle, scratch_.end());
-    const double threshold = settings_.threshold + settings_.ratio * *middle;
-    flux_history_[history_position_] = flux;
-    history_position_ = (history_position_ + 1) % flux_history_.size();
+    const double threshold = settings_.threshold + settings_.ratio * recent_flux_.median();
+    recent_flux_.push(flux);
 
     OnsetDecision decision{flux, false, 0};
     const int64_t now = history.written();

@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "tactus/analysis/sliding_median.hpp"
 #include "tactus/analysis/stft_frame.hpp"
 #include "tactus/analysis/temporal_max.hpp"
 #include "tactus/dsp/process_spec.hpp"
@@ -75,8 +76,8 @@ class OnsetDetector {
     std::vector<float> log_magnitudes_, rise_, segment_;  // the first two: per bin, this frame
     TemporalMax bins_max_;              // the bins' log magnitudes, kLagMs to kSpanMs back
     std::array<TemporalMax, 2> bands_;  // low, high: their log power over their own lags
-    std::vector<double> flux_history_, scratch_, block_energy_;
-    size_t history_position_ = 0;
+    SlidingMedian recent_flux_;         // over onset.history_ms
+    std::vector<double> block_energy_;
     int hop_samples_ = 0, sub_block_samples_ = 0, bins_ = 0;
     int64_t min_interval_samples_ = 0, last_onset_sample_ = INT64_MIN / 2;
     bool armed_ = true;

@@ -1,5 +1,7 @@
 #include "tactus/engine/input_ring.hpp"
 
+#include <algorithm>
+
 namespace tactus {
 
 void InputRing::prepare(int lanes, int64_t capacity, int max_write) {
@@ -17,13 +19,15 @@ void InputRing::reset() noexcept {
 
 void InputRing::write(const float* const* lanes, int count) noexcept {
     const int64_t start = written_.load(std::memory_order_relaxed);
+    const int64_t slot = start % capacity_;
+    // The samples up to the ring's end, then the rest from its start: no wrap test per sample.
+    const int before_end = static_cast<int>(std::min<int64_t>(count, capacity_ - slot));
     for (int l = 0; l < lanes_; ++l) {
         std::atomic<float>* lane = samples_.get() + l * capacity_;
-        int64_t slot = start % capacity_;
-        for (int i = 0; i < count; ++i) {
-            lane[slot].store(lanes[l][i], std::memory_order_release);
-            if (++slot == capacity_) slot = 0;
-        }
+        const float* in = lanes[l];
+        for (int i = 0; i < before_end; ++i) lane[slot + i].store(in[i], std::memory_order_release);
+        for (int i = before_end; i < count; ++i)
+            lane[i - before_end].store(in[i], std::memory_order_release);
     }
     written_.store(start + count, std::memory_order_release);
 }

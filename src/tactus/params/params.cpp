@@ -42,7 +42,7 @@ constexpr double kNpiLowHz = perception::info(perception::Channel::NPI).range_lo
 constexpr auto kTable = joined_rows(
     std::to_array<ParamSpec>({
     // Analysis (paper §6, Figure 4: feature extraction).
-    {P::analysis_window_ms, 1, "analysis.window_ms", "ms", real, 5, 100, 23.2, log, structural, 0,
+    {P::analysis_window_ms, 1, "analysis.window_ms", "ms", real, 5, 100, 24, log, structural, 0,
      "STFT window for brightness, noisiness (nearest fast FFT size at the 16 kHz analysis rate)"},
     {P::analysis_hop_ms, 2, "analysis.hop_ms", "ms", real, 0.5, 20, 1.45, log, structural, 0,
      "time between analysis frames; control rate of the vibration program"},
