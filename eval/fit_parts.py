@@ -110,12 +110,12 @@ def expanded(x):
     return np.hstack([own, own[:, i] * own[:, j], x[:, own.shape[1]:]])
 
 
-def fit(x, y):
-    """(mean, scale, weights [class][feature], bias [class]) of the multinomial logistic model."""
+def fit(x, y, k=len(CLASSES)):
+    """(mean, scale, weights [class][feature], bias [class]) of the multinomial logistic model
+    of k classes (y in 0 ... k - 1)."""
     mean, scale = x.mean(axis=0), x.std(axis=0) + 1e-9
     z = (x - mean) / scale
     n, d = z.shape
-    k = len(CLASSES)
     counts = np.bincount(y, minlength=k)
     sample_weight = (n / (k * np.maximum(counts, 1)))[y]
     onehot = np.eye(k)[y]
