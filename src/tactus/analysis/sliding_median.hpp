@@ -1,8 +1,8 @@
 // The median of the last N values of a stream (the onset detector's adaptive threshold, the
 // median of the recent flux: onset_detector.hpp). The values are kept twice, in arrival order (a
 // ring) and sorted; a new value takes the oldest's place in both, by moving the sorted values
-// between them one step. N + a few steps a value, where a selection over a copy each frame
-// (std::nth_element) took several passes over it. The same value as that selection, exactly.
+// between the two one place: two binary searches and at most N moves a value, where a selection
+// over a copy each frame (std::nth_element) took several passes. Exactly that selection's value.
 // Audio thread: median(), push(), fill(); prepare() allocates.
 #pragma once
 
