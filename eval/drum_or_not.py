@@ -30,7 +30,7 @@ import soundfile
 import fit_parts
 import music
 import music_corpus
-from shared import read_hits, run
+from shared import onset_rows, read_hits
 
 BANDS_HZ = ((30, 150), (150, 400), (400, 1000), (1000, 2500), (2500, 6000), (6000, 10000))
 NAMES = [f"rise {lo}-{hi} Hz" for lo, hi in BANDS_HZ] + ["rise, whole", "strength"]
@@ -59,8 +59,7 @@ def rises(path, onsets):
 
 def mix_onsets(tactus, wav, hits_csv):
     """(numbers [onset][NAMES], drum hit or not [onset]) of one mix."""
-    rows = [line.split() for line in run([tactus, "onsets", wav]).stdout.splitlines()
-            if line.strip()]
+    rows = onset_rows(tactus, wav, "music")
     onsets = [(float(r[0]), float(r[1])) for r in rows]
     reference, _ = music.truth(read_hits(hits_csv))
     drum = np.zeros(len(rows), int)

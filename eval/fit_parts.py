@@ -40,7 +40,7 @@ import scipy.optimize
 
 import music
 import music_corpus
-from shared import read_hits, run
+from shared import onset_rows, read_hits
 
 CLASSES = ("kick", "snare", "hat")
 TUNING = ("tuning", "recorded-tuning")
@@ -50,8 +50,7 @@ HEADER = pathlib.Path(__file__).resolve().parent.parent / "src/tactus/analysis/p
 
 def onsets_with_features(tactus, wav, preset):
     """(times, tactus's parts, features: one row per onset, nan where undecided)."""
-    rows = [line.split() for line in run([tactus, "onsets", wav, "--preset", preset,
-                                          "--part-features"]).stdout.splitlines() if line.strip()]
+    rows = onset_rows(tactus, wav, preset, "--part-features")
     times = np.array([float(r[0]) for r in rows])
     return times, [r[3] for r in rows], np.array([[float(v) for v in r[4:]] for r in rows])
 

@@ -36,7 +36,7 @@ import soundfile
 
 import felt
 import music_corpus
-from shared import AUBIO_ARGS, read_hits, run
+from shared import AUBIO_ARGS, onset_rows, read_hits, run
 
 TOLERANCE_S = 0.05
 PULSE_S = 0.06  # a hit's felt pulse is looked for over this long after it
@@ -72,8 +72,7 @@ def truth(hits):
 
 def tactus_onsets(tactus, wav, preset):
     """Onset times and, when `tactus onsets` prints a 4th column, each onset's part (else None)."""
-    rows = [line.split() for line in run([tactus, "onsets", wav, "--preset", preset]).stdout
-            .splitlines() if line.strip()]
+    rows = onset_rows(tactus, wav, preset)
     times = np.array([float(r[0]) for r in rows])
     has_part = bool(rows) and all(len(r) >= 4 for r in rows)
     return times, ([r[3] for r in rows] if has_part else None)

@@ -24,10 +24,16 @@ def read_hits(path):
     return [(float(t), instrument, float(g)) for t, instrument, g in rows]
 
 
+def onset_rows(tactus, wav, preset, *options):
+    """The lines `tactus onsets` prints for `wav` (onset s, decided s, strength dB, part, then what
+    `options` add), each split into its fields."""
+    text = run([tactus, "onsets", wav, "--preset", preset, *options]).stdout
+    return [line.split() for line in text.splitlines() if line.strip()]
+
+
 def onset_times_s(tactus, wav, preset):
     """The onset times `tactus onsets` prints for `wav`."""
-    text = run([tactus, "onsets", wav, "--preset", preset]).stdout
-    return np.array([float(line.split()[0]) for line in text.splitlines() if line.strip()])
+    return np.array([float(r[0]) for r in onset_rows(tactus, wav, preset)])
 
 
 def band_share(y, rate, low_hz=20.0, high_hz=1000.0):
