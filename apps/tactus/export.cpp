@@ -97,7 +97,8 @@ void export_files(const ExportOptions& o) {
     };
     HapticTrack track = render_haptic_track(
         o.input, engine, sink, callbacks,
-        [&](const AnalysisFrame& frame) { unfelt.on_loudness(frame.features.loudness_db); });
+        [&](const AnalysisFrame& frame) { unfelt.on_loudness(frame.features.loudness_db); },
+        RunAnalysis::ahead);
     track.info = info;
     normalise(track, normalisation);
     if (ogg_path && !ogg)

@@ -85,10 +85,11 @@ std::string render_one(const Job& job, const Settings& settings,
         writer.emplace(job.output, sample_rate_hz, channels, sample_format,
                        SoundTags{.software = "tactus " + info.version, .comment = info.comment()});
     };
-    // The vibration rings out after the input: a short sound keeps its whole pulse.
+    // The vibration rings out after the input: a short sound keeps its whole pulse. The
+    // analysis runs on a thread of its own.
     const RunSummary summary = run_file(
         job.input, engine, {.on_output = write, .on_progress = on_progress, .on_start = open},
-        RunTail::ring_out);
+        RunTail::ring_out, RunAnalysis::ahead);
     writer->commit();
     if (const std::string warning =
             stats.unfelt.warning(job.input.string(), summary.sample_rate_hz);

@@ -59,6 +59,7 @@ class Analyzer {
     static int64_t frame_grid_samples(const Settings& settings, double sample_rate_hz);
     // The features to compute (all by default); the others keep their Features default.
     void set_features(FeatureSet computed) noexcept { computed_ = computed; }
+    FeatureSet features() const noexcept { return computed_; }
     // Input samples that can be written before the next frame is due (>= 1).
     int samples_to_next_frame() const noexcept {
         return static_cast<int>(resampler_.inputs_for(next_frame_end_ - 1) - inputs_);

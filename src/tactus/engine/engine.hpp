@@ -119,6 +119,18 @@ class Engine {
     // Setup thread: whether the input went on past the recording's last frame (the vibration
     // after it followed no analysis: render again, analysing).
     bool replay_ran_out() const { return active_ && active_->replay_ran_out(); }
+    bool replaying() const { return recording_ != nullptr; }
+    // Setup, prepared: what the running pipeline's analysis reads. BlockAnalysis
+    // (io/run_file.hpp) prepared with these at the engine's spec gives the frames that analysis
+    // would, bit for bit, for playing back (io/analysis_ahead.hpp).
+    struct AnalysisSetup {
+        Settings settings;  // fitted to the actuator, as the pipeline runs them
+        FeatureSet features;
+        int input_channel = -1;
+    };
+    AnalysisSetup analysis_setup() const {
+        return {fitted(settings_), active_->analysed_features(), input_channel_};
+    }
     // Frames for pop_frame(), up to kQueueCapacity ahead of the reader (while it is that far
     // behind, new frames are dropped).
     void enable_frame_queue();

@@ -71,6 +71,7 @@ class Pipeline {
                  FrameObserver* observer) noexcept;
 
     int rate_divisor() const { return rate_divisor_; }
+    FeatureSet analysed_features() const { return analyzer_.features(); }
     double internal_rate_hz() const { return sample_rate_hz_ / rate_divisor_; }
     double hop_samples() const { return analyzer_.hop_samples(); }  // input samples, mean
     int latency() const;

@@ -55,7 +55,7 @@ double sharpness_of(double frequency_hz) {
 
 HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engine,
                                 const AlignedSink& sink, const RunCallbacks& callbacks,
-                                const FrameSink& frames) {
+                                const FrameSink& frames, RunAnalysis analysis) {
     engine.enable_frame_queue();
     std::optional<FeltEnvelope> envelope;
     CarrierTrack carrier;
@@ -127,7 +127,7 @@ HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engi
     };
     if (sink) run.on_input = delay_audio;
     run.on_output = on_output;
-    const RunSummary summary = run_file(input, engine, run, RunTail::ring_out);
+    const RunSummary summary = run_file(input, engine, run, RunTail::ring_out, analysis);
     take_frames();
     decisions.finish(
         [&](const DecidedOnset& onset) { onsets.emplace_back(onset, onset_carrier_hz); });

@@ -58,10 +58,11 @@ using FrameSink = std::function<void(const AnalysisFrame& frame)>;
 // Runs `engine` (actuators set) over `input` and its tail and returns the track; `sink`, if
 // given, receives the sound and the vibration lined up, block by block, `frames` every
 // analysis frame, and callbacks.on_output each block as the engine gives it (the latency
-// included), after that block's frames.
+// included), after that block's frames. `analysis`: as run_file's.
 HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engine,
                                 const AlignedSink& sink = {}, const RunCallbacks& callbacks = {},
-                                const FrameSink& frames = {});
+                                const FrameSink& frames = {},
+                                RunAnalysis analysis = RunAnalysis::engine);
 
 // A piecewise-linear approximation of values[i] at time i * step_s (Ramer-Douglas-Peucker):
 // the fewest breakpoints that stay within `tolerance` of every value; first and last kept.

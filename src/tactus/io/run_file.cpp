@@ -6,10 +6,12 @@
 #include <cmath>
 #include <optional>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include "tactus/dsp/denormals.hpp"
 #include "tactus/dsp/downmix.hpp"
+#include "tactus/io/analysis_ahead.hpp"
 
 namespace tactus {
 namespace {
@@ -52,31 +54,53 @@ RunSummary stream_file(const std::filesystem::path& input, const PrepareRun& pre
     return stream_source(source, prepare, process, callbacks);
 }
 
-int64_t run_tail(Engine& engine, int input_channels, const RunCallbacks& callbacks) {
+namespace {
+
+using Run = AnalysisAhead::Run;
+
+// Feeds the engine the tail (RunTail::ring_out) through `run`, which leaves each block's
+// vibration in `out`; returns the frames fed. Ahead, the silence is given a few blocks before
+// the engine runs it, and what is left once the vibration has rung out is not run.
+int64_t run_tail(Engine& engine, int input_channels, AnalysisAhead* ahead, const Run& run,
+                 const ChannelBlock& out) {
     const double rate_hz = engine.sample_rate_hz();
     const int block = std::max(1, static_cast<int>(rate_hz * 0.005));  // 5 ms
     const int64_t silent_needed = static_cast<int64_t>(std::ceil(kTailSilenceS * rate_hz));
     const int64_t min_frames = engine.latency();
     const int64_t max_frames = static_cast<int64_t>(kMaxTailS * rate_hz);
-    ChannelBlock in(input_channels, block), out(engine.actuators(), block);
+    ChannelBlock in(input_channels, block);
     for (int c = 0; c < input_channels; ++c) std::fill_n(in[c], block, 0.0f);
     int64_t fed = 0, silent = 0;
-    while (fed < max_frames && (fed < min_frames || silent < silent_needed)) {
-        if (callbacks.on_input) callbacks.on_input(in.data(), block);
-        engine.process(in.data(), out.data(), block);
-        fed += block;
+    const Run run_tail_block = [&](const float* const* input, int frames) {
+        run(input, frames);
+        fed += frames;
         float peak = 0.0f;
         for (int c = 0; c < engine.actuators(); ++c)
-            for (int i = 0; i < block; ++i) peak = std::max(peak, std::abs(out[c][i]));
-        silent = peak < kTailSilenceLevel ? silent + block : 0;
-        if (callbacks.on_output) callbacks.on_output(out.data(), block);
+            for (int i = 0; i < frames; ++i) peak = std::max(peak, std::abs(out.data()[c][i]));
+        silent = peak < kTailSilenceLevel ? silent + frames : 0;
+    };
+    while (fed < max_frames && (fed < min_frames || silent < silent_needed)) {
+        if (!ahead) {
+            run_tail_block(in.data(), block);
+            continue;
+        }
+        while (ahead->queued() <= AnalysisAhead::kAhead) ahead->give(in.data(), block);
+        ahead->run_oldest(run_tail_block);
     }
     return fed;
 }
 
+}  // namespace
+
 RunSummary run_source(AudioSource& source, Engine& engine, const RunCallbacks& callbacks,
-                      RunTail tail, RunPrepare prepare) {
+                      RunTail tail, RunPrepare prepare, RunAnalysis analysis) {
     std::optional<ChannelBlock> out;
+    std::optional<AnalysisAhead> ahead;
+    const Run run = [&](const float* const* in, int frames) {
+        if (callbacks.on_input) callbacks.on_input(in, frames);
+        engine.process(in, out->data(), frames);
+        if (callbacks.on_output) callbacks.on_output(out->data(), frames);
+    };
     RunSummary summary = stream_source(
         source,
         [&](const ProcessSpec& spec) {
@@ -87,30 +111,38 @@ RunSummary run_source(AudioSource& source, Engine& engine, const RunCallbacks& c
                     fmt::format("sample rate {:g} Hz, the engine runs at {:g} Hz",
                                 spec.sample_rate_hz, engine.sample_rate_hz()));
             out.emplace(engine.actuators(), kBlock);
+            if (analysis == RunAnalysis::ahead && prepare == RunPrepare::engine &&
+                !engine.replaying() && std::thread::hardware_concurrency() >= 2 &&
+                !(source.frames() > 0 && source.frames() < kAheadMinS * spec.sample_rate_hz))
+                ahead.emplace(engine, spec);
         },
         [&](const float* const* in, int frames) {
-            if (callbacks.on_input) callbacks.on_input(in, frames);
-            engine.process(in, out->data(), frames);
-            if (callbacks.on_output) callbacks.on_output(out->data(), frames);
+            if (!ahead) return run(in, frames);
+            ahead->give(in, frames);
+            if (ahead->queued() > AnalysisAhead::kAhead) ahead->run_oldest(run);
         },
         callbacks);
+    while (ahead && ahead->queued() > 0) ahead->run_oldest(run);
+    summary.analysed_ahead = ahead.has_value();
     if (tail == RunTail::ring_out)
-        summary.tail_frames = run_tail(engine, summary.input_channels, callbacks);
+        summary.tail_frames =
+            run_tail(engine, summary.input_channels, ahead ? &*ahead : nullptr, run, *out);
     return summary;
 }
 
 RunSummary run_file(const std::filesystem::path& input, Engine& engine,
-                    const RunCallbacks& callbacks, RunTail tail) {
+                    const RunCallbacks& callbacks, RunTail tail, RunAnalysis analysis) {
     FileSource source(input, kBlock);
-    return run_source(source, engine, callbacks, tail);
+    return run_source(source, engine, callbacks, tail, RunPrepare::engine, analysis);
 }
 
-void BlockAnalysis::prepare(const ProcessSpec& spec, const Settings& settings,
-                            FeatureSet features) {
+void BlockAnalysis::prepare(const ProcessSpec& spec, const Settings& settings, FeatureSet features,
+                            int input_channel) {
     Engine::check_sample_rate(spec.sample_rate_hz);
     analyzer_.prepare(spec, settings);
     analyzer_.set_features(features);
     channels_ = spec.channels;
+    input_channel_ = input_channel;
     max_block_ = spec.max_block;
     mono_.assign(static_cast<size_t>(max_block_), 0.0f);
     power_.assign(channels_ > 1 ? mono_.size() : 0, 0.0f);
@@ -122,6 +154,7 @@ void BlockAnalysis::prepare(const ProcessSpec& spec, const Settings& settings,
 void BlockAnalysis::process(const float* const* channels, int frames, const OnFrame& on_frame) {
     const ScopedFlushDenormals no_denormals;  // as in Engine::process
     if (channels_ == 1) return analyse(channels[0], nullptr, frames, on_frame);
+    if (input_channel_ >= 0) return analyse(channels[input_channel_], nullptr, frames, on_frame);
     downmix_mean(channels, channels_, 0, mono_.data(), frames);  // the engine's default downmix
     channel_power_.process(channels, 0, frames, power_.data());
     analyse(mono_.data(), power_.data(), frames, on_frame);

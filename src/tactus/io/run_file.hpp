@@ -34,8 +34,9 @@ struct RunCallbacks {
 struct RunSummary {
     double sample_rate_hz = 0;
     int input_channels = 0;
-    int64_t frames = 0;       // input frames
-    int64_t tail_frames = 0;  // silence fed after them (run_source with RunTail::ring_out)
+    int64_t frames = 0;           // input frames
+    int64_t tail_frames = 0;      // silence fed after them (run_source with RunTail::ring_out)
+    bool analysed_ahead = false;  // RunAnalysis::ahead, and it ran so
 };
 
 // What follows the input's last frame. ring_out feeds silence until the vibration has died
@@ -49,10 +50,6 @@ enum class RunTail { none, ring_out };
 inline constexpr double kTailSilenceLevel = 1e-4;
 inline constexpr double kTailSilenceS = 0.05;
 inline constexpr double kMaxTailS = 10.0;
-
-// Feeds `engine` (prepared, input_channels wide) the tail, handing every block to on_input and
-// on_output; returns the frames fed.
-int64_t run_tail(Engine& engine, int input_channels, const RunCallbacks& callbacks);
 
 // Calls prepare(the source's sample rate and channel count, blocks of kStreamBlockFrames) (an
 // std::invalid_argument becomes a std::runtime_error naming the source), then
@@ -71,13 +68,25 @@ RunSummary stream_file(const std::filesystem::path& input, const PrepareRun& pre
 // source must have the rate it was prepared at, and the channel count).
 enum class RunPrepare { engine, none };
 
+// Where the engine's analysis runs: in Engine::process, or (a command's engine, prepared here,
+// on a machine of two cores or more, a source of kAheadMinS or more) on a thread of its own a few
+// blocks ahead, the engine playing its frames back (io/analysis_ahead.hpp: the same output, bit
+// for bit, in about two thirds of the time). After a run ahead the engine's own analysis has not
+// heard the input: it is for an engine that ends with the run.
+enum class RunAnalysis { engine, ahead };
+// Shorter sources run in the engine: the second analysis's preparation and thread (about 0.4 M
+// instructions) would cost more than they save.
+inline constexpr double kAheadMinS = 0.5;
+
 // Prepares `engine` at the source's sample rate and channel count (the engine downmixes),
 // runs it to the end, then through the tail.
 RunSummary run_source(AudioSource& source, Engine& engine, const RunCallbacks& callbacks = {},
-                      RunTail tail = RunTail::none, RunPrepare prepare = RunPrepare::engine);
+                      RunTail tail = RunTail::none, RunPrepare prepare = RunPrepare::engine,
+                      RunAnalysis analysis = RunAnalysis::engine);
 // run_source of the file `input`.
 RunSummary run_file(const std::filesystem::path& input, Engine& engine,
-                    const RunCallbacks& callbacks = {}, RunTail tail = RunTail::none);
+                    const RunCallbacks& callbacks = {}, RunTail tail = RunTail::none,
+                    RunAnalysis analysis = RunAnalysis::engine);
 
 // Prepares `analyzer` at the source's sample rate with `settings` and computes `features` (and
 // the onsets) of the channels' mean, and calls on_frame for every analysis frame: the features
@@ -92,15 +101,17 @@ RunSummary analyse_file(const std::filesystem::path& input, Analyzer& analyzer,
                         const RunCallbacks& callbacks = {});
 
 // analyse_source's work on blocks of audio: the channels read as the engine reads them, their mean
-// analysed and their loudness summed as BS.1770 sums it (engine/channel_power.hpp). prepare()
-// allocates and throws std::invalid_argument for a bad rate or setting; process() takes up to
-// spec.max_block frames; finish() feeds silence for parts.settle_ms and one hop, so that the last
-// onset's part and strength are decided, as a render's tail decides them.
+// analysed and their loudness summed as BS.1770 sums it (engine/channel_power.hpp), or the one
+// `input_channel` (Engine::set_input_channel). prepare() allocates and throws
+// std::invalid_argument for a bad rate or setting; process() takes up to spec.max_block frames;
+// finish() feeds silence for parts.settle_ms and one hop, so that the last onset's part and
+// strength are decided, as a render's tail decides them.
 class BlockAnalysis {
   public:
     using OnFrame = std::function<void(const Features&)>;
     explicit BlockAnalysis(Analyzer& analyzer) : analyzer_(analyzer) {}
-    void prepare(const ProcessSpec& spec, const Settings& settings, FeatureSet features);
+    void prepare(const ProcessSpec& spec, const Settings& settings, FeatureSet features,
+                 int input_channel = -1);
     void process(const float* const* channels, int frames, const OnFrame& on_frame);
     void finish(const OnFrame& on_frame);
 
@@ -110,7 +121,7 @@ class BlockAnalysis {
     Analyzer& analyzer_;
     ChannelPower channel_power_;
     std::vector<float> mono_, power_;
-    int channels_ = 1, max_block_ = 1;
+    int channels_ = 1, input_channel_ = -1, max_block_ = 1;
     int64_t finish_frames_ = 0;
 };
 
