@@ -1,6 +1,7 @@
 // cascade_each (the wavefront on SSE2) against the sections applied one after the other with
 // Biquad::process: the same doubles bit for bit, in order, and the same states after, for any
-// block split and any number of sections.
+// block split and any number of sections. cascades_each, chains side by side, against each
+// chain's own cascade_each, each on its own input.
 #include "tactus/dsp/biquad_cascade.hpp"
 
 #include <gtest/gtest.h>
@@ -70,6 +71,54 @@ TEST(BiquadCascade, EachIsTheSectionsInTurnBitForBit) {
         expect_serial<3>(block);
         expect_serial<4>(block);
         expect_serial<11>(block);
+    }
+}
+
+// Chains of A and B sections side by side, each on its own input (the second's reversed).
+template <int A, int B>
+void expect_side_by_side(int block) {
+    const std::vector<float> x = signal(1000);
+    std::vector<float> reversed(x.rbegin(), x.rend());
+    const std::array<const std::vector<float>*, 2> inputs{&x, &reversed};
+    std::array<Biquad, A> a = sections<A>(), a_alone = sections<A>();
+    std::array<Biquad, B> b = sections<B>(), b_alone = sections<B>();
+    std::array<std::vector<double>, 2> want, got;
+    for (int at = 0; at < static_cast<int>(x.size()); at += block) {
+        const int count = std::min(block, static_cast<int>(x.size()) - at);
+        cascade_each<A>(
+            a_alone.data(), count, [&](int i) { return static_cast<double>(x[at + i]); },
+            [&](int, double y) { want[0].push_back(y); });
+        cascade_each<B>(
+            b_alone.data(), count, [&](int i) { return static_cast<double>(reversed[at + i]); },
+            [&](int, double y) { want[1].push_back(y); });
+        int last_chain = 1, last_i = -1;
+        cascades_each<A, B>(
+            {a.data(), b.data()}, count,
+            [&](int c, int i) { return static_cast<double>((*inputs[c])[at + i]); },
+            [&](int c, int i, double y) {
+                EXPECT_EQ(static_cast<int>(got[c].size()), at + i);  // in order, each once
+                if (A == B) {  // at each i the chains in order
+                    EXPECT_TRUE(i > last_i || (i == last_i && c > last_chain));
+                }
+                last_chain = c, last_i = i;
+                got[c].push_back(y);
+            });
+    }
+    for (int c = 0; c < 2; ++c) {
+        ASSERT_EQ(got[c].size(), x.size());
+        EXPECT_EQ(std::memcmp(got[c].data(), want[c].data(), x.size() * sizeof(double)), 0)
+            << A << " and " << B << " sections, chain " << c << ", blocks of " << block;
+    }
+    for (int s = 0; s < A; ++s) EXPECT_EQ(a[s].state(), a_alone[s].state()) << "a " << s;
+    for (int s = 0; s < B; ++s) EXPECT_EQ(b[s].state(), b_alone[s].state()) << "b " << s;
+}
+
+TEST(BiquadCascade, ChainsSideBySideAreEachChainBitForBit) {
+    for (int block : {1, 2, 3, 7, 64, 333, 1000}) {
+        expect_side_by_side<2, 2>(block);  // K-weighting, two channels
+        expect_side_by_side<2, 4>(block);  // the low and the high band
+        expect_side_by_side<1, 5>(block);
+        expect_side_by_side<4, 3>(block);
     }
 }
 

@@ -1,5 +1,6 @@
 #include "tactus/analysis/k_weighting.hpp"
 
+#include <array>
 #include <cmath>
 
 #include "tactus/core/units.hpp"
@@ -39,6 +40,15 @@ void KWeighting::prepare(const ProcessSpec& spec) {
 
 void KWeighting::add_power(const float* samples, float* power, int count) noexcept {
     each(samples, count, [&](int i, double y) { power[i] += static_cast<float>(y * y); });
+}
+
+void KWeighting::add_power(KWeighting& a, const float* a_samples, KWeighting& b,
+                           const float* b_samples, float* power, int count) noexcept {
+    const std::array<const float*, 2> samples{a_samples, b_samples};
+    cascades_each<2, 2>(
+        {a.sections_.data(), b.sections_.data()}, count,
+        [&](int c, int i) { return static_cast<double>(samples[c][i]); },
+        [&](int, int i, double y) { power[i] += static_cast<float>(y * y); });
 }
 
 }  // namespace tactus

@@ -20,6 +20,10 @@ class KWeighting {
     int latency() const { return 0; }
     // Adds the square of each K-weighted sample to power[i].
     void add_power(const float* samples, float* power, int count) noexcept;
+    // a.add_power(a_samples, ...), then b.add_power(b_samples, ...), in one wavefront
+    // (dsp/biquad_cascade.hpp cascades_each): the same sums, in about half the time.
+    static void add_power(KWeighting& a, const float* a_samples, KWeighting& b,
+                          const float* b_samples, float* power, int count) noexcept;
     // For i < count, in order: sink(i, samples[i] K-weighted), in double.
     template <typename Sink>
     void each(const float* samples, int count, Sink sink) noexcept {

@@ -8,6 +8,7 @@
 // applying the sections in turn, for any block split.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <type_traits>
@@ -97,7 +98,117 @@ TACTUS_VECTOR_CLONES void wavefront_each(Biquad* sections, int count, Input inpu
         sections[k].set_state({first, second});
     }
 }
+
+// The lanes of cascades side by side (cascades_each): chain c's sections in lanes
+// start[c] ... start[c] + Lengths[c] - 1, four lanes a vector.
+template <int... Lengths>
+struct SideBySide {
+    static constexpr int kChains = sizeof...(Lengths);
+    static constexpr std::array<int, kChains> kLength{Lengths...};
+    static constexpr int kSections = (Lengths + ...);
+    static constexpr int kLongest = std::max({Lengths...});
+    static constexpr int kLanes = 4;
+    static constexpr int kVectors = (kSections + kLanes - 1) / kLanes;
+    static constexpr int kSlots = kVectors * kLanes;
+    // Per lane: its chain (-1: a spare lane) and its place in it (0: the chain's head).
+    static constexpr std::array<int, kSlots> kChain = [] {
+        std::array<int, kSlots> chain{};
+        for (int k = 0; k < kSlots; ++k) chain[k] = -1;
+        for (int c = 0, k = 0; c < kChains; ++c)
+            for (int p = 0; p < kLength[c]; ++p) chain[k++] = c;
+        return chain;
+    }();
+    static constexpr std::array<int, kSlots> kPlace = [] {
+        std::array<int, kSlots> place{};
+        for (int c = 0, k = 0; c < kChains; ++c)
+            for (int p = 0; p < kLength[c]; ++p) place[k++] = p;
+        return place;
+    }();
+};
+
+// cascades_each's work: wavefront_each with a head lane per chain.
+template <int... Lengths, typename Input, typename Sink>
+TACTUS_VECTOR_CLONES void side_by_side_each(const std::array<Biquad*, sizeof...(Lengths)>& chains,
+                                            int count, Input input, Sink sink) noexcept {
+    using Layout = SideBySide<Lengths...>;
+    using Lanes = double __attribute__((vector_size(4 * sizeof(double))));
+    constexpr int kLanes = Layout::kLanes, V = Layout::kVectors, C = Layout::kChains;
+    Lanes b0[V], b1[V], b2[V], a1[V], a2[V], s1[V], s2[V], y[V];
+    for (int k = 0; k < Layout::kSlots; ++k) {
+        const int v = k / kLanes, lane = k % kLanes, c = Layout::kChain[k];
+        const BiquadCoefficients pass{};
+        const Biquad* section = c >= 0 ? chains[c] + Layout::kPlace[k] : nullptr;
+        const BiquadCoefficients& co = section ? section->coefficients() : pass;
+        const auto state = section ? section->state() : std::pair{0.0, 0.0};
+        b0[v][lane] = co.b0, b1[v][lane] = co.b1, b2[v][lane] = co.b2;
+        a1[v][lane] = co.a1, a2[v][lane] = co.a2;
+        s1[v][lane] = state.first, s2[v][lane] = state.second;
+        y[v][lane] = 0.0;
+    }
+    // One step: each chain's head takes its new sample, every other lane its left neighbour's
+    // last output (the vectors go from the last, so each still reads its neighbour's previous
+    // output); lanes outside 0 <= t - place < count keep their state (`masked`).
+    auto step = [&](const std::array<double, C>& in, bool masked, int t) {
+        for (int v = V - 1; v >= 0; --v) {
+            Lanes x;
+            for (int lane = 0; lane < kLanes; ++lane) {
+                const int k = v * kLanes + lane, c = Layout::kChain[k];
+                if (c < 0)
+                    x[lane] = 0.0;
+                else if (Layout::kPlace[k] == 0)
+                    x[lane] = in[c];
+                else
+                    x[lane] = lane == 0 ? y[v - 1][kLanes - 1] : y[v][lane - 1];
+            }
+            const Lanes out = b0[v] * x + s1[v];
+            const Lanes n1 = (b1[v] * x - a1[v] * out) + s2[v];
+            const Lanes n2 = b2[v] * x - a2[v] * out;
+            if (masked) {
+                for (int lane = 0; lane < kLanes; ++lane) {
+                    const int at = t - Layout::kPlace[v * kLanes + lane];
+                    if (at >= 0 && at < count) s1[v][lane] = n1[lane], s2[v][lane] = n2[lane];
+                }
+            } else {
+                s1[v] = n1;
+                s2[v] = n2;
+            }
+            y[v] = out;
+        }
+        for (int c = 0, last = -1; c < C; ++c) {
+            last += Layout::kLength[c];
+            const int done = t - (Layout::kLength[c] - 1);
+            if (done >= 0 && done < count) sink(c, done, y[last / kLanes][last % kLanes]);
+        }
+    };
+    const auto inputs = [&](int t) {
+        std::array<double, C> in{};
+        if (t < count)
+            for (int c = 0; c < C; ++c) in[c] = input(c, t);
+        return in;
+    };
+    const int steps = count + Layout::kLongest - 1;
+    int t = 0;
+    for (; t < std::min(Layout::kLongest - 1, steps); ++t) step(inputs(t), true, t);
+    for (; t < count; ++t) step(inputs(t), false, t);
+    for (; t < steps; ++t) step(inputs(t), true, t);
+    for (int k = 0; k < Layout::kSlots; ++k)
+        if (const int c = Layout::kChain[k]; c >= 0)
+            chains[c][Layout::kPlace[k]].set_state(
+                {s1[k / kLanes][k % kLanes], s2[k / kLanes][k % kLanes]});
+}
 }  // namespace detail
+
+// Independent cascades side by side, chain c of Lengths[c] sections (chains[c][0 ...]): for
+// i < count, in increasing i for each chain, sink(c, i, chain c applied to input(c, i)), in
+// double; chains of one length in chain order at each i (a longer chain's output comes its extra
+// sections' steps later). One wavefront carries them all, so they advance together instead of
+// one after the other (a biquad's recursion, more than its arithmetic, bounds a cascade's
+// speed). Bit for bit each chain's own cascade_each.
+template <int... Lengths, typename Input, typename Sink>
+void cascades_each(const std::array<Biquad*, sizeof...(Lengths)>& chains, int count, Input input,
+                   Sink sink) noexcept {
+    detail::side_by_side_each<Lengths...>(chains, count, input, sink);
+}
 
 // For i < count, in increasing i: sink(i, the N sections in turn applied to input(i)), in
 // double.

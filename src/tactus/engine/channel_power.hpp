@@ -24,7 +24,8 @@ class ChannelPower {
 
   private:
     std::vector<KWeighting> channels_;
-    std::vector<float> clean_;  // one channel's sanitised input, one block
+    std::vector<float> clean_;  // two channels' sanitised input, one block each
+    int max_block_ = 0;
 };
 
 }  // namespace tactus
