@@ -4,6 +4,7 @@
 // each with its own Engine.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <map>
@@ -67,7 +68,7 @@ std::vector<Job> plan(const RenderOptions& o) {
 // Renders one file; returns its one-line summary. On failure the output is not written.
 std::string render_one(const Job& job, const Settings& settings,
                        const std::optional<ActuatorProfile>& actuator, int channels,
-                       SampleFormat sample_format, const RenderInfo& how,
+                       SampleFormat sample_format, const RenderInfo& how, RunAnalysis analysis,
                        const std::function<void(int64_t done, int64_t total)>& on_progress) {
     Engine engine(settings);
     engine.set_actuators(std::vector<ActuatorOutput>(static_cast<size_t>(channels),
@@ -85,11 +86,10 @@ std::string render_one(const Job& job, const Settings& settings,
         writer.emplace(job.output, sample_rate_hz, channels, sample_format,
                        SoundTags{.software = "tactus " + info.version, .comment = info.comment()});
     };
-    // The vibration rings out after the input: a short sound keeps its whole pulse. The
-    // analysis runs on a thread of its own.
+    // The vibration rings out after the input: a short sound keeps its whole pulse.
     const RunSummary summary = run_file(
         job.input, engine, {.on_output = write, .on_progress = on_progress, .on_start = open},
-        RunTail::ring_out, RunAnalysis::ahead);
+        RunTail::ring_out, analysis);
     writer->commit();
     if (const std::string warning =
             stats.unfelt.warning(job.input.string(), summary.sample_rate_hz);
@@ -118,11 +118,15 @@ void render(const RenderOptions& o) {
     std::optional<ActuatorProfile> actuator;
     if (!o.actuator.empty()) actuator = load_actuator_for(o.actuator, settings);
     const RenderInfo how = o.pipeline.render_info({}, actuator ? actuator->name : std::string());
+    // One file at a time: its analysis on a thread of its own; several: a file per core.
+    const RunAnalysis analysis =
+        std::min<size_t>(jobs.size(), static_cast<size_t>(o.batch.jobs)) > 1 ? RunAnalysis::engine
+                                                                             : RunAnalysis::ahead;
     run_jobs(
         o.batch, jobs,
         [&](const Job& job, const AddFrames& add_frames) {
             int64_t reported = 0;
-            return render_one(job, settings, actuator, o.channels, o.sample_format, how,
+            return render_one(job, settings, actuator, o.channels, o.sample_format, how, analysis,
                               [&](int64_t done, int64_t) {
                                   add_frames(done - reported);
                                   reported = done;

@@ -135,7 +135,8 @@ TACTUS_VECTOR_CLONES bool Analyzer::process(const float* samples, const float* p
         else
             loudness_.process(clean_.data(), count);
     }
-    BandPower::process(low_band_, high_band_, clean_.data(), count);
+    low_band_.process(clean_.data(), count);
+    high_band_.process(clean_.data(), count);
     inputs_ += count;
     const int analysed = resampler_.process(clean_.data(), count, analysed_.data());
     dc_blocker_.process(analysed_.data(), analysed);

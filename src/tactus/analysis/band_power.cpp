@@ -1,7 +1,6 @@
 #include "tactus/analysis/band_power.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 #include "tactus/core/units.hpp"
@@ -53,19 +52,6 @@ void BandPower::process(const float* samples, int count) noexcept {
         cascade_each<4>(sections_.data(), count, input, add);
     energy_[position_] = energy;
     samples_[position_] += count;
-}
-
-void BandPower::process(BandPower& low, BandPower& high, const float* samples, int count) noexcept {
-    if (!high.active_) return low.process(samples, count);
-    std::array<double, 2> energy{low.energy_[low.position_], high.energy_[high.position_]};
-    cascades_each<2, 4>(
-        {low.sections_.data(), high.sections_.data()}, count,
-        [&](int, int i) { return static_cast<double>(samples[i]); },
-        [&](int band, int, double y) { energy[band] += y * y; });
-    for (BandPower* b : {&low, &high}) {
-        b->energy_[b->position_] = energy[b == &low ? 0 : 1];
-        b->samples_[b->position_] += count;
-    }
 }
 
 BandPower::Power BandPower::frame() noexcept {

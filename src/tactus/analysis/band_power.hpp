@@ -32,9 +32,6 @@ class BandPower {
     bool active() const { return active_; }  // false: a high band the input rate cannot hold
     void reset() noexcept;
     void process(const float* samples, int count) noexcept;
-    // low.process and high.process of the same samples (bands Band::low and Band::high), in one
-    // wavefront (dsp/biquad_cascade.hpp cascades_each): the same powers, in about half the time.
-    static void process(BandPower& low, BandPower& high, const float* samples, int count) noexcept;
 
     struct Power {
         double mean = 0, hann = 0;  // mean power over the window, plain and Hann-weighted
