@@ -2,7 +2,6 @@
 // file in one go, every frame reaches on_output, progress ends at the total, a file at an
 // unsupported rate or without frames is rejected naming the file. analyse_file gives the
 // engine's features, and only the onsets when asked for none. Audio in memory runs as the file.
-// The analysis run ahead on its own thread renders what the engine's own analysis does.
 #include "tactus/io/run_file.hpp"
 
 #include <gmock/gmock.h>
@@ -14,8 +13,6 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
-#include <thread>
-#include <utility>
 #include <vector>
 
 #include "support/engine_blocks.hpp"
@@ -201,46 +198,6 @@ TEST_F(RunFileTest, ABufferRunsAsTheFileAndOnInputSeesEveryBlock) {
     } catch (const std::runtime_error& e) {
         EXPECT_THAT(e.what(),
                     HasSubstr("drums: sample rate 48000 Hz, the engine runs at 44100 Hz"));
-    }
-}
-
-// RunAnalysis::ahead: the same vibration, tail and frames as the engine analysing, bit for bit,
-// for the channels' mean (their loudness summed) and for one chosen channel, for a file of many
-// blocks and one that ends in its seventh; a file shorter than kAheadMinS runs in the engine.
-TEST_F(RunFileTest, TheAnalysisRunAheadRendersAsTheEngineAnalysing) {
-    const double fs = 48000;
-    for (const double seconds : {3.0, kAheadMinS + 0.01, 0.1}) {
-        const test::DrumSignal left = test::drum_pattern(fs, seconds, 11);
-        const test::DrumSignal right = test::drum_pattern(fs, seconds, 12);
-        std::vector<float> interleaved;
-        for (size_t i = 0; i < left.audio.size(); ++i)
-            interleaved.insert(interleaved.end(), {left.audio[i], 0.5f * right.audio[i]});
-        const fs::path path = dir_ / "stereo.wav";
-        ASSERT_NO_FATAL_FAILURE(test::write_sound_file(path, interleaved, fs, 2));
-        for (const int channel : {-1, 1}) {
-            const auto render = [&](RunAnalysis analysis) {
-                Engine engine;  // the default preset, music
-                engine.set_input_channel(channel);
-                FeatureList frames;
-                engine.set_observer(&frames);
-                std::vector<float> out;
-                const RunSummary summary =
-                    run_file(path, engine,
-                             {.on_output = [&](const float* const* v,
-                                               int n) { out.insert(out.end(), v[0], v[0] + n); }},
-                             RunTail::ring_out, analysis);
-                EXPECT_EQ(summary.analysed_ahead, analysis == RunAnalysis::ahead &&
-                                                      seconds >= kAheadMinS &&
-                                                      std::thread::hardware_concurrency() >= 2);
-                return std::pair(out, frames.frames);
-            };
-            const auto [expected, expected_frames] = render(RunAnalysis::engine);
-            const auto [ahead, ahead_frames] = render(RunAnalysis::ahead);
-            EXPECT_GT(expected.size(), left.audio.size()) << seconds << " s, channel " << channel;
-            EXPECT_EQ(ahead, expected) << seconds << " s, channel " << channel;
-            ASSERT_EQ(ahead_frames.size(), expected_frames.size());
-            expect_same_features(ahead_frames, expected_frames);
-        }
     }
 }
 

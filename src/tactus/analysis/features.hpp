@@ -24,6 +24,8 @@ struct Features {
     DrumPart part = DrumPart::other;  // the latest hit's part (decided settle_ms after its onset)
     bool part_decided = false;        // ... on this frame
     double hit_strength_db = -120;    // the latest hit's strongest level so far
+
+    bool operator==(const Features&) const = default;  // every field (a replayed frame's)
 };
 
 // The analysis by cost: loudness (a K filter on every sample), spectrum (brightness, noisiness

@@ -157,8 +157,8 @@ TACTUS_VECTOR_CLONES void side_by_side_each(const std::array<Biquad*, sizeof...(
                     x[lane] = 0.0;
                 else if (Layout::kPlace[k] == 0)
                     x[lane] = in[c];
-                else
-                    x[lane] = lane == 0 ? y[v - 1][kLanes - 1] : y[v][lane - 1];
+                else  // a section after a chain's head: lane k - 1 holds the one before it
+                    x[lane] = y[std::max(k - 1, 0) / kLanes][std::max(k - 1, 0) % kLanes];
             }
             const Lanes out = b0[v] * x + s1[v];
             const Lanes n1 = (b1[v] * x - a1[v] * out) + s2[v];
