@@ -134,9 +134,9 @@ def main():
              "N`, still FLAC, so both tools decode the same real compressed file.", "",
              "- tactus render: `tactus render FILE -o OUT.wav` (the default preset: analysis, "
              "mapping, synthesis, post-processing, float WAV written), the file decoded on a "
-             "thread of its own beside the engine.",
+             "thread of its own and analysed on another, ahead of the engine's synthesis.",
              "- tactus onsets: `tactus onsets FILE -o OUT.txt` (onset detection alone, the "
-             "onsets render triggers pulses on), one thread.",
+             "onsets render triggers pulses on), the file decoded on a thread of its own.",
              f"- aubioonset (aubio-tools {aubio_version}): "
              f"`aubioonset -i FILE {' '.join(AUBIO_ARGS)}` (its default method and hop), onset "
              "times written to a file.",
