@@ -119,6 +119,7 @@ class Engine {
     // Setup thread: whether the input went on past the recording's last frame (the vibration
     // after it followed no analysis: render again, analysing).
     bool replay_ran_out() const { return active_ && active_->replay_ran_out(); }
+    // Setup thread: whether a recording plays back in place of the analysis.
     bool replaying() const { return recording_ != nullptr; }
     // Setup, prepared: what the running pipeline's analysis reads. BlockAnalysis
     // (io/run_file.hpp) prepared with these at the engine's spec gives the frames that analysis
