@@ -93,7 +93,8 @@ py::object render(const py::handle& x, double sample_rate_hz, const std::string&
                                                      ActuatorOutput{.profile = actuator}));
     prepare(engine, spec);
     // As `tactus render`, the vibration rings out after the input: its tail (at most
-    // kMaxTailS) follows it in the same array, returned as long as it came out.
+    // kMaxTailS) follows it in the same array, returned as long as it came out; the analysis
+    // runs ahead on a thread of its own.
     const auto most =
         static_cast<int>(in.frames + std::ceil(kMaxTailS * sample_rate_hz) + Engine::kMaxBlock);
     AudioOutput out = audio_output(most, actuators);
@@ -105,7 +106,8 @@ py::object render(const py::handle& x, double sample_rate_hz, const std::string&
         frames += count;
     };
     unlocked([&] {
-        run_source(source, engine, {.on_output = on_output}, RunTail::ring_out, RunPrepare::none);
+        run_source(source, engine, {.on_output = on_output}, RunTail::ring_out, RunPrepare::none,
+                   RunAnalysis::ahead);
     });
     return out.array[py::slice(0, static_cast<py::ssize_t>(frames), 1)];
 }

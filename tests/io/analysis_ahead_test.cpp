@@ -67,5 +67,40 @@ TEST_F(AnalysisAheadTest, RendersAsTheEngineAnalysing) {
     }
 }
 
+// An engine run ahead must not have taken input since it was prepared (its analysis would have
+// heard what a new one has not): one prepared by its host runs ahead, one that has run stays in
+// the engine, and both give what the engine analysing gives.
+TEST_F(AnalysisAheadTest, OnlyAnEngineThatHasTakenNoInputRunsAhead) {
+    const double fs = 48000;
+    const test::DrumSignal drums = test::drum_pattern(fs, 2.0, 13);
+    const int64_t frames = static_cast<int64_t>(drums.audio.size());
+    const auto render = [&](Engine& engine, RunAnalysis analysis, bool& ahead) {
+        std::vector<float> out;
+        BufferSource source({drums.audio.data()}, frames, fs, "drums");
+        ahead = run_source(source, engine,
+                           {.on_output = [&](const float* const* v,
+                                             int n) { out.insert(out.end(), v[0], v[0] + n); }},
+                           RunTail::ring_out, RunPrepare::none, analysis)
+                    .analysed_ahead;
+        return out;
+    };
+    const ProcessSpec spec{.sample_rate_hz = fs, .max_block = kStreamBlockFrames, .channels = 1};
+    Engine analysing, prepared, used;
+    bool ahead = true;
+    analysing.prepare(spec);
+    const std::vector<float> expected = render(analysing, RunAnalysis::engine, ahead);
+    EXPECT_FALSE(ahead);
+    prepared.prepare(spec);
+    EXPECT_EQ(render(prepared, RunAnalysis::ahead, ahead), expected);
+    EXPECT_EQ(ahead, std::thread::hardware_concurrency() >= 2);
+    used.prepare(spec);
+    std::vector<float> first(64), out(64);
+    const float* in[] = {first.data()};
+    float* to[] = {out.data()};
+    used.process(in, to, 64);
+    render(used, RunAnalysis::ahead, ahead);
+    EXPECT_FALSE(ahead);
+}
+
 }  // namespace
 }  // namespace tactus

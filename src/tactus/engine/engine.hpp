@@ -121,6 +121,8 @@ class Engine {
     bool replay_ran_out() const { return active_ && active_->replay_ran_out(); }
     // Setup thread: whether a recording plays back in place of the analysis.
     bool replaying() const { return recording_ != nullptr; }
+    // Setup thread: the input samples the running pipeline has taken since prepare() or reset().
+    int64_t position() const { return active_ ? active_->position() : 0; }
     // Setup, prepared: what the running pipeline's analysis reads. BlockAnalysis
     // (io/run_file.hpp) prepared with these at the engine's spec gives the frames that analysis
     // would, bit for bit, for playing back (io/analysis_ahead.hpp).

@@ -111,8 +111,8 @@ RunSummary run_source(AudioSource& source, Engine& engine, const RunCallbacks& c
                     fmt::format("sample rate {:g} Hz, the engine runs at {:g} Hz",
                                 spec.sample_rate_hz, engine.sample_rate_hz()));
             out.emplace(engine.actuators(), kBlock);
-            if (analysis == RunAnalysis::ahead && prepare == RunPrepare::engine &&
-                !engine.replaying() && std::thread::hardware_concurrency() >= 2 &&
+            if (analysis == RunAnalysis::ahead && engine.position() == 0 && !engine.replaying() &&
+                std::thread::hardware_concurrency() >= 2 &&
                 !(source.frames() > 0 && source.frames() < kAheadMinS * spec.sample_rate_hz))
                 ahead.emplace(engine, spec);
         },

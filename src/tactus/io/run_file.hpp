@@ -68,11 +68,11 @@ RunSummary stream_file(const std::filesystem::path& input, const PrepareRun& pre
 // source must have the rate it was prepared at, and the channel count).
 enum class RunPrepare { engine, none };
 
-// Where the engine's analysis runs: in Engine::process, or (a command's engine, prepared here,
-// on a machine of two cores or more, a source of kAheadMinS or more) on a thread of its own a few
-// blocks ahead, the engine playing its frames back (io/analysis_ahead.hpp: the same output, bit
-// for bit, in about two thirds of the time). After a run ahead the engine's own analysis has not
-// heard the input: it is for an engine that ends with the run.
+// Where the engine's analysis runs: in Engine::process, or (an engine that has taken no input
+// since it was prepared, on a machine of two cores or more, a source of kAheadMinS or more) on a
+// thread of its own a few blocks ahead, the engine playing its frames back (io/analysis_ahead.hpp:
+// the same output, bit for bit, in about two thirds of the time). After a run ahead the engine's
+// own analysis has not heard the input: it is for an engine that ends with the run.
 enum class RunAnalysis { engine, ahead };
 // Shorter sources run in the engine: the second analysis's preparation and thread (about 0.4 M
 // instructions) would cost more than they save.
