@@ -191,10 +191,11 @@ TACTUS_VECTOR_CLONES void side_by_side_each(const std::array<Biquad*, sizeof...(
     for (; t < std::min(Layout::kLongest - 1, steps); ++t) step(inputs(t), true, t);
     for (; t < count; ++t) step(inputs(t), false, t);
     for (; t < steps; ++t) step(inputs(t), true, t);
-    for (int k = 0; k < Layout::kSlots; ++k)
-        if (const int c = Layout::kChain[k]; c >= 0)
-            chains[c][Layout::kPlace[k]].set_state(
-                {s1[k / kLanes][k % kLanes], s2[k / kLanes][k % kLanes]});
+    for (int k = 0; k < Layout::kSlots; ++k) {
+        const int c = Layout::kChain[k];
+        const double first = s1[k / kLanes][k % kLanes], second = s2[k / kLanes][k % kLanes];
+        if (c >= 0) chains[c][Layout::kPlace[k]].set_state({first, second});
+    }
 }
 }  // namespace detail
 
