@@ -9,7 +9,6 @@ namespace tactus {
 void ChannelPower::prepare(const ProcessSpec& spec) {
     channels_.assign(static_cast<size_t>(spec.channels), {});
     for (auto& k : channels_) k.prepare(spec);
-    max_block_ = spec.max_block;
     clean_.assign(2 * static_cast<size_t>(spec.max_block), 0.0f);
 }
 
@@ -25,16 +24,17 @@ void ChannelPower::process(const float* const* in, int offset, int count, float*
         const float* x = in[c] + offset;
         for (int i = 0; i < count; ++i) to[i] = sanitized(x[i]);
     };
+    float* const first = clean_.data();
+    float* const second = first + clean_.size() / 2;
     size_t c = 0;
     for (; c + 1 < n; c += 2) {
-        clean(c, clean_.data());
-        clean(c + 1, clean_.data() + max_block_);
-        KWeighting::add_power(channels_[c], clean_.data(), channels_[c + 1],
-                              clean_.data() + max_block_, power, count);
+        clean(c, first);
+        clean(c + 1, second);
+        KWeighting::add_power(channels_[c], first, channels_[c + 1], second, power, count);
     }
     if (c < n) {
-        clean(c, clean_.data());
-        channels_[c].add_power(clean_.data(), power, count);
+        clean(c, first);
+        channels_[c].add_power(first, power, count);
     }
 }
 

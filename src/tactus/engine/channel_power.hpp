@@ -25,7 +25,6 @@ class ChannelPower {
   private:
     std::vector<KWeighting> channels_;
     std::vector<float> clean_;  // two channels' sanitised input, one block each
-    int max_block_ = 0;
 };
 
 }  // namespace tactus
