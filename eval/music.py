@@ -21,7 +21,7 @@ held-out part side by side.
   its onsets matched one-to-one to a hit within +-50 ms whose part is the hit's, per part and
   overall. Where hits coincide the true part is the first of kick, snare, hat among them. And
   the onsets no hit matches, by the part they are named: over a bed, the bed's own onsets, which
-  a drums-only mapping silences only when they are named other.
+  a drums-only mapping silences only when they are named other (parts.drum_min).
 """
 import collections
 import concurrent.futures

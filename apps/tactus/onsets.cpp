@@ -2,12 +2,14 @@
 // alone is an onset list as aubioonset prints it and as onset evaluation tools read it; decided_s
 // is when the onset was decided (its pulse starts), strength_db what the hit added above what was
 // sounding and part its drum part, both read parts.settle_ms after the onset
-// (analysis/hit_analysis.hpp). --part-features adds the numbers each part was decided on
-// (analysis/part_features.hpp; nan where the next onset came first), which eval/fit_parts.py fits
-// the part model on.
+// (analysis/hit_analysis.hpp). --part-features adds the numbers each part was decided on, which
+// eval/fit_parts.py fits the models on: the part model's (analysis/part_features.hpp; nan where
+// it did not read the onset), then the onset model's (analysis/onset_rises.hpp; nan where the
+// next onset came before the part).
 #include <fmt/format.h>
 
 #include <limits>
+#include <span>
 
 #include "batch_plan.hpp"
 #include "commands.hpp"
@@ -43,10 +45,14 @@ void onsets(const OnsetsOptions& o) {
                            name_of(onset.part));
         if (o.part_features) {
             // Called on the frame that decided the part, so the analysis still holds it.
-            for (const float value : analyzer.hits().part_features())
-                out << fmt::format(" {:.5g}", onset.part_decided
-                                                  ? value
-                                                  : std::numeric_limits<float>::quiet_NaN());
+            const HitAnalysis& hits = analyzer.hits();
+            const auto numbers = [&](std::span<const float> values, bool read) {
+                for (const float value : values)
+                    out << fmt::format(" {:.5g}",
+                                       read ? value : std::numeric_limits<float>::quiet_NaN());
+            };
+            numbers(hits.part_features(), onset.part_decided && hits.part_features_read());
+            numbers(hits.onset_rises(), onset.part_decided);
         }
         out << '\n';
     };
@@ -68,7 +74,8 @@ void add_onsets(CLI::App& app) {
     options->batch.add_to(*command, "file to write, one input (default: stdout)", ".onsets.txt");
     options->pipeline.add_to(*command);
     command->add_flag("--part-features", options->part_features,
-                      "after each part, the numbers it was decided on (eval/fit_parts.py)");
+                      "after each part, the numbers it was decided on: the part model's, then the "
+                      "onset model's (eval/fit_parts.py)");
     command->callback([options] { for_each_input(*options, ".onsets.txt", onsets); });
 }
 

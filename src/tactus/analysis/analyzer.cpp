@@ -92,7 +92,9 @@ OnsetSettings Analyzer::onset_settings(const Settings& s) {
 }
 
 HitSettings Analyzer::hit_settings(const Settings& s) {
-    return {.brightness_max_hz = s[P::brightness_max_hz], .settle_ms = s[P::parts_settle_ms]};
+    return {.brightness_max_hz = s[P::brightness_max_hz],
+            .settle_ms = s[P::parts_settle_ms],
+            .drum_min = s[P::parts_drum_min]};
 }
 
 bool Analyzer::reads(P id) {
@@ -100,7 +102,7 @@ bool Analyzer::reads(P id) {
         P::analysis_window_ms, P::analysis_hop_ms,   P::loudness_window_ms,    P::pitch_min_hz,
         P::pitch_max_hz,       P::pitch_threshold,   P::onset_window_ms,       P::onset_threshold,
         P::onset_ratio,        P::onset_history_ms,  P::onset_min_interval_ms, P::onset_low_weight,
-        P::onset_high_weight,  P::brightness_max_hz, P::parts_settle_ms};
+        P::onset_high_weight,  P::brightness_max_hz, P::parts_settle_ms,       P::parts_drum_min};
     return std::find(std::begin(kRead), std::end(kRead), id) != std::end(kRead);
 }
 

@@ -69,6 +69,7 @@ void HitAnalysis::prepare(SpectrumShape fast, SpectrumShape fine, double sample_
     mid_bins_ = bin_of(kMidEdgeHz);
     top_bins_ = bin_of(kTopEdgeHz);
     features_.prepare(fast, fine);
+    rises_.prepare(fast, fine);
     brightness_.prepare(fine.bins, fine.bin_hz, settings.brightness_max_hz);
     set_live(settings);
     reset();
@@ -77,6 +78,7 @@ void HitAnalysis::prepare(SpectrumShape fast, SpectrumShape fine, double sample_
 void HitAnalysis::set_live(const HitSettings& settings) noexcept {
     brightness_.set_max_hz(settings.brightness_max_hz);
     settle_samples_ = std::llround(settings.settle_ms * 1e-3 * sample_rate_hz_);
+    drum_min_ = settings.drum_min;
 }
 
 void HitAnalysis::reset() noexcept {
@@ -86,7 +88,7 @@ void HitAnalysis::reset() noexcept {
     level_db_ = peak_db_ = kSilentDb;
     brightness_hz_ = 0;
     part_ = DrumPart::other;
-    part_decided_ = deciding_ = false;
+    part_decided_ = deciding_ = features_read_ = false;
 }
 
 void HitAnalysis::analyse(const Frame& frame, int64_t now, int64_t onset_start) noexcept {
@@ -103,6 +105,7 @@ void HitAnalysis::analyse(const Frame& frame, int64_t now, int64_t onset_start) 
         hit_start_ = onset_start;
         peak_db_ = kSilentDb;
         deciding_ = true;
+        features_read_ = false;
     }
     // The loudness's rise, or where the mix's loudness fell under a hit (a hat on a snare's decay)
     // what the fast spectrum and the high band added bin by bin, as a mean square (bin by bin a
@@ -116,6 +119,25 @@ void HitAnalysis::analyse(const Frame& frame, int64_t now, int64_t onset_start) 
     for (size_t k = 0; k < added.size(); ++k) fine_magnitude_[k] = std::sqrt(added[k]);
     brightness_hz_ = brightness_.centroid_hz(fine_magnitude_);
     part_decided_ = false;
+    // Not a drum's onset by how its bands rose (onset_rises.hpp): `other` at once, before its
+    // pulse starts. Without the high band the model cannot be read: every onset waits for its
+    // part.
+    if (onset_start >= 0 && has_high_band_) {
+        const auto band = [](const AddedSpectrum& one) {
+            return OnsetRises::Band{.before = one.reference()[0], .added = one.added()[0]};
+        };
+        rises_.compute({.fast_before = fast_.reference(),
+                        .fast_added = fast_.added(),
+                        .fine_added = fine_.added(),
+                        .low = band(low_),
+                        .high = band(high_),
+                        .loudness = band(loudness_)});
+        if (drum_min_ > 0 && rises_.drum_probability() < drum_min_) {
+            part_ = DrumPart::other;
+            part_decided_ = true;
+            deciding_ = false;
+        }
+    }
     if (deciding_ && now - hit_start_ >= settle_samples_) {
         const bool added = features_.compute({.fast = fast_.added(),
                                               .fine = fine_.added(),
@@ -123,6 +145,7 @@ void HitAnalysis::analyse(const Frame& frame, int64_t now, int64_t onset_start) 
                                               .low = kBinsPerMeanPower * low_.added_sum(),
                                               .high = kBinsPerMeanPower * high_.added_sum(),
                                               .decay_db = peak_db_ - level_db_});
+        features_read_ = added;
         part_ = !added           ? DrumPart::other
                 : has_high_band_ ? modelled_part(features_.values())
                                  : rule_part();

@@ -11,9 +11,11 @@
 //                  fell under it, the power it added bin by bin), so a soft hit over a loud
 //                  chord reads soft;
 //   brightness_hz  its log-frequency centroid up to brightness.max_hz (analysis/brightness.hpp);
-// and once, settle_ms after the onset, its part: kick, snare or hat by the part model
-// (analysis/part_model.hpp, fitted by eval/fit_parts.py) on where and how the added power lies
-// (analysis/part_features.hpp); `other` when the hit added nothing.
+// and its part: `other` at once, on the onset's own frame, when the onset model gives it less
+// than drum_min of being a drum's (analysis/onset_rises.hpp); else, settle_ms after the onset,
+// kick, snare or hat by the part model (analysis/part_model.hpp, fitted by eval/fit_parts.py) on
+// where and how the added power lies (analysis/part_features.hpp), `other` when the hit added
+// nothing.
 // Audio thread: analyse(); prepare() allocates.
 #pragma once
 
@@ -23,6 +25,7 @@
 #include "tactus/analysis/added_spectrum.hpp"
 #include "tactus/analysis/brightness.hpp"
 #include "tactus/analysis/drum_part.hpp"
+#include "tactus/analysis/onset_rises.hpp"
 #include "tactus/analysis/part_features.hpp"
 
 namespace tactus {
@@ -30,6 +33,7 @@ namespace tactus {
 struct HitSettings {
     double brightness_max_hz = 1500;
     double settle_ms = 20;  // onset -> its part decided
+    double drum_min = 0;    // the least drum probability an onset waits for its part with
 };
 
 class HitAnalysis {
@@ -60,8 +64,12 @@ class HitAnalysis {
     DrumPart part() const { return part_; }
     // The latest hit's part was decided this frame.
     bool part_decided() const { return part_decided_; }
-    // What the latest decided part was read from (analysis/part_features.hpp).
+    // What the latest hit's part was read from (analysis/part_features.hpp), when the part model
+    // read it (an onset that was not a drum's, or that added nothing, has none).
+    bool part_features_read() const { return features_read_; }
     std::span<const float> part_features() const { return features_.values(); }
+    // What the latest onset was told a drum's or not by (analysis/onset_rises.hpp).
+    std::span<const float> onset_rises() const { return rises_.values(); }
 
   private:
     DrumPart rule_part() const noexcept;
@@ -70,14 +78,15 @@ class HitAnalysis {
     AddedSpectrum loudness_, low_, high_;  // each a spectrum of one bin
     Brightness brightness_;
     PartFeatures features_;
+    OnsetRises rises_;
     std::vector<float> fine_magnitude_;
     int low_bins_ = 0, mid_bins_ = 0, top_bins_ = 0;  // band edges in fast bins (rule_part())
     bool has_high_band_ = true;
-    double sample_rate_hz_ = 16000;
+    double sample_rate_hz_ = 16000, drum_min_ = 0;
     int64_t settle_samples_ = 0, hit_start_ = -1;
     double level_db_ = -120, brightness_hz_ = 0, peak_db_ = -120;
     DrumPart part_ = DrumPart::other;
-    bool part_decided_ = false, deciding_ = false;
+    bool part_decided_ = false, deciding_ = false, features_read_ = false;
 };
 
 }  // namespace tactus

@@ -183,7 +183,14 @@ constexpr auto kTable = joined_rows(
     part_rows<"kick", "a kick">(P::parts_kick_gain_db, 82),
     part_rows<"snare", "a snare">(P::parts_snare_gain_db, 85),
     part_rows<"hat", "a hi-hat or cymbal">(P::parts_hat_gain_db, 88),
-    part_rows<"other", "any other onset (bass, chords, voice)">(P::parts_other_gain_db, 91));
+    part_rows<"other", "any other onset (bass, chords, voice)">(P::parts_other_gain_db, 91),
+    std::to_array<ParamSpec>({
+    // Analysis: a drum's onset or another sound's (analysis/onset_rises.hpp).
+    {P::parts_drum_min, 94, "parts.drum_min", "", real, 0, 1, 0, lin, live, 0,
+     "least probability, by how its bands rose, that an onset is a drum's for it to wait for "
+     "its drum part; below it the onset is `other` at once, before its pulse starts (0 = off; "
+     "with parts.other.gain_db = -60: drums only)"},
+    }));
 // clang-format on
 
 // Row i describes P(i), and no two rows share a stable id: checked at compile time, so the

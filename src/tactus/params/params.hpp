@@ -122,6 +122,7 @@ enum class P : int {
     TACTUS_PART_IDS(hat),
     TACTUS_PART_IDS(other),
 #undef TACTUS_PART_IDS
+    parts_drum_min,
     count
 };
 
