@@ -12,20 +12,17 @@ namespace {
 // Powers below -100 dB re a full-scale sine's count as that: a band rising from digital silence
 // reads a large rise, not an infinite one.
 constexpr double kFloorPower = 1e-10;
-constexpr double kRiseLimit = 6;      // log10 of a power's rise
-constexpr float kTinyPower = 1e-20f;  // keeps the logarithm of an empty bin finite
+constexpr double kRiseLimit = 6;  // log10 of a power's rise
 
 float rise(double before, double added) {
     return static_cast<float>(
         std::min(kRiseLimit, std::log10((before + added + kFloorPower) / (before + kFloorPower))));
 }
 
+// The flatness of what the onset added from `first` up.
 float flatness(std::span<const float> powers, int first) {
-    const int n = std::max(1, static_cast<int>(powers.size()) - first);
-    double log_sum = 0;
-    for (int k = first; k < first + n; ++k) log_sum += fast_log(powers[k] + kTinyPower);
-    const double mean = sum_of(powers.data() + first, n) / n + kTinyPower;
-    return static_cast<float>(log_sum / n - std::log(mean));
+    return static_cast<float>(
+        log_flatness(powers.data() + first, static_cast<int>(powers.size()) - first));
 }
 }  // namespace
 

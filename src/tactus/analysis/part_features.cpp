@@ -39,6 +39,14 @@ void PartFeatures::reset() noexcept {
     has_recent_ = false;
 }
 
+double log_flatness(const float* powers, int count) noexcept {
+    double log_sum = 0;
+    for (int k = 0; k < count; ++k) log_sum += fast_log(powers[k] + kTinyPower);
+    const int n = std::max(1, count);
+    const double mean = sum_of(powers, std::max(0, count)) / n + kTinyPower;
+    return log_sum / n - std::log(mean);
+}
+
 bool PartFeatures::compute(const Added& a) noexcept {
     const auto sum = [](std::span<const float> x, int from, int to) {
         return sum_of(x.data() + from, std::max(0, to - from));
@@ -60,11 +68,7 @@ bool PartFeatures::compute(const Added& a) noexcept {
         static_cast<float>(log_share(sum(a.fast, fast_edges_[2], fast_edges_[3]), fast_total));
     // Flatness from the third band's edge up (164 Hz at the defaults).
     const int first = fine_edges_[2], last = fine_edges_[kFineBands];
-    double log_sum = 0;
-    for (int k = first; k < last; ++k) log_sum += fast_log(a.fine[k] + kTinyPower);
-    const int n = std::max(1, last - first);
-    const double mean = sum(a.fine, first, last) / n + kTinyPower;
-    values_[v++] = static_cast<float>(log_sum / n - std::log(mean));
+    values_[v++] = static_cast<float>(log_flatness(a.fine.data() + first, last - first));
     const double bed = sum(a.fine_bed, fine_edges_[0], fine_edges_[kFineBands]);
     values_[v++] = static_cast<float>(std::clamp(
         std::log10((fine_total + kTinyPower) / (bed + kTinyPower)), -kRiseLimit, kRiseLimit));

@@ -28,6 +28,10 @@ struct SpectrumShape {
     double bin_hz = 0;
 };
 
+// ln of the geometric over the arithmetic mean of `count` powers (noise 0, a tone far below; an
+// empty bin counts as a tiny power).
+double log_flatness(const float* powers, int count) noexcept;
+
 class PartFeatures {
   public:
     static constexpr int kFineBands = 7;
