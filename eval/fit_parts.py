@@ -9,11 +9,11 @@ built in --work once and cached), matches its onsets to the drum hits as eval/mu
 (+-50 ms, one-to-one; where hits coincide the first of kick, snare, hat) and prints, for the
 parts.drum_min that keeps each of KEEPS of the tuning parts' drum hits, per bed level and part,
 the share of drum hits the onset model keeps and of the other onsets (over a bed, the bed's
-own) it names other; then, per bed level and part, the share of matched onsets whose part tactus names right (kick / snare / hat /
-all): as tactus printed it, and as the model fitted here would; then the same model fitted with two
-of the tuning kits left out at a time, measured on those two (the two tuning parts, Sonic Pi's
-kits and the recorded tuning kits, are what the model may be chosen on; the held-out parts give
-the figures).
+own) it names other; then, per bed level and part, the share of matched onsets whose part
+tactus names right (kick / snare / hat / all): as tactus printed it, and as the model fitted
+here would; then the same model fitted with two of the tuning kits left out at a time, measured
+on those two (the two tuning parts, Sonic Pi's kits and the recorded tuning kits, are what the
+model may be chosen on; the held-out parts give the figures).
 
 The model: multinomial logistic regression (kick, snare, hat) on a hit's own features and their
 pairwise products (quadratic terms) and, linearly, its features less the song's recent hits' mean
