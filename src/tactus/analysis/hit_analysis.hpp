@@ -33,7 +33,7 @@ namespace tactus {
 struct HitSettings {
     double brightness_max_hz = 1500;
     double settle_ms = 20;  // onset -> its part decided
-    double drum_min = 0;    // the least drum probability an onset waits for its part with
+    double drum_min = 0;    // an onset less likely a drum's is `other` at once (0: off)
 };
 
 class HitAnalysis {
