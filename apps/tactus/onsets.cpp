@@ -5,7 +5,7 @@
 // (analysis/hit_analysis.hpp). --part-features adds the numbers each part was decided on, which
 // eval/fit_parts.py fits the models on: the part model's (analysis/part_features.hpp; nan where
 // it did not read the onset), then the onset model's (analysis/onset_rises.hpp; nan where the
-// next onset came before the part).
+// next onset came before the part, or the input has no 6-10 kHz band to read them on).
 #include <fmt/format.h>
 
 #include <limits>
@@ -52,7 +52,7 @@ void onsets(const OnsetsOptions& o) {
                                        read ? value : std::numeric_limits<float>::quiet_NaN());
             };
             numbers(hits.part_features(), onset.part_decided && hits.part_features_read());
-            numbers(hits.onset_rises(), onset.part_decided);
+            numbers(hits.onset_rises(), onset.part_decided && hits.onset_rises_read());
         }
         out << '\n';
     };

@@ -5,6 +5,7 @@
 
 #include "tactus/analysis/band_power.hpp"
 #include "tactus/analysis/loudness.hpp"
+#include "tactus/analysis/model_terms.hpp"
 #include "tactus/analysis/part_model.hpp"
 #include "tactus/core/fast_math.hpp"
 
@@ -34,17 +35,13 @@ DrumPart modelled_part(std::span<const float> x) noexcept {
     using namespace part_model;
     constexpr size_t kOwn = PartFeatures::kOwn;
     std::array<float, kTerms> z{};
-    size_t t = 0;
-    for (size_t i = 0; i < kOwn; ++i) z[t++] = x[i];
-    for (size_t i = 0; i < kOwn; ++i)
-        for (size_t j = i; j < kOwn; ++j) z[t++] = x[i] * x[j];
-    for (size_t i = kOwn; i < x.size(); ++i) z[t++] = x[i];
-    for (size_t k = 0; k < z.size(); ++k) z[k] = (z[k] - kMean[k]) / kScale[k];
+    std::ranges::copy(x.subspan(kOwn), put_quadratic(x.first(kOwn), z.data()));
+    standardise(z, kMean.data(), kScale.data());
     int best = 0;
     double best_score = 0;
     for (int c = 0; c < kClasses; ++c) {
-        double score = kBias[static_cast<size_t>(c)];
-        for (size_t k = 0; k < z.size(); ++k) score += kWeights[static_cast<size_t>(c)][k] * z[k];
+        const auto k = static_cast<size_t>(c);
+        const double score = linear_score(z, kWeights[k].data(), kBias[k]);
         if (c == 0 || score > best_score) best = c, best_score = score;
     }
     return static_cast<DrumPart>(best);

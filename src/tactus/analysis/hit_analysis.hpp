@@ -68,7 +68,9 @@ class HitAnalysis {
     // read it (an onset that was not a drum's, or that added nothing, has none).
     bool part_features_read() const { return features_read_; }
     std::span<const float> part_features() const { return features_.values(); }
-    // What the latest onset was told a drum's or not by (analysis/onset_rises.hpp).
+    // What the latest onset was told a drum's or not by (analysis/onset_rises.hpp), read for
+    // every onset of an input with the high band.
+    bool onset_rises_read() const { return has_high_band_; }
     std::span<const float> onset_rises() const { return rises_.values(); }
 
   private:

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "tactus/analysis/band_power.hpp"
+#include "tactus/analysis/model_terms.hpp"
 #include "tactus/analysis/part_model.hpp"
 #include "tactus/core/fast_math.hpp"
 
@@ -50,19 +51,13 @@ void OnsetRises::compute(const Frame& frame) noexcept {
     values_[v++] = flatness(frame.fine_added, fine_first_);
 }
 
-// The logistic of the model's linear score on the standardised values and their pairwise
-// products.
+// The logistic of the model's score on the values and their pairwise products (model_terms.hpp).
 double OnsetRises::drum_probability() const noexcept {
     using namespace part_model;
     std::array<float, kDrumTerms> z{};
-    size_t t = 0;
-    for (size_t i = 0; i < kCount; ++i) z[t++] = values_[i];
-    for (size_t i = 0; i < kCount; ++i)
-        for (size_t j = i; j < kCount; ++j) z[t++] = values_[i] * values_[j];
-    double score = kDrumBias;
-    for (size_t k = 0; k < z.size(); ++k)
-        score += kDrumWeights[k] * (z[k] - kDrumMean[k]) / kDrumScale[k];
-    return 1 / (1 + std::exp(-score));
+    put_quadratic(values_, z.data());
+    standardise(z, kDrumMean.data(), kDrumScale.data());
+    return 1 / (1 + std::exp(-linear_score(z, kDrumWeights.data(), kDrumBias)));
 }
 
 }  // namespace tactus

@@ -9,7 +9,8 @@
 // noise 0, a tone far below). A drum rises at once across the spectrum, most above 6 kHz, as noise;
 // a pitched note in a few bands, as partials. A logistic model over them and their pairwise
 // products (analysis/part_model.hpp, fitted by eval/fit_parts.py) gives the probability that the
-// onset is a drum's. Audio thread: compute(), drum_probability(); prepare() sets band edges only.
+// onset is a drum's.
+// Audio thread: compute(), drum_probability(); prepare() sets band edges only.
 #pragma once
 
 #include <array>
