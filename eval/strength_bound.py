@@ -6,12 +6,15 @@ usage: eval/strength_bound.py [--work DIR] [--bed -6]
 
 On the music corpus's isolated hits (eval/music_corpus.py: each kit's kick alone and snare alone,
 9 hits 1 s apart at 0 to -24 dB, over a bed at --bed dB), without any detection: at each hit's
-true time, the power the 10 ms spectrum (Hann, 1.45 ms hop, as the onset detector's) gained over
-the frame that ended 1 ms before the hit, the largest over the 25 ms after it, summed
-  whole     over every bin up to 5.6 kHz (the analysis band);
-  by part   over the hit's own part's band: below 150 Hz for kicks, 150 Hz-5.6 kHz for snares
-            (the part known);
-  strongest over whichever of below 150 Hz, 150 Hz-1 kHz and 1-5.6 kHz gained most;
+true time, the power a Hann spectrum (1.45 ms hop, as the onset detector's) gained over what was
+sounding before the hit, the largest over the 25 ms after it, summed
+  whole     over every bin up to 5.6 kHz (the analysis band), the 10 ms spectrum over its frame
+            that ended 1 ms before the hit (as analysis/added_spectrum.hpp reads it);
+  by part   the same over the hit's own part's band: below 150 Hz for kicks, 150 Hz-5.6 kHz
+            for snares (the part known);
+  strongest the same over whichever of below 150 Hz, 150 Hz-1 kHz and 1-5.6 kHz gained most;
+  loudest   whole, each bin over its loudest of the frames of the 50 ms before, counting only the
+            bins at least twice that (a bed's own swells left out), in the 23 ms spectrum;
   stem      whole, on the drum stem alone (no bed: the reading's own bound).
 Prints Spearman's rho of hit gain -> that power per file, median and worst over the files, per
 part of the corpus and instrument: what `gain -> felt peak rho` in eval/results.md could reach if
@@ -30,27 +33,31 @@ from shared import read_hits
 
 WINDOW_S, HOP_S = 0.010, 0.00145
 REFERENCE_GAP_S, LOOK_S = 0.001, 0.025
+LOUDEST_WINDOW_S, LOUDEST_SPAN_S, LOUDEST_TIMES = 0.023, 0.050, 2.0
 TOP_HZ, LOW_HZ, MID_HZ = 5600, 150, 1000
 
 
-def spectra(path):
-    """(power spectra of the Hann frames, each frame's end time s, bin frequencies Hz)."""
+def spectra(path, window_s=WINDOW_S):
+    """(power spectra of the Hann frames, each frame's end time s, bin frequencies Hz, window s)."""
     x, rate = soundfile.read(path, dtype="float64")
     if x.ndim > 1:
         x = x.mean(axis=1)
-    n, hop = int(rate * WINDOW_S), int(rate * HOP_S)
+    n, hop = int(rate * window_s), int(rate * HOP_S)
     starts = np.arange(0, len(x) - n, hop)
     frames = np.stack([x[s:s + n] for s in starts]) * np.hanning(n)
     power = np.abs(np.fft.rfft(frames, axis=1)) ** 2
-    return power, (starts + n) / rate, np.fft.rfftfreq(n, 1 / rate)
+    return power, (starts + n) / rate, np.fft.rfftfreq(n, 1 / rate), window_s
 
 
-def added(power, ends, freqs, t, bands):
+def added(power, ends, freqs, window_s, t, bands, span_s=0.0, times=1.0):
     """The largest power gained within `bands` ((low, high) Hz each) after time t, of the
-    strongest band, over the frame ending REFERENCE_GAP_S before t."""
-    reference = power[np.flatnonzero(ends <= t - REFERENCE_GAP_S)[-1]]
-    after = np.flatnonzero((ends > t) & (ends <= t + LOOK_S + WINDOW_S))
-    gained = np.clip(power[after] - reference, 0, None)
+    strongest band, over each bin's loudest of the frames that ended REFERENCE_GAP_S to
+    REFERENCE_GAP_S + span_s before t (span 0: the last one), in the bins at least `times` that."""
+    before = np.flatnonzero(ends <= t - REFERENCE_GAP_S)
+    reference = power[before[ends[before] > t - REFERENCE_GAP_S - span_s]
+                      if span_s > 0 else before[-1:]].max(axis=0)
+    after = power[np.flatnonzero((ends > t) & (ends <= t + LOOK_S + window_s))]
+    gained = np.where(after >= times * reference, after - reference, 0)
     return max(gained[:, (freqs >= low) & (freqs < high)].sum(axis=1).max() for low, high in bands)
 
 
@@ -64,6 +71,9 @@ def readings(entry, directory):
     mix = spectra(directory / f"{entry['name']}.wav")
     out = {name: scipy.stats.spearmanr(gains, [added(*mix, t, bands) for t, _, _ in hits])[0]
            for name, bands in variants.items()}
+    fine = spectra(directory / f"{entry['name']}.wav", LOUDEST_WINDOW_S)
+    out["loudest"] = scipy.stats.spearmanr(gains, [
+        added(*fine, t, [(0, TOP_HZ)], LOUDEST_SPAN_S, LOUDEST_TIMES) for t, _, _ in hits])[0]
     stem = spectra(directory / f"{entry['name']}.drums.wav")
     out["stem"] = scipy.stats.spearmanr(gains, [added(*stem, t, [(0, TOP_HZ)])
                                                 for t, _, _ in hits])[0]
@@ -78,15 +88,15 @@ def main():
     manifests = music_corpus.build(args.work, args.work / "gm-samples", music.PARTS, 2)
     print(f"isolated hits over a bed at {args.bed:+g} dB: rho of hit gain -> added power, "
           "median / worst over the files")
-    print("| part | instrument | files | whole | by part | strongest | stem |")
-    print("|---|---|---|---|---|---|---|")
+    print("| part | instrument | files | whole | by part | strongest | loudest | stem |")
+    print("|---|---|---|---|---|---|---|---|")
     for part in music.PARTS:
         entries = [e for e in manifests[part]["gain"] if e["bed_db"] == args.bed]
         for instrument in ("kick", "snare"):
             rows = [readings(e, args.work / part) for e in entries
                     if e["instrument"] == instrument]
             cells = [f"{np.median([r[k] for r in rows]):.2f} / {np.min([r[k] for r in rows]):.2f}"
-                     for k in ("whole", "by part", "strongest", "stem")]
+                     for k in ("whole", "by part", "strongest", "loudest", "stem")]
             print(f"| {music.PART_NAMES[part]} | {instrument} | {len(rows)} | "
                   + " | ".join(cells) + " |")
     return 0
