@@ -5,6 +5,8 @@
 // silence stays exact.
 #pragma once
 
+#include <limits>
+
 #include "tactus/dsp/process_spec.hpp"
 
 namespace tactus {
@@ -13,6 +15,7 @@ class Envelope {
   public:
     void prepare(const ProcessSpec& spec) {
         sample_rate_hz_ = spec.sample_rate_hz;
+        shaped_attack_ms_ = shaped_decay_ms_ = kUnset;  // none computed at this rate yet
         reset();
     }
     void reset() noexcept {
@@ -29,6 +32,9 @@ class Envelope {
     double attack_step_ = 1.0, decay_coefficient_ = 0.0, sustain_ = 0.0;
     double level_ = 0.0;
     bool attacking_ = false;
+    // The times the step and coefficient were computed for: most frames repeat them.
+    static constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();  // equals none
+    double shaped_attack_ms_ = kUnset, shaped_decay_ms_ = kUnset;
 };
 
 }  // namespace tactus
