@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "tactus/core/fast_math.hpp"
+#include "tactus/core/vector_clones.hpp"
 
 namespace tactus {
 namespace {
@@ -24,7 +25,7 @@ void Noisiness::prepare(int bins, double bin_hz) {
     }
 }
 
-double Noisiness::compute(std::span<const float> powers) const noexcept {
+TACTUS_VECTOR_CLONES double Noisiness::compute(std::span<const float> powers) const noexcept {
     if (bands_.empty()) return 0.0;
     // The logarithm of the densities' product, taken every kProductBands bands: one library
     // log where each band took one. A density lies in [kSilentPower, 1e11] (the input at

@@ -24,7 +24,7 @@ void FeatureMapping::configure(const Settings& s, P first, double frames_per_sec
     log_in_lo_ = std::log(std::max(in_min_, kSmallest));
     log_in_hi_ = std::log(std::max(in_max_, kSmallest));
     out_lo_ = std::max(out_min_, kSmallest);
-    out_ratio_ = std::max(out_max_, kSmallest) / out_lo_;
+    log_out_ratio_ = std::log(std::max(out_max_, kSmallest) / out_lo_);
 }
 
 double FeatureMapping::shape(double input) const noexcept {
@@ -37,7 +37,7 @@ double FeatureMapping::shape(double input) const noexcept {
     }
     t = std::clamp(t, 0.0, 1.0);
     if (curve_ == MappingCurve::lin) return out_min_ + t * (out_max_ - out_min_);
-    return out_lo_ * std::pow(out_ratio_, t);
+    return out_lo_ * std::exp(t * log_out_ratio_);
 }
 
 double FeatureMapping::input_for(double output) const noexcept {

@@ -38,8 +38,9 @@ class FeatureMapping {
     MappingCurve curve_{};
     double in_min_ = 0, in_max_ = 1, out_min_ = 0, out_max_ = 1;
     // What shape() reads of the ranges, worked out once per configure(): the logs of the input
-    // range's ends (floored), the output range's floored ends and their ratio.
-    double log_in_lo_ = 0, log_in_hi_ = 0, out_lo_ = 1, out_ratio_ = 1;
+    // range's ends (floored), the output range's floored low end and the log of the ratio of
+    // its ends (an exp per frame where a pow cost twice as much).
+    double log_in_lo_ = 0, log_in_hi_ = 0, out_lo_ = 1, log_out_ratio_ = 0;
     double smoothing_ = 0, smoothed_ = 0;
 };
 
