@@ -20,7 +20,8 @@ void Brightness::set_max_hz(double max_hz) noexcept {
     counted_ = static_cast<int>(std::clamp(bins, 1.0, static_cast<double>(log_bin_.size())));
 }
 
-TACTUS_VECTOR_CLONES double Brightness::centroid_hz(std::span<const float> magnitudes) const noexcept {
+TACTUS_VECTOR_CLONES double Brightness::centroid_hz(
+    std::span<const float> magnitudes) const noexcept {
     constexpr double kSilentMagnitudeSum = 1e-9;
     const int n = std::min(counted_, static_cast<int>(magnitudes.size()) - 1);
     const double total = sum_of(magnitudes.data() + 1, n);

@@ -92,7 +92,7 @@ double Oscillator::next(double frequency_hz, double square_mix) noexcept {
     const double two_cos = 2.0 - 4.0 * fundamental * fundamental;  // 2 cos 2x = 2 - 4 sin^2 x
     double previous = -fundamental, current = fundamental;         // sin(-x), sin(x)
     double square = 0.0;
-    constexpr double kMostHarmonics = 1e5;  // bounds the loop for absurdly low f0
+    constexpr double kMostHarmonics = 1e5;                   // bounds the loop for absurdly low f0
     const double ratio = harmonic_limit_hz_ / frequency_hz;  // inf for a subnormal f0: weights 1
     const int last_harmonic = std::max(1, static_cast<int>(std::min(ratio, kMostHarmonics)));
     const auto next = [&] {
