@@ -16,7 +16,9 @@ held-out part side by side.
   hit lowers rho; the felt snare/kick ratio of the median pulse frequencies (felt.centroid_hz over
   felt.PULSE_WINDOW_S, as evaluate.py's per-kit table, bed included); and the latency onset ->
   felt output at half its pulse peak (felt.half_peak_latency_s), over the hits that give a
-  distinct pulse as above (the others' half peak would be the bed's), their count given.
+  distinct pulse as above (the others' half peak would be the bed's), their count given; and
+  Spearman's rho of hit gain -> the strength `tactus onsets` prints for the hit's onset (a hit
+  without one lowest): the hit's own reading, apart from the bed's pulses.
 - Drum part: when `tactus onsets` prints a 4th column (kick, snare, hat or other), the share of
   its onsets matched one-to-one to a hit within +-50 ms whose part is the hit's, per part and
   overall. Where hits coincide the true part is the first of kick, snare, hat among them. And
@@ -43,6 +45,7 @@ PULSE_S = 0.06  # a hit's felt pulse is looked for over this long after it
 BEFORE_S = 0.01  # against the felt level over this long before it
 DISTINCT_DB = 6.0
 ISOLATED_PULSE_S = 0.08
+STRENGTH_MATCH_S = 0.02  # an isolated hit's onset, for its strength
 PRIORITY = ("kick", "snare", "hat")
 NAMED = PRIORITY + ("other",)  # the parts `tactus onsets` names
 DETECTORS = ("tactus", "aubio mkl", "aubio specflux")
@@ -146,17 +149,23 @@ def count_parts(parts, labels, matches):
 
 def analyse_gain(tactus, entry, directory, renders, preset):
     """One isolated-hit file's (gain dB, felt peak, felt Hz, half-peak latency s or None when the
-    hit gives no distinct pulse) per hit."""
+    hit gives no distinct pulse, the strength `tactus onsets` gives its onset or None when none
+    lies within +-STRENGTH_MATCH_S) per hit."""
     wav = directory / f"{entry['name']}.wav"
     hits = read_hits(directory / f"{entry['name']}.hits.csv")
     signal, envelope, rate = felt_render(tactus, wav, renders, preset)
+    onsets = np.array([[float(r[0]), float(r[2])] for r in onset_rows(tactus, wav, preset)]
+                      ).reshape(-1, 2)
     out = []
     for t, _, gain in hits:
         segment = felt.pulse(signal, rate, t, ISOLATED_PULSE_S)
         latency = felt.half_peak_latency_s(segment, rate) if gives_pulse(envelope, rate, t) \
             else None
         hz = felt.centroid_hz(felt.pulse(signal, rate, t), rate)
-        out.append((gain, felt.peak(segment), hz, latency))
+        nearest = np.argmin(np.abs(onsets[:, 0] - t)) if len(onsets) else None
+        strength = onsets[nearest, 1] if nearest is not None and \
+            abs(onsets[nearest, 0] - t) <= STRENGTH_MATCH_S else None
+        out.append((gain, felt.peak(segment), hz, latency, strength))
     return out
 
 
@@ -222,16 +231,19 @@ def unmatched_counts(part, level):
     return {p: sum(r[p] for r in results) for p in NAMED}
 
 
-def rhos(part, level):
-    """[(rho of gain -> felt peak, 'kit instrument')] of every isolated-hit file at `level`."""
-    return [(scipy.stats.spearmanr([g for g, *_ in hits], [p for _, p, _, _ in hits]).correlation,
+def rhos(part, level, reading=1):
+    """[(rho of gain -> a reading, 'kit instrument')] of every isolated-hit file at `level`; the
+    reading: 1 the felt peak, 4 tactus's strength (a hit without an onset lowest)."""
+    def value(hit):
+        return -np.inf if hit[reading] is None else hit[reading]
+    return [(scipy.stats.spearmanr([h[0] for h in hits], [value(h) for h in hits]).correlation,
              f"{kit} {instrument}") for (kit, instrument), hits in part["gain"][level].items()]
 
 
 def snare_kick(part, level):
     """[(felt snare/kick of the median pulse frequencies, kit)] at `level`."""
     files = part["gain"][level]
-    hz = {key: statistics.median(f for _, _, f, _ in hits) for key, hits in files.items()}
+    hz = {key: statistics.median(h[2] for h in hits) for key, hits in files.items()}
     return [(hz[(kit, "snare")] / hz[(kit, "kick")], kit)
             for kit in sorted({k for k, _ in files})]
 
@@ -377,7 +389,10 @@ def section(result):
               "peak; snare/kick: of the median felt pulse frequencies (felt centroid over "
               f"{1000 * felt.PULSE_WINDOW_S:.0f} ms, as in the per-kit table); latency: onset -> "
               "felt output at half its pulse peak, over the hits giving a distinct pulse (as "
-              "above, without the onset condition).", "",
+              "above, without the onset condition); tactus strength: the strength `tactus "
+              f"onsets` gives the onset within +-{1000 * STRENGTH_MATCH_S:.0f} ms of the hit (a "
+              "hit without one lowest), the hit's own reading, whatever the bed's pulses do to "
+              "the felt peak.", "",
               "| figure | bed | " + " | ".join(names) + " |", "|---|---" + rule]
     figures = [("gain -> felt peak rho, worst", lambda p, lv: worst_cell(rhos(p, lv), 3)),
                ("gain -> felt peak rho, median",
@@ -385,7 +400,10 @@ def section(result):
                ("felt snare/kick, worst kit", lambda p, lv: worst_cell(snare_kick(p, lv), 2)),
                ("felt snare/kick, median over kits",
                 lambda p, lv: f"{np.median([r for r, _ in snare_kick(p, lv)]):.2f}"),
-               ("onset -> felt half peak, median / p95 ms", latency_cell)]
+               ("onset -> felt half peak, median / p95 ms", latency_cell),
+               ("gain -> tactus strength rho, median / worst",
+                lambda p, lv: f"{np.median([r for r, _ in rhos(p, lv, 4)]):.3f} / "
+                              + worst_cell(rhos(p, lv, 4), 3))]
     for label, cell in figures:
         for level in GAIN_LEVELS:
             lines.append(f"| {label} | {level_label(level)} | " +
