@@ -19,7 +19,6 @@ import os
 import shutil
 import statistics
 import subprocess
-import time
 import urllib.parse
 
 import numpy as np
@@ -104,12 +103,16 @@ def sent_settings(driver):
 
 
 def control(driver, key):
-    """The control of `key`, its group opened (a click on the group's title) and scrolled to."""
+    """The control of `key`, its group opened and scrolled to, once it is shown. The group is
+    opened by the script, not by a click on its title: on a loaded machine the page's layout can
+    move under a pointer click as the renders of earlier changes come in."""
     element = driver.find_element("id", "param-" + key)
-    if not driver.execute_script("return arguments[0].closest('details').open", element):
-        driver.execute_script("return arguments[0].closest('details').firstChild",
-                              element).click()
-    driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", element)
+
+    def shown(_):
+        driver.execute_script("arguments[0].closest('details').open = true;"
+                              "arguments[0].scrollIntoView({block: 'center'})", element)
+        return element.is_displayed()
+    WebDriverWait(driver, 10).until(shown)
     return element
 
 
