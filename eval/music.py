@@ -147,25 +147,28 @@ def count_parts(parts, labels, matches):
     return counts
 
 
+IsolatedHit = collections.namedtuple("IsolatedHit", "gain_db peak hz latency_s strength_db")
+
+
 def analyse_gain(tactus, entry, directory, renders, preset):
-    """One isolated-hit file's (gain dB, felt peak, felt Hz, half-peak latency s or None when the
-    hit gives no distinct pulse, the strength `tactus onsets` gives its onset or None when none
-    lies within +-STRENGTH_MATCH_S) per hit."""
+    """One isolated-hit file's IsolatedHit per hit: its gain, felt peak and felt Hz; its
+    half-peak latency, None when it gives no distinct pulse; the strength `tactus onsets` gives
+    its onset (matched one-to-one within +-STRENGTH_MATCH_S), None without one."""
     wav = directory / f"{entry['name']}.wav"
     hits = read_hits(directory / f"{entry['name']}.hits.csv")
     signal, envelope, rate = felt_render(tactus, wav, renders, preset)
-    onsets = np.array([[float(r[0]), float(r[2])] for r in onset_rows(tactus, wav, preset)]
-                      ).reshape(-1, 2)
+    rows = onset_rows(tactus, wav, preset)
+    matches = dict(mir_eval.util.match_events(np.array([t for t, _, _ in hits]),
+                                              np.array([float(r[0]) for r in rows]),
+                                              STRENGTH_MATCH_S))
     out = []
-    for t, _, gain in hits:
+    for i, (t, _, gain) in enumerate(hits):
         segment = felt.pulse(signal, rate, t, ISOLATED_PULSE_S)
         latency = felt.half_peak_latency_s(segment, rate) if gives_pulse(envelope, rate, t) \
             else None
         hz = felt.centroid_hz(felt.pulse(signal, rate, t), rate)
-        nearest = np.argmin(np.abs(onsets[:, 0] - t)) if len(onsets) else None
-        strength = onsets[nearest, 1] if nearest is not None and \
-            abs(onsets[nearest, 0] - t) <= STRENGTH_MATCH_S else None
-        out.append((gain, felt.peak(segment), hz, latency, strength))
+        strength = float(rows[matches[i]][2]) if i in matches else None
+        out.append(IsolatedHit(gain, felt.peak(segment), hz, latency, strength))
     return out
 
 
@@ -231,19 +234,20 @@ def unmatched_counts(part, level):
     return {p: sum(r[p] for r in results) for p in NAMED}
 
 
-def rhos(part, level, reading=1):
-    """[(rho of gain -> a reading, 'kit instrument')] of every isolated-hit file at `level`; the
-    reading: 1 the felt peak, 4 tactus's strength (a hit without an onset lowest)."""
+def rhos(part, level, reading="peak"):
+    """[(rho of gain -> a reading of IsolatedHit, 'kit instrument')] of every isolated-hit file at
+    `level`: the felt peak, or tactus's strength_db (a hit without an onset lowest)."""
     def value(hit):
-        return -np.inf if hit[reading] is None else hit[reading]
-    return [(scipy.stats.spearmanr([h[0] for h in hits], [value(h) for h in hits]).correlation,
+        v = getattr(hit, reading)
+        return -np.inf if v is None else v
+    return [(scipy.stats.spearmanr([h.gain_db for h in hits], [value(h) for h in hits]).correlation,
              f"{kit} {instrument}") for (kit, instrument), hits in part["gain"][level].items()]
 
 
 def snare_kick(part, level):
     """[(felt snare/kick of the median pulse frequencies, kit)] at `level`."""
     files = part["gain"][level]
-    hz = {key: statistics.median(h[2] for h in hits) for key, hits in files.items()}
+    hz = {key: statistics.median(h.hz for h in hits) for key, hits in files.items()}
     return [(hz[(kit, "snare")] / hz[(kit, "kick")], kit)
             for kit in sorted({k for k, _ in files})]
 
@@ -251,7 +255,7 @@ def snare_kick(part, level):
 def latencies(part, level):
     """Half-peak latencies (s) of the hits giving a distinct pulse, and the number of hits."""
     hits = [h for file in part["gain"][level].values() for h in file]
-    return [h[3] for h in hits if h[3] is not None], len(hits)
+    return [h.latency_s for h in hits if h.latency_s is not None], len(hits)
 
 
 # Cells.
@@ -402,8 +406,8 @@ def section(result):
                 lambda p, lv: f"{np.median([r for r, _ in snare_kick(p, lv)]):.2f}"),
                ("onset -> felt half peak, median / p95 ms", latency_cell),
                ("gain -> tactus strength rho, median / worst",
-                lambda p, lv: f"{np.median([r for r, _ in rhos(p, lv, 4)]):.3f} / "
-                              + worst_cell(rhos(p, lv, 4), 3))]
+                lambda p, lv: f"{np.median([r for r, _ in rhos(p, lv, 'strength_db')]):.3f} / "
+                              + worst_cell(rhos(p, lv, "strength_db"), 3))]
     for label, cell in figures:
         for level in GAIN_LEVELS:
             lines.append(f"| {label} | {level_label(level)} | " +
