@@ -24,7 +24,7 @@
 namespace tactus::cli {
 namespace {
 
-constexpr double kTailS = 1.0;          // recorded after the sweep: the device delay and the decay
+constexpr double kSweepTailS = 1.0;     // recorded after the sweep: the device delay and the decay
 constexpr double kTimeoutMarginS = 30;  // a busy machine, a slow server
 
 struct CalibrateOptions {
@@ -62,7 +62,7 @@ void calibrate(const CalibrateOptions& o) {
                          .seconds = o.seconds,
                          .level = db_to_gain(o.level_db)};
     live::SweepRecorder recorder(exponential_sweep(spec), out_channel + 1, out_channel,
-                                 static_cast<int>(kTailS * rate_hz));
+                                 static_cast<int>(kSweepTailS * rate_hz));
     std::cerr << fmt::format(
         "tactus: calibrate: a {:g} s sweep {:g}-{:g} Hz at {:g} dBFS on {} channel {}, recording "
         "{} channel {}\n",
@@ -71,7 +71,7 @@ void calibrate(const CalibrateOptions& o) {
     stream.start(recorder);
     recorder.begin();
     const auto give_up = std::chrono::steady_clock::now() +
-                         std::chrono::duration<double>(o.seconds + kTailS + kTimeoutMarginS);
+                         std::chrono::duration<double>(o.seconds + kSweepTailS + kTimeoutMarginS);
     while (!recorder.done()) {
         if (stream.lost()) throw std::runtime_error("calibrate: the audio device stopped");
         if (std::chrono::steady_clock::now() > give_up)

@@ -42,7 +42,8 @@ constexpr double kDefaultOscRateHz = 100;
 constexpr auto kTick = std::chrono::milliseconds(50);   // the main loop's pace
 constexpr double kStatusPeriodS = 0.5;                  // the status line's redraw
 constexpr auto kRetryPeriod = std::chrono::seconds(1);  // a lost device's retries
-constexpr double kTailS = 0.25;  // after the player's last frame: the engine's latency and more
+constexpr double kPlayerTailS =
+    0.25;  // after the player's last frame: the engine's latency and more
 
 std::atomic<bool> g_stop{false};
 extern "C" void request_stop(int) {
@@ -232,8 +233,8 @@ void live_run(const LiveOptions& o) {
         }
         if (player && player->finished()) {
             if (!finished_at) finished_at = now;
-            if (now - *finished_at >=
-                std::chrono::duration<double>(kTailS + 4.0 * onset_to_pulse.samples() / rate_hz))
+            if (now - *finished_at >= std::chrono::duration<double>(
+                                          kPlayerTailS + 4.0 * onset_to_pulse.samples() / rate_hz))
                 break;
         }
         if (!reconnector && stream->lost()) {

@@ -12,7 +12,7 @@
 namespace tactus {
 namespace {
 
-constexpr double kCornerDb = -3.0102999566;  // 20 log10(1/sqrt(2))
+using test::kCornerDb;
 constexpr double kButterworthQ = 0.70710678118654752;
 
 class BiquadAtRate : public ::testing::TestWithParam<double> {};

@@ -18,13 +18,14 @@
 
 #include "support/run_cli.hpp"
 #include "support/signals.hpp"
+#include "support/sounds.hpp"
 #include "tactus/io/audio_reader.hpp"
 #include "tactus/params/params.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kAmen = "/usr/share/sonic-pi/samples/loop_amen_full.flac";
+using tactus::test::kAmen;
 
 using tactus::test::Cli;
 using tactus::test::csv_numbers;

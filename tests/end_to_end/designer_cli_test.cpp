@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "support/run_cli.hpp"
+#include "support/sounds.hpp"
 #include "tactus/io/audio_reader.hpp"
 
 namespace {
@@ -23,7 +24,7 @@ using tactus::test::Cli;
 using tactus::test::info_of;
 using Result = tactus::test::CliResult;
 
-const std::string kAmen = "/usr/share/sonic-pi/samples/loop_amen_full.flac";
+using tactus::test::kAmen;
 const std::string kTick = "/usr/share/sonic-pi/samples/elec_tick.flac";  // 19 ms
 const std::string kProgram = TACTUS_CLI;
 

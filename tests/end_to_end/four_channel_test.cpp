@@ -11,6 +11,7 @@
 
 #include "support/engine_blocks.hpp"
 #include "support/signals.hpp"
+#include "support/sounds.hpp"
 #include "tactus/core/units.hpp"
 #include "tactus/engine/engine.hpp"
 #include "tactus/io/audio_reader.hpp"
@@ -21,9 +22,9 @@ namespace tactus {
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kAmen = "/usr/share/sonic-pi/samples/loop_amen_full.flac";
 using perception::Channel;
 using perception::info;
+using tactus::test::kAmen;
 
 std::vector<float> render(const MonoAudio& audio, const Settings& settings) {
     Engine engine(settings);

@@ -23,6 +23,7 @@
 
 #include "support/engine_blocks.hpp"
 #include "support/signals.hpp"
+#include "support/sounds.hpp"
 #include "support/watchdog.hpp"
 #include "tactus/core/units.hpp"
 #include "tactus/io/actuator_file.hpp"
@@ -32,7 +33,7 @@
 namespace tactus {
 namespace {
 
-const std::filesystem::path kAmen = "/usr/share/sonic-pi/samples/loop_amen_full.flac";
+using tactus::test::kAmen;
 
 // Runs x through a freshly prepared engine in blocks whose sizes cycle through `blocks`.
 std::vector<float> render(const std::vector<float>& x, double fs, const std::vector<int>& blocks,

@@ -12,6 +12,7 @@
 #include <set>
 #include <vector>
 
+#include "support/sounds.hpp"
 #include "tactus/engine/engine.hpp"
 #include "tactus/io/audio_reader.hpp"
 
@@ -79,7 +80,7 @@ TEST(OnsetDecisions, AnOnsetOvertakenIsReportedUndecided) {
 }
 
 TEST(OnsetDecisions, EveryOnsetOfTheAmenBreakIsDecidedAfterTheSettleTime) {
-    const std::filesystem::path amen = "/usr/share/sonic-pi/samples/loop_amen_full.flac";
+    const std::filesystem::path amen = test::kAmen;
     if (!std::filesystem::exists(amen)) GTEST_SKIP() << amen << " not installed";
     MonoAudio audio = read_mono(amen);
     // 50 ms of silence after it: the last onset, near the end, is decided too.

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "support/engine_blocks.hpp"
+#include "support/sounds.hpp"
 #include "tactus/dsp/real_fft.hpp"
 #include "tactus/engine/engine.hpp"
 #include "tactus/io/audio_reader.hpp"
@@ -21,7 +22,7 @@
 namespace tactus {
 namespace {
 
-const std::filesystem::path kAmen = "/usr/share/sonic-pi/samples/loop_amen_full.flac";
+using tactus::test::kAmen;
 constexpr double kReferenceHz = 44100;
 constexpr double kToleranceS = 0.001, kWithHighBandToleranceS = 0.005;
 // At 22.05 kHz the high band's top edge sits near Nyquist: two of the Amen break's onsets are

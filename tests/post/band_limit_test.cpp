@@ -13,7 +13,7 @@
 namespace tactus {
 namespace {
 
-constexpr double kCornerDb = -3.0102999566;
+using test::kCornerDb;
 
 // |H|^2 of an order-n bilinear Butterworth pair pre-warped at its corners, in dB.
 double closed_form_db(double f, double low, double high, int order, double fs) {
@@ -23,12 +23,12 @@ double closed_form_db(double f, double low, double high, int order, double fs) {
            10.0 * std::log10(1.0 + std::pow(rl, 2 * order));
 }
 
-struct Case {
+struct BandLimitSetting {
     double fs;
     int order;
 };
 
-class BandLimitCase : public ::testing::TestWithParam<Case> {};
+class BandLimitCase : public ::testing::TestWithParam<BandLimitSetting> {};
 
 TEST_P(BandLimitCase, DesignedResponse) {
     const auto [fs, order] = GetParam();
@@ -57,8 +57,9 @@ TEST_P(BandLimitCase, MeasuredResponseMatchesDesign) {
 }
 
 INSTANTIATE_TEST_SUITE_P(RatesAndOrders, BandLimitCase,
-                         ::testing::Values(Case{44100, 2}, Case{44100, 4}, Case{44100, 8},
-                                           Case{192000, 2}, Case{192000, 4}, Case{8000, 2}));
+                         ::testing::Values(BandLimitSetting{44100, 2}, BandLimitSetting{44100, 4},
+                                           BandLimitSetting{44100, 8}, BandLimitSetting{192000, 2},
+                                           BandLimitSetting{192000, 4}, BandLimitSetting{8000, 2}));
 
 TEST(BandLimit, NoLowpassAtOrAboveFortyFivePercentOfTheRate) {
     BandLimit band;

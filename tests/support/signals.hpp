@@ -13,6 +13,7 @@
 namespace tactus::test {
 
 constexpr double kTestPi = 3.14159265358979323846;
+constexpr double kCornerDb = -3.0102999566;  // 20 log10(1/sqrt(2)): a Butterworth corner
 
 // splitmix64: the same sequence on every platform (std:: distributions are unspecified).
 class Random {

@@ -23,11 +23,11 @@ void run_past_peak(Envelope& env) {
     }
 }
 
-struct Case {
+struct EnvelopeSetting {
     double fs, attack_ms, decay_ms;
 };
 
-class EnvelopeCase : public ::testing::TestWithParam<Case> {};
+class EnvelopeCase : public ::testing::TestWithParam<EnvelopeSetting> {};
 
 TEST_P(EnvelopeCase, SamplesTheContinuousAttackAndDecay) {
     const auto [fs, attack_ms, decay_ms] = GetParam();
@@ -68,10 +68,11 @@ TEST_P(EnvelopeCase, DecayFallsSixtyDbInDecayMs) {
     EXPECT_EQ(env.next(), 0.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Shapes, EnvelopeCase,
-                         ::testing::Values(Case{48000, 1, 150}, Case{48000, 10, 5},
-                                           Case{44100, 0.5, 1000}, Case{8000, 100, 5000},
-                                           Case{192000, 3, 60}, Case{8000, 0.1, 5}));
+INSTANTIATE_TEST_SUITE_P(
+    Shapes, EnvelopeCase,
+    ::testing::Values(EnvelopeSetting{48000, 1, 150}, EnvelopeSetting{48000, 10, 5},
+                      EnvelopeSetting{44100, 0.5, 1000}, EnvelopeSetting{8000, 100, 5000},
+                      EnvelopeSetting{192000, 3, 60}, EnvelopeSetting{8000, 0.1, 5}));
 
 TEST(Envelope, RetriggerDuringDecayRisesFromTheCurrentLevel) {
     const double fs = 48000;

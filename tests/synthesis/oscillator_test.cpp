@@ -36,11 +36,11 @@ double db(double ratio) {
     return 20.0 * std::log10(ratio);
 }
 
-struct Case {
+struct OscillatorSetting {
     double fs, limit_hz, f0;
 };
 
-class OscillatorCase : public ::testing::TestWithParam<Case> {};
+class OscillatorCase : public ::testing::TestWithParam<OscillatorSetting> {};
 
 TEST_P(OscillatorCase, SineHasASingleSpectralPeak) {
     const auto [fs, limit, f0] = GetParam();
@@ -81,13 +81,14 @@ TEST_P(OscillatorCase, SquareHarmonicsFollowOneOverKBelowTheLimit) {
         << "aliased energy below f0 " << f0;
 }
 
-INSTANTIATE_TEST_SUITE_P(RatesAndPitches, OscillatorCase,
-                         ::testing::Values(Case{48000, 1000, 50}, Case{48000, 1000, 73.3},
-                                           Case{48000, 1000, 101.7}, Case{48000, 1000, 237.1},
-                                           Case{48000, 1000, 320}, Case{48000, 2000, 61.9},
-                                           Case{8000, 1000, 55.5}, Case{8000, 1000, 123.4},
-                                           Case{8000, 1000, 300}, Case{8000, 4000, 97.3},
-                                           Case{8000, 4000, 440}));
+INSTANTIATE_TEST_SUITE_P(
+    RatesAndPitches, OscillatorCase,
+    ::testing::Values(OscillatorSetting{48000, 1000, 50}, OscillatorSetting{48000, 1000, 73.3},
+                      OscillatorSetting{48000, 1000, 101.7}, OscillatorSetting{48000, 1000, 237.1},
+                      OscillatorSetting{48000, 1000, 320}, OscillatorSetting{48000, 2000, 61.9},
+                      OscillatorSetting{8000, 1000, 55.5}, OscillatorSetting{8000, 1000, 123.4},
+                      OscillatorSetting{8000, 1000, 300}, OscillatorSetting{8000, 4000, 97.3},
+                      OscillatorSetting{8000, 4000, 440}));
 
 TEST(Oscillator, MixIsLinearBetweenSineAndSquare) {
     const double fs = 48000, f0 = 87.3;
