@@ -6,6 +6,9 @@
 #                     (bench/startup_bench.cpp, counted inside the call alone)
 #   Engine::process   per second of 48 kHz mono audio (the Amen break), default preset,
 #                     512-frame blocks
+#   per block         Engine::process of one 64-frame block at 48 kHz (the Amen break, default
+#                     preset, 2 s after a second's warm-up): instructions at the median, 99th
+#                     percentile and largest; a block's work, apart from caches and the machine
 #   structural swap   Engine::set() of the hop on the control thread of a running engine (64-frame
 #                     blocks): the new pipeline built and primed; median and largest of 20 (ms,
 #                     this machine, whatever else runs), and its instructions
@@ -43,6 +46,13 @@ whole=$(count -- "$tactus" render "$work/ten_ms.wav" -o "$work/out.wav" --force)
 first=$(inside measured_first_prepare prepare)
 again=$(inside measured_prepare_again prepare)
 process=$(inside measured_process process $seconds)
+# One callgrind dump per block (--dump-after), each holding that block's count alone.
+valgrind --tool=callgrind --callgrind-out-file="$work/block" --collect-atstart=no \
+  --toggle-collect=measured_block --dump-after=measured_block "$bench" blocks 2 \
+  >"$work/stdout" 2>"$work/log"
+read -r block_p50 block_p99 block_max < <(
+  for dump in "$work"/block.*; do sed -n 's/^totals: \([0-9]*\).*/\1/p' "$dump"; done |
+    sort -n | awk '{ n[NR] = $1 } END { print n[int(NR / 2) + 1], n[int(NR * 0.99) + 1], n[NR] }')
 swaps=4
 swap_instructions=$(inside measured_swap swap $swaps)
 read -r swap_median swap_max < <("$bench" swap 20)
@@ -52,6 +62,8 @@ printf '%-58s %14s\n' "Engine::prepare, the first in the process" "$first"
 printf '%-58s %14s\n' "Engine::prepare, another engine, same settings" "$again"
 printf '%-58s %14s\n' "Engine::process, per second of 48 kHz mono (default preset)" \
   "$((process / seconds))"
+printf '%-58s %14s\n' "Engine::process, a 64-frame block: median / p99 / largest" \
+  "$block_p50 / $block_p99 / $block_max"
 printf '%-58s %14s\n' "structural swap (control thread), instructions each" \
   "$((swap_instructions / swaps))"
 printf '%-58s %14s\n' "structural swap (control thread), ms median / largest" \

@@ -5,6 +5,9 @@
 //                           Pd `prepare` or a new pipeline pays once the process has started)
 //   startup_bench process S [B]  Engine::process on S seconds of the Amen break at 48 kHz mono
 //                           (the default preset, B-frame blocks, 512 unless given)
+//   startup_bench blocks S  Engine::process on S seconds of the Amen break at 48 kHz mono in
+//                           64-frame blocks (a live device's period) after a second's warm-up,
+//                           each block a call of its own: instructions per block
 //   startup_bench swap N    N structural changes (the hop, 2 <-> 3 ms) on the control thread of
 //                           an engine running at 48 kHz in 64-frame blocks: prints the median
 //                           and largest time of Engine::set() in ms
@@ -58,6 +61,10 @@ __attribute__((noinline)) void measured_process(Engine& engine, const std::vecto
                                                 int block) {
     run(engine, in, block);
 }
+__attribute__((noinline)) void measured_block(Engine& engine, const float* in, float* out,
+                                              int block) {
+    engine.process(in, out, block);
+}
 __attribute__((noinline)) void measured_swap(Engine& engine, double hop_ms) {
     engine.set(tactus::P::analysis_hop_ms, hop_ms);
 }
@@ -77,6 +84,21 @@ int main(int argc, char** argv) {
         Engine engine;
         engine.prepare(kRateHz, block);
         measured_process(engine, in, block);
+        return 0;
+    }
+    if (mode == "blocks" && argc > 2) {
+        constexpr int kBlock = 64;
+        constexpr double kWarmUpS = 1.0;  // the analysis's history and the onset median filled
+        const std::vector<float> in = amen_48k(kWarmUpS + std::atof(argv[2]));
+        const auto warm_up = static_cast<size_t>(kWarmUpS * kRateHz);
+        Engine engine;
+        engine.prepare(kRateHz, kBlock);
+        run(engine,
+            std::vector<float>(in.begin(), in.begin() + static_cast<std::ptrdiff_t>(warm_up)),
+            kBlock);
+        std::vector<float> out(kBlock);
+        for (size_t at = warm_up; at + kBlock <= in.size(); at += kBlock)
+            measured_block(engine, in.data() + at, out.data(), kBlock);
         return 0;
     }
     if (mode == "swap" && argc > 2) {
@@ -101,6 +123,7 @@ int main(int argc, char** argv) {
         std::printf("%.2f %.2f\n", ms[ms.size() / 2], ms.back());
         return 0;
     }
-    std::fprintf(stderr, "usage: %s prepare | process SECONDS | swap COUNT\n", argv[0]);
+    std::fprintf(stderr, "usage: %s prepare | process SECONDS | blocks SECONDS | swap COUNT\n",
+                 argv[0]);
     return 2;
 }
