@@ -91,7 +91,7 @@ bench: build
 	$(BUILD)/bin/tactus_bench
 
 # Start-up cost in instructions (callgrind): a 10 ms render, Engine::prepare, Engine::process per
-# audio second, a structural swap (bench/instructions.sh).
+# audio second and per 64-frame block, a structural swap (bench/instructions.sh).
 bench-instructions: build
 	bash bench/instructions.sh $(BUILD)
 
