@@ -5,6 +5,7 @@
 
 #include "tactus/analysis/band_power.hpp"
 #include "tactus/core/fast_math.hpp"
+#include "tactus/core/vector_clones.hpp"
 
 namespace tactus {
 namespace {
@@ -39,9 +40,17 @@ void PartFeatures::reset() noexcept {
     has_recent_ = false;
 }
 
-double log_flatness(const float* powers, int count) noexcept {
+// The logarithms a chunk at a time into a small array, a loop the compiler vectorises, then
+// summed in order in double precision: the same sum, bit for bit, as one scalar loop.
+TACTUS_VECTOR_CLONES double log_flatness(const float* powers, int count) noexcept {
+    constexpr int kChunk = 64;
+    float logs[kChunk];
     double log_sum = 0;
-    for (int k = 0; k < count; ++k) log_sum += fast_log(powers[k] + kTinyPower);
+    for (int start = 0; start < count; start += kChunk) {
+        const int n = std::min(kChunk, count - start);
+        for (int k = 0; k < n; ++k) logs[k] = fast_log(powers[start + k] + kTinyPower);
+        for (int k = 0; k < n; ++k) log_sum += logs[k];
+    }
     const int n = std::max(1, count);
     const double mean = sum_of(powers, std::max(0, count)) / n + kTinyPower;
     return log_sum / n - std::log(mean);
