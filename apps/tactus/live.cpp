@@ -42,8 +42,8 @@ constexpr double kDefaultOscRateHz = 100;
 constexpr auto kTick = std::chrono::milliseconds(50);   // the main loop's pace
 constexpr double kStatusPeriodS = 0.5;                  // the status line's redraw
 constexpr auto kRetryPeriod = std::chrono::seconds(1);  // a lost device's retries
-constexpr double kPlayerTailS =
-    0.25;  // after the player's last frame: the engine's latency and more
+// Played on after the player's last frame: the engine's latency and more.
+constexpr double kPlayerTailS = 0.25;
 
 std::atomic<bool> g_stop{false};
 extern "C" void request_stop(int) {

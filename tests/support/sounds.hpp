@@ -1,4 +1,4 @@
-// The recordings the tests read, from Debian's sonic-pi package (scripts/setup.sh installs it).
+// The recordings the tests read, from Debian's sonic-pi-samples (scripts/setup.sh installs it).
 #pragma once
 
 #include <string>
