@@ -46,12 +46,11 @@ whole=$(count -- "$tactus" render "$work/ten_ms.wav" -o "$work/out.wav" --force)
 first=$(inside measured_first_prepare prepare)
 again=$(inside measured_prepare_again prepare)
 process=$(inside measured_process process $seconds)
-# One callgrind dump per block (--dump-after), each holding that block's count alone.
-valgrind --tool=callgrind --callgrind-out-file="$work/block" --collect-atstart=no \
-  --toggle-collect=measured_block --dump-after=measured_block "$bench" blocks 2 \
-  >"$work/stdout" 2>"$work/log"
+# One callgrind dump per block (--dump-after: $work/out.1, .2, ...), each that block's count alone.
+count --collect-atstart=no --toggle-collect=measured_block --dump-after=measured_block -- \
+  "$bench" blocks 2 >/dev/null
 read -r block_p50 block_p99 block_max < <(
-  for dump in "$work"/block.*; do sed -n 's/^totals: \([0-9]*\).*/\1/p' "$dump"; done |
+  for dump in "$work"/out.*; do sed -n 's/^totals: \([0-9]*\).*/\1/p' "$dump"; done |
     sort -n | awk '{ n[NR] = $1 } END { print n[int(NR / 2) + 1], n[int(NR * 0.99) + 1], n[NR] }')
 swaps=4
 swap_instructions=$(inside measured_swap swap $swaps)

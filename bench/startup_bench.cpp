@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -41,7 +42,7 @@ std::vector<float> amen_48k(double seconds) {
     return out;
 }
 
-void run(Engine& engine, const std::vector<float>& in, int block) {
+void run(Engine& engine, std::span<const float> in, int block) {
     std::vector<float> out(static_cast<size_t>(block));
     for (size_t at = 0; at + static_cast<size_t>(block) <= in.size(); at += block)
         engine.process(in.data() + at, out.data(), block);
@@ -93,9 +94,7 @@ int main(int argc, char** argv) {
         const auto warm_up = static_cast<size_t>(kWarmUpS * kRateHz);
         Engine engine;
         engine.prepare(kRateHz, kBlock);
-        run(engine,
-            std::vector<float>(in.begin(), in.begin() + static_cast<std::ptrdiff_t>(warm_up)),
-            kBlock);
+        run(engine, std::span(in).first(warm_up), kBlock);
         std::vector<float> out(kBlock);
         for (size_t at = warm_up; at + kBlock <= in.size(); at += kBlock)
             measured_block(engine, in.data() + at, out.data(), kBlock);
@@ -105,8 +104,7 @@ int main(int argc, char** argv) {
         const int swaps = std::max(1, std::atoi(argv[2]));
         constexpr int kBlock = 64;
         const std::vector<float> in = amen_48k(Engine::kPrimeSeconds + 0.5);
-        const std::vector<float> between(in.begin(),
-                                         in.begin() + 20 * static_cast<std::ptrdiff_t>(kBlock));
+        const auto between = std::span(in).first(20 * size_t{kBlock});
         Engine engine;
         engine.prepare(kRateHz, kBlock);
         run(engine, in, kBlock);  // the input ring full, as in a running engine
