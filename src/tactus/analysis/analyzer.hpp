@@ -25,6 +25,7 @@
 #include "tactus/analysis/onset_detector.hpp"
 #include "tactus/analysis/pitch_yin.hpp"
 #include "tactus/analysis/stft_frame.hpp"
+#include "tactus/dsp/biquad_cascade.hpp"
 #include "tactus/dsp/dc_blocker.hpp"
 #include "tactus/dsp/process_spec.hpp"
 #include "tactus/dsp/resampler.hpp"
@@ -89,6 +90,8 @@ class Analyzer {
   private:
     static int hop_for(const Settings& settings, double analysis_rate_hz);
     static HitSettings hit_settings(const Settings& settings);
+    template <bool k_weigh>
+    void filter_input(int count) noexcept;
 
     Resampler resampler_;
     DcBlocker dc_blocker_;
@@ -101,6 +104,9 @@ class Analyzer {
     OnsetDetector onsets_;
     HitAnalysis hits_;
     BandPower low_band_, high_band_;  // input rate
+    // The filters of loudness_, low_band_ and high_band_, in that order, run side by side.
+    CascadeLanes<KWeighting::kSections, BandPower::kLowSections, BandPower::kHighSections>
+        input_filters_;
     Features features_;
     std::vector<float> clean_;     // sanitised input, one hop
     std::vector<float> analysed_;  // clean_ at the analysis rate

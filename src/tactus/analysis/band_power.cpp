@@ -10,7 +10,7 @@ namespace tactus {
 
 void BandPower::prepare(Band band, double sample_rate_hz, int window_frames) {
     active_ = band == Band::low || sample_rate_hz / 2 >= kHighTopHz * kTopMargin;
-    section_count_ = band == Band::low ? 2 : 4;
+    section_count_ = band == Band::low ? kLowSections : kHighSections;
     for (int s = 0; s < 2; ++s) {
         const double q = butterworth_q(4, s);
         if (band == Band::low) {
@@ -43,22 +43,26 @@ void BandPower::reset() noexcept {
 void BandPower::process(const float* samples, int count) noexcept {
     if (!active_) return;
     // Summed sample by sample into the frame's total: the same order for any block split.
-    double energy = energy_[position_];
+    Energy energy = open();
     const auto input = [&](int i) { return static_cast<double>(samples[i]); };
-    const auto add = [&](int, double y) { energy += y * y; };
-    if (section_count_ == 2)
-        cascade_each<2>(sections_.data(), count, input, add);
+    const auto add = [&](int, double y) { energy.take(y * y); };
+    if (section_count_ == kLowSections)
+        cascade_each<kLowSections>(sections_.data(), count, input, add);
     else
-        cascade_each<4>(sections_.data(), count, input, add);
-    energy_[position_] = energy;
-    samples_[position_] += count;
+        cascade_each<kHighSections>(sections_.data(), count, input, add);
+    close(energy, count);
+}
+
+void BandPower::close(Energy energy, int count) noexcept {
+    energy_[static_cast<size_t>(position_)] = energy.sum;
+    samples_[static_cast<size_t>(position_)] += count;
 }
 
 BandPower::Power BandPower::frame() noexcept {
     const int frames = static_cast<int>(energy_.size());
     double energy = 0, samples = 0, weighted_energy = 0, weighted_samples = 0;
-    for (int j = 0; j < frames; ++j) {
-        const int slot = (position_ + frames - j) % frames;
+    // Frame j back is in slot position_ - j, wrapping from 0 to the end (no division a frame).
+    for (int j = 0, slot = position_; j < frames; ++j, slot = slot == 0 ? frames - 1 : slot - 1) {
         energy += energy_[slot];
         samples += samples_[slot];
         weighted_energy += weight_[j] * energy_[slot];

@@ -12,7 +12,7 @@
 // (stft_frame.hpp), so that the two read a hit's shares alike. An input rate whose
 // Nyquist frequency is below kHighTopHz * kTopMargin has no high band: its power stays 0 (a
 // 16 kHz input).
-// Audio thread: process(), frame(); prepare() allocates.
+// Audio thread: process(), open(), close(), frame(); prepare() allocates.
 #pragma once
 
 #include <array>
@@ -27,11 +27,24 @@ class BandPower {
     enum class Band { low, high };
     static constexpr double kLowEdgeHz = 150;
     static constexpr double kHighEdgeHz = 6000, kHighTopHz = 10000, kTopMargin = 1.05;
+    static constexpr int kLowSections = 2, kHighSections = 4;  // the filters' biquads
 
     void prepare(Band band, double sample_rate_hz, int window_frames);
     bool active() const { return active_; }  // false: a high band the input rate cannot hold
     void reset() noexcept;
     void process(const float* samples, int count) noexcept;
+
+    // process() for a caller that runs a copy of the band's filters (filters()) in one wavefront
+    // with other filters (Analyzer's CascadeLanes): open() the newest frame's energy, take() the
+    // square of each filtered sample in order, close() it with the samples' count.
+    struct Energy {
+        double sum = 0;
+        void take(double square) noexcept { sum += square; }
+    };
+    Energy open() const noexcept { return {energy_[static_cast<size_t>(position_)]}; }
+    void close(Energy energy, int count) noexcept;
+    // The band's filters, kLowSections or kHighSections biquads in turn.
+    const Biquad* filters() const noexcept { return sections_.data(); }
 
     struct Power {
         double mean = 0, hann = 0;  // mean power over the window, plain and Hann-weighted
@@ -40,8 +53,8 @@ class BandPower {
     Power frame() noexcept;
 
   private:
-    std::array<Biquad, 4> sections_;
-    int section_count_ = 2;
+    std::array<Biquad, kHighSections> sections_;
+    int section_count_ = kLowSections;
     std::vector<double> energy_;  // energy of each of the last frames, a ring
     std::vector<int> samples_;    // and their sample counts
     std::vector<double> weight_;  // Hann weight of each frame back

@@ -31,8 +31,11 @@ class KWeighting {
             sections_.data(), count, [&](int i) { return static_cast<double>(samples[i]); }, sink);
     }
 
+    static constexpr int kSections = 2;
+    const Biquad* filters() const noexcept { return sections_.data(); }  // kSections in turn
+
   private:
-    std::array<Biquad, 2> sections_;  // the shelf, then the high-pass
+    std::array<Biquad, kSections> sections_;  // the shelf, then the high-pass
 };
 
 }  // namespace tactus

@@ -25,34 +25,22 @@ void Loudness::reset() noexcept {
     sum_ = fresh_sum_ = 0.0;
 }
 
-template <typename Squares>
-void Loudness::add(Squares squares) noexcept {
-    const size_t length = squares_.size();
-    double sum = sum_, fresh = fresh_sum_;  // in locals: kept in registers
-    size_t position = position_;
-    squares([&](double y2) {
-        sum += y2 - squares_[position];
-        squares_[position] = y2;
-        fresh += y2;
-        if (++position == length) {  // re-sum once per window: no rounding drift
-            position = 0;
-            sum = fresh;
-            fresh = 0.0;
-        }
-    });
-    sum_ = sum;
-    fresh_sum_ = fresh;
-    position_ = position;
+void Loudness::close(const Squares& squares) noexcept {
+    position_ = squares.position;
+    sum_ = squares.sum;
+    fresh_sum_ = squares.fresh;
 }
 
 void Loudness::process(const float* samples, int count) noexcept {
-    add([&](auto take) { k_weighting_.each(samples, count, [&](int, double y) { take(y * y); }); });
+    Squares squares = open();  // a local copy: kept in registers
+    k_weighting_.each(samples, count, [&](int, double y) { squares.take(y * y); });
+    close(squares);
 }
 
 void Loudness::process_power(const float* power, int count) noexcept {
-    add([&](auto take) {
-        for (int i = 0; i < count; ++i) take(static_cast<double>(power[i]));
-    });
+    Squares squares = open();
+    for (int i = 0; i < count; ++i) squares.take(static_cast<double>(power[i]));
+    close(squares);
 }
 
 double Loudness::mean_square() const noexcept {

@@ -5,6 +5,7 @@
 // power, summed over the channels as BS.1770 sums them (engine/channel_power.hpp).
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include "tactus/analysis/k_weighting.hpp"
@@ -25,10 +26,32 @@ class Loudness {
     double mean_square() const noexcept;               // K-weighted, over the newest window
     static double db_of(double mean_square) noexcept;  // LKFS scale
 
+    // process() for a caller that runs a copy of the K-weighting (filters()) in one wavefront
+    // with other filters (Analyzer's CascadeLanes): open(), take() the square of each K-weighted
+    // sample in order, close().
+    struct Squares {
+        double* ring;  // squares_
+        size_t length, position;
+        double sum, fresh;
+        void take(double square) noexcept {
+            sum += square - ring[position];
+            ring[position] = square;
+            fresh += square;
+            if (++position == length) {  // re-sum once per window: no rounding drift
+                position = 0;
+                sum = fresh;
+                fresh = 0.0;
+            }
+        }
+    };
+    Squares open() noexcept {
+        return {squares_.data(), squares_.size(), position_, sum_, fresh_sum_};
+    }
+    void close(const Squares& squares) noexcept;
+    // The K-weighting, KWeighting::kSections biquads in turn.
+    const Biquad* filters() const noexcept { return k_weighting_.filters(); }
+
   private:
-    // squares(take) calls take(y2) with each new square in order.
-    template <typename Squares>
-    void add(Squares squares) noexcept;
     KWeighting k_weighting_;
     std::vector<double> squares_;  // ring of K-weighted squares, one window long
     size_t position_ = 0;

@@ -20,6 +20,11 @@
 namespace tactus {
 
 namespace detail {
+// A lane's sample index in a masked step (whether 0 <= index < count selects the lane), as wide
+// as the lanes' doubles, so that a comparison's mask selects whole lanes.
+using LaneIndexPair = long long __attribute__((vector_size(2 * sizeof(long long))));
+using LaneIndexQuad = long long __attribute__((vector_size(4 * sizeof(long long))));
+
 // cascade_each, one section after the other: the sections are copied into locals (unrolled,
 // states in registers) and written back after.
 template <int N, typename Input, typename Sink>
@@ -46,6 +51,9 @@ TACTUS_VECTOR_CLONES void wavefront_each(Biquad* sections, int count, Input inpu
     using Lanes = std::conditional_t<(N > 2), Quad, Pair>;
     constexpr int kLanes = sizeof(Lanes) / sizeof(double);
     constexpr int V = (N + kLanes - 1) / kLanes;  // spare lanes are pass-throughs
+    using Mask = std::conditional_t<(N > 2), LaneIndexQuad, LaneIndexPair>;
+    Mask lane_index{};
+    for (int lane = 0; lane < kLanes; ++lane) lane_index[lane] = lane;
     Lanes b0[V], b1[V], b2[V], a1[V], a2[V], s1[V], s2[V], y[V];
     for (int v = 0; v < V; ++v) {
         for (int lane = 0; lane < kLanes; ++lane) {
@@ -74,18 +82,18 @@ TACTUS_VECTOR_CLONES void wavefront_each(Biquad* sections, int count, Input inpu
             const Lanes n1 = (b1[v] * x - a1[v] * out) + s2[v];
             const Lanes n2 = b2[v] * x - a2[v] * out;
             if (masked) {
-                for (int lane = 0; lane < kLanes; ++lane) {
-                    const int k = kLanes * v + lane;
-                    if (t - k >= 0 && t - k < count) s1[v][lane] = n1[lane], s2[v][lane] = n2[lane];
-                }
+                const Mask at = t - kLanes * v - lane_index;
+                const Mask live = (at >= 0) & (at < count);
+                s1[v] = live ? n1 : s1[v];
+                s2[v] = live ? n2 : s2[v];
             } else {
                 s1[v] = n1;
                 s2[v] = n2;
             }
             y[v] = out;
         }
-        const int done = t - (N - 1);
-        if (done >= 0 && done < count) sink(done, y[V - 1][(N - 1) % kLanes]);
+        const int done = t - (N - 1);  // unmasked steps all have 0 <= done < count
+        if (!masked || (done >= 0 && done < count)) sink(done, y[V - 1][(N - 1) % kLanes]);
     };
     const int steps = count + N - 1;
     const int steady_end = count;  // steps N-1 ... count-1 have every lane in range
@@ -126,24 +134,54 @@ struct SideBySide {
     }();
 };
 
-// cascades_each's work: wavefront_each with a head lane per chain.
-template <int... Lengths, typename Input, typename Sink>
-TACTUS_VECTOR_CLONES void side_by_side_each(const std::array<Biquad*, sizeof...(Lengths)>& chains,
-                                            int count, Input input, Sink sink) noexcept {
+// side_by_side_each's lanes: chain c's sections in lanes start[c] ..., spare lanes passing their
+// input through; the coefficients and the states.
+template <int... Lengths>
+struct LanesOf {
     using Layout = SideBySide<Lengths...>;
-    using Lanes = double __attribute__((vector_size(4 * sizeof(double))));
+    using Lanes = double __attribute__((vector_size(4 * sizeof(double))));  // Layout::kLanes
+    static constexpr int V = Layout::kVectors;
+    Lanes b0[V], b1[V], b2[V], a1[V], a2[V], s1[V], s2[V];
+
+    // Chains: an array of kChains pointers to Biquad, const or not.
+    template <typename Chains>
+    void load(const Chains& chains) noexcept {
+        for (int k = 0; k < Layout::kSlots; ++k) {
+            const int v = k / Layout::kLanes, lane = k % Layout::kLanes, c = Layout::kChain[k];
+            const BiquadCoefficients pass{};
+            const Biquad* section = c >= 0 ? chains[c] + Layout::kPlace[k] : nullptr;
+            const BiquadCoefficients& co = section ? section->coefficients() : pass;
+            const auto state = section ? section->state() : std::pair{0.0, 0.0};
+            b0[v][lane] = co.b0, b1[v][lane] = co.b1, b2[v][lane] = co.b2;
+            a1[v][lane] = co.a1, a2[v][lane] = co.a2;
+            s1[v][lane] = state.first, s2[v][lane] = state.second;
+        }
+    }
+    void store_states(const std::array<Biquad*, Layout::kChains>& chains) const noexcept {
+        for (int k = 0; k < Layout::kSlots; ++k) {
+            const int v = k / Layout::kLanes, lane = k % Layout::kLanes, c = Layout::kChain[k];
+            if (c >= 0) chains[c][Layout::kPlace[k]].set_state({s1[v][lane], s2[v][lane]});
+        }
+    }
+};
+
+// cascades_each's work on the lanes: wavefront_each with a head lane per chain.
+template <int... Lengths, typename Input, typename Sink>
+TACTUS_VECTOR_CLONES Sink side_by_side_each(LanesOf<Lengths...>& lanes, int count, Input input,
+                                            Sink sink) noexcept {
+    using Layout = SideBySide<Lengths...>;
+    using Lanes = typename LanesOf<Lengths...>::Lanes;
     constexpr int kLanes = Layout::kLanes, V = Layout::kVectors, C = Layout::kChains;
+    using Mask = LaneIndexQuad;
+    Mask place[V];  // each lane's place in its chain: it filters sample t - place at step t
+    for (int k = 0; k < Layout::kSlots; ++k) place[k / kLanes][k % kLanes] = Layout::kPlace[k];
+    // In locals for the block: kept in registers.
     Lanes b0[V], b1[V], b2[V], a1[V], a2[V], s1[V], s2[V], y[V];
-    for (int k = 0; k < Layout::kSlots; ++k) {
-        const int v = k / kLanes, lane = k % kLanes, c = Layout::kChain[k];
-        const BiquadCoefficients pass{};
-        const Biquad* section = c >= 0 ? chains[c] + Layout::kPlace[k] : nullptr;
-        const BiquadCoefficients& co = section ? section->coefficients() : pass;
-        const auto state = section ? section->state() : std::pair{0.0, 0.0};
-        b0[v][lane] = co.b0, b1[v][lane] = co.b1, b2[v][lane] = co.b2;
-        a1[v][lane] = co.a1, a2[v][lane] = co.a2;
-        s1[v][lane] = state.first, s2[v][lane] = state.second;
-        y[v][lane] = 0.0;
+    for (int v = 0; v < V; ++v) {
+        b0[v] = lanes.b0[v], b1[v] = lanes.b1[v], b2[v] = lanes.b2[v];
+        a1[v] = lanes.a1[v], a2[v] = lanes.a2[v];
+        s1[v] = lanes.s1[v], s2[v] = lanes.s2[v];
+        y[v] = Lanes{};
     }
     // One step: each chain's head takes its new sample, every other lane its left neighbour's
     // last output (the vectors go from the last, so each still reads its neighbour's previous
@@ -164,10 +202,10 @@ TACTUS_VECTOR_CLONES void side_by_side_each(const std::array<Biquad*, sizeof...(
             const Lanes n1 = (b1[v] * x - a1[v] * out) + s2[v];
             const Lanes n2 = b2[v] * x - a2[v] * out;
             if (masked) {
-                for (int lane = 0; lane < kLanes; ++lane) {
-                    const int at = t - Layout::kPlace[v * kLanes + lane];
-                    if (at >= 0 && at < count) s1[v][lane] = n1[lane], s2[v][lane] = n2[lane];
-                }
+                const Mask at = t - place[v];
+                const Mask live = (at >= 0) & (at < count);
+                s1[v] = live ? n1 : s1[v];
+                s2[v] = live ? n2 : s2[v];
             } else {
                 s1[v] = n1;
                 s2[v] = n2;
@@ -176,8 +214,9 @@ TACTUS_VECTOR_CLONES void side_by_side_each(const std::array<Biquad*, sizeof...(
         }
         for (int c = 0, last = -1; c < C; ++c) {
             last += Layout::kLength[c];
-            const int done = t - (Layout::kLength[c] - 1);
-            if (done >= 0 && done < count) sink(c, done, y[last / kLanes][last % kLanes]);
+            const int done = t - (Layout::kLength[c] - 1);  // as in wavefront_each
+            if (!masked || (done >= 0 && done < count))
+                sink(c, done, y[last / kLanes][last % kLanes]);
         }
     };
     const auto inputs = [&](int t) {
@@ -191,11 +230,8 @@ TACTUS_VECTOR_CLONES void side_by_side_each(const std::array<Biquad*, sizeof...(
     for (; t < std::min(Layout::kLongest - 1, steps); ++t) step(inputs(t), true, t);
     for (; t < count; ++t) step(inputs(t), false, t);
     for (; t < steps; ++t) step(inputs(t), true, t);
-    for (int k = 0; k < Layout::kSlots; ++k) {
-        const int c = Layout::kChain[k];
-        const double first = s1[k / kLanes][k % kLanes], second = s2[k / kLanes][k % kLanes];
-        if (c >= 0) chains[c][Layout::kPlace[k]].set_state({first, second});
-    }
+    for (int v = 0; v < V; ++v) lanes.s1[v] = s1[v], lanes.s2[v] = s2[v];
+    return sink;
 }
 }  // namespace detail
 
@@ -205,11 +241,43 @@ TACTUS_VECTOR_CLONES void side_by_side_each(const std::array<Biquad*, sizeof...(
 // sections' steps later). One wavefront carries them all, so they advance together instead of
 // one after the other (a biquad's recursion, more than its arithmetic, bounds a cascade's
 // speed). Bit for bit each chain's own cascade_each.
+// Returns the sink, as std::for_each returns its function: a sink that carries its sums by value
+// keeps them in registers.
 template <int... Lengths, typename Input, typename Sink>
-void cascades_each(const std::array<Biquad*, sizeof...(Lengths)>& chains, int count, Input input,
+Sink cascades_each(const std::array<Biquad*, sizeof...(Lengths)>& chains, int count, Input input,
                    Sink sink) noexcept {
-    detail::side_by_side_each<Lengths...>(chains, count, input, sink);
+    detail::LanesOf<Lengths...> lanes;
+    lanes.load(chains);
+    Sink done = detail::side_by_side_each(lanes, count, input, sink);
+    lanes.store_states(chains);
+    return done;
 }
+
+// Chains of biquads side by side as cascades_each runs them, laid out in its lanes once and kept
+// there from block to block: for filters that run on every block (the analysis's input filters,
+// analyzer.cpp), a block neither gathers their coefficients and states nor scatters the states.
+// Bit for bit cascades_each on the chains the lanes were loaded from.
+template <int... Lengths>
+class CascadeLanes {
+  public:
+    // The chains' coefficients and states, copied (prepare()).
+    void load(const std::array<const Biquad*, sizeof...(Lengths)>& chains) noexcept {
+        lanes_.load(chains);
+    }
+    void reset() noexcept {
+        using Lanes = typename detail::LanesOf<Lengths...>::Lanes;
+        for (int v = 0; v < detail::LanesOf<Lengths...>::V; ++v)
+            lanes_.s1[v] = lanes_.s2[v] = Lanes{};
+    }
+    // cascades_each on the lanes.
+    template <typename Input, typename Sink>
+    Sink each(int count, Input input, Sink sink) noexcept {
+        return detail::side_by_side_each(lanes_, count, input, sink);
+    }
+
+  private:
+    detail::LanesOf<Lengths...> lanes_;
+};
 
 // For i < count, in increasing i: sink(i, the N sections in turn applied to input(i)), in
 // double.

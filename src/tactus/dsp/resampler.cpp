@@ -104,9 +104,13 @@ TACTUS_VECTOR_CLONES int Resampler::process(const float* in, int count, float* o
         for (int i = 0; i < taps; i += kLanes)
             for (int j = 0; j < kLanes; ++j) s[j] += w[i + j] * x[i + j];
         out[produced++] = ((s[0] + s[1]) + (s[2] + s[3])) + ((s[4] + s[5]) + (s[6] + s[7]));
-        phase_ += down_;
-        next_base_ += phase_ / up_;
-        phase_ %= up_;
+        if (up_ == 1) {  // an integer ratio (48 kHz to 16 kHz): one phase, no division
+            next_base_ += down_;
+        } else {
+            phase_ += down_;
+            next_base_ += phase_ / up_;
+            phase_ %= up_;
+        }
         ++next_output_;
     }
     std::copy(history + count, history + count + taps - 1, history);

@@ -21,11 +21,15 @@ void InputRing::write(const float* const* lanes, int count) noexcept {
     const int64_t start = written_.load(std::memory_order_relaxed);
     const int64_t slot = start % capacity_;
     // The samples up to the ring's end, then the rest from its start: no wrap test per sample.
+    // Atomic stores are not vectorised: unrolled, the loop's own instructions are a fifth of
+    // a sample's where they were two thirds.
     const int before_end = static_cast<int>(std::min<int64_t>(count, capacity_ - slot));
     for (int l = 0; l < lanes_; ++l) {
         std::atomic<float>* lane = samples_.get() + l * capacity_;
         const float* in = lanes[l];
+#pragma GCC unroll 8
         for (int i = 0; i < before_end; ++i) lane[slot + i].store(in[i], std::memory_order_release);
+#pragma GCC unroll 8
         for (int i = before_end; i < count; ++i)
             lane[i - before_end].store(in[i], std::memory_order_release);
     }

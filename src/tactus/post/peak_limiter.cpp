@@ -90,22 +90,28 @@ TACTUS_VECTOR_CLONES void PeakLimiter::process(float* samples, int count) noexce
         if (!std::isfinite(x)) x = 0.0;
         x *= drive;
         const double magnitude = std::abs(x);
-        const double wanted =
-            magnitude > threshold ? curve_at(magnitude, threshold, ceiling) / magnitude : 1.0;
+        const double wanted =  // at most 1, whatever the curve's rounding
+            magnitude > threshold
+                ? std::min(1.0, curve_at(magnitude, threshold, ceiling) / magnitude)
+                : 1.0;
 
         // Sliding minimum of the wanted gain over the last lookahead + 1 samples: every gain
-        // averaged into a sample's output below has seen that sample's wish.
+        // averaged into a sample's output below has seen that sample's wish. The queue holds the
+        // gains below 1 (a sample below the knee, most of them, leaves it alone): 1 when empty.
         // Ring positions wrap by comparison: no integer division per sample.
         const auto wrap = [capacity](size_t i) { return i >= capacity ? i - capacity : i; };
-        while (minimum_size > 0 && minimum[wrap(minimum_head + minimum_size - 1)].second >= wanted)
-            --minimum_size;
-        minimum[wrap(minimum_head + minimum_size)] = {time, wanted};
-        ++minimum_size;
-        if (minimum[minimum_head].first < time - lookahead) {
+        if (wanted < 1.0) {
+            while (minimum_size > 0 &&
+                   minimum[wrap(minimum_head + minimum_size - 1)].second >= wanted)
+                --minimum_size;
+            minimum[wrap(minimum_head + minimum_size)] = {time, wanted};
+            ++minimum_size;
+        }
+        if (minimum_size > 0 && minimum[minimum_head].first < time - lookahead) {
             minimum_head = wrap(minimum_head + 1);
             --minimum_size;
         }
-        const double held = minimum[minimum_head].second;
+        const double held = minimum_size > 0 ? minimum[minimum_head].second : 1.0;
 
         // Instant attack, one-pole release, never above the held gain.
         released_gain = std::min(held, held + release * (released_gain - held));
