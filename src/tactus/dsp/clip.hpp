@@ -8,13 +8,13 @@
 namespace tactus {
 
 // Clips samples to [-ceiling, ceiling] in place; returns how many it changed.
+// Branch-free, so that the loop vectorises (a NaN passes, uncounted).
 inline int64_t clip(float* samples, int count, float ceiling) noexcept {
-    int64_t clipped = 0;
+    int clipped = 0;  // count <= INT_MAX
     for (int i = 0; i < count; ++i) {
-        if (samples[i] > ceiling)
-            samples[i] = ceiling, ++clipped;
-        else if (samples[i] < -ceiling)
-            samples[i] = -ceiling, ++clipped;
+        const float x = samples[i];
+        clipped += (x > ceiling) | (x < -ceiling);
+        samples[i] = x > ceiling ? ceiling : x < -ceiling ? -ceiling : x;
     }
     return clipped;
 }
