@@ -152,14 +152,12 @@ void Analyzer::reset() noexcept {
 TACTUS_VECTOR_CLONES bool Analyzer::process(const float* samples, const float* power,
                                             int count) noexcept {
     for (int i = 0; i < count; ++i) clean_[i] = sanitized(samples[i]);
-    if (computed_.loudness && power) {  // several channels: the loudness reads their power
-        loudness_.process_power(power, count);
-        filter_input<false>(count);
-    } else if (computed_.loudness) {
+    // The loudness reads several channels' power when given, else K-weights the samples.
+    if (computed_.loudness && power) loudness_.process_power(power, count);
+    if (computed_.loudness && !power)
         filter_input<true>(count);
-    } else {
+    else
         filter_input<false>(count);
-    }
     inputs_ += count;
     const int analysed = resampler_.process(clean_.data(), count, analysed_.data());
     dc_blocker_.process(analysed_.data(), analysed);

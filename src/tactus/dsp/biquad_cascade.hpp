@@ -34,6 +34,25 @@ inline constexpr bool kMaskedSelect = true;
 inline constexpr bool kMaskedSelect = false;
 #endif
 
+// A masked step's states: the lanes whose sample t - place lies in the block (0 <= t - place <
+// count) take the new states n1, n2; the others keep theirs. By reference: inlined into the
+// vector clones, never passed as a 32-byte vector.
+template <typename Lanes, typename Places>
+inline void update_live_lanes(Lanes& s1, Lanes& s2, const Lanes& n1, const Lanes& n2,
+                              const Places& place, int t, int count) noexcept {
+    if constexpr (kMaskedSelect) {
+        const Places at = t - place;
+        const Places live = (at >= 0) & (at < count);
+        s1 = live ? n1 : s1;
+        s2 = live ? n2 : s2;
+    } else {
+        for (int lane = 0; lane < static_cast<int>(sizeof(Lanes) / sizeof(double)); ++lane) {
+            const int at = t - static_cast<int>(place[lane]);
+            if (at >= 0 && at < count) s1[lane] = n1[lane], s2[lane] = n2[lane];
+        }
+    }
+}
+
 // cascade_each, one section after the other: the sections are copied into locals (unrolled,
 // states in registers) and written back after.
 template <int N, typename Input, typename Sink>
@@ -60,9 +79,9 @@ TACTUS_VECTOR_CLONES void wavefront_each(Biquad* sections, int count, Input inpu
     using Lanes = std::conditional_t<(N > 2), Quad, Pair>;
     constexpr int kLanes = sizeof(Lanes) / sizeof(double);
     constexpr int V = (N + kLanes - 1) / kLanes;  // spare lanes are pass-throughs
-    using Mask = std::conditional_t<(N > 2), LaneIndexQuad, LaneIndexPair>;
-    Mask lane_index{};
-    for (int lane = 0; lane < kLanes; ++lane) lane_index[lane] = lane;
+    using Places = std::conditional_t<(N > 2), LaneIndexQuad, LaneIndexPair>;
+    Places place[V];  // lane k holds section k: it filters sample t - k at step t
+    for (int k = 0; k < V * kLanes; ++k) place[k / kLanes][k % kLanes] = k;
     Lanes b0[V], b1[V], b2[V], a1[V], a2[V], s1[V], s2[V], y[V];
     for (int v = 0; v < V; ++v) {
         for (int lane = 0; lane < kLanes; ++lane) {
@@ -90,16 +109,8 @@ TACTUS_VECTOR_CLONES void wavefront_each(Biquad* sections, int count, Input inpu
             const Lanes out = b0[v] * x + s1[v];
             const Lanes n1 = (b1[v] * x - a1[v] * out) + s2[v];
             const Lanes n2 = b2[v] * x - a2[v] * out;
-            if (masked && kMaskedSelect) {
-                const Mask at = t - kLanes * v - lane_index;
-                const Mask live = (at >= 0) & (at < count);
-                s1[v] = live ? n1 : s1[v];
-                s2[v] = live ? n2 : s2[v];
-            } else if (masked) {
-                for (int lane = 0; lane < kLanes; ++lane) {
-                    const int k = kLanes * v + lane;
-                    if (t - k >= 0 && t - k < count) s1[v][lane] = n1[lane], s2[v][lane] = n2[lane];
-                }
+            if (masked) {
+                update_live_lanes(s1[v], s2[v], n1, n2, place[v], t, count);
             } else {
                 s1[v] = n1;
                 s2[v] = n2;
@@ -186,8 +197,8 @@ TACTUS_VECTOR_CLONES Sink side_by_side_each(LanesOf<Lengths...>& lanes, int coun
     using Layout = SideBySide<Lengths...>;
     using Lanes = typename LanesOf<Lengths...>::Lanes;
     constexpr int kLanes = Layout::kLanes, V = Layout::kVectors, C = Layout::kChains;
-    using Mask = LaneIndexQuad;
-    Mask place[V];  // each lane's place in its chain: it filters sample t - place at step t
+    LaneIndexQuad
+        place[V];  // each lane's place in its chain: it filters sample t - place at step t
     for (int k = 0; k < Layout::kSlots; ++k) place[k / kLanes][k % kLanes] = Layout::kPlace[k];
     // In locals for the block: kept in registers.
     Lanes b0[V], b1[V], b2[V], a1[V], a2[V], s1[V], s2[V], y[V];
@@ -215,16 +226,8 @@ TACTUS_VECTOR_CLONES Sink side_by_side_each(LanesOf<Lengths...>& lanes, int coun
             const Lanes out = b0[v] * x + s1[v];
             const Lanes n1 = (b1[v] * x - a1[v] * out) + s2[v];
             const Lanes n2 = b2[v] * x - a2[v] * out;
-            if (masked && kMaskedSelect) {
-                const Mask at = t - place[v];
-                const Mask live = (at >= 0) & (at < count);
-                s1[v] = live ? n1 : s1[v];
-                s2[v] = live ? n2 : s2[v];
-            } else if (masked) {
-                for (int lane = 0; lane < kLanes; ++lane) {
-                    const int at = t - Layout::kPlace[v * kLanes + lane];
-                    if (at >= 0 && at < count) s1[v][lane] = n1[lane], s2[v][lane] = n2[lane];
-                }
+            if (masked) {
+                update_live_lanes(s1[v], s2[v], n1, n2, place[v], t, count);
             } else {
                 s1[v] = n1;
                 s2[v] = n2;

@@ -104,7 +104,9 @@ TACTUS_VECTOR_CLONES int Resampler::process(const float* in, int count, float* o
         for (int i = 0; i < taps; i += kLanes)
             for (int j = 0; j < kLanes; ++j) s[j] += w[i + j] * x[i + j];
         out[produced++] = ((s[0] + s[1]) + (s[2] + s[3])) + ((s[4] + s[5]) + (s[6] + s[7]));
-        if (up_ == 1) {  // an integer ratio (48 kHz to 16 kHz): one phase, no division
+        // An integer ratio (48 to 16 kHz) has one phase: no 64-bit division, which armhf makes
+        // a library call (2 % of its 64-frame block, bench/arm_instructions.sh).
+        if (up_ == 1) {
             next_base_ += down_;
         } else {
             phase_ += down_;
