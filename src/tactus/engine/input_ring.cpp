@@ -4,8 +4,15 @@
 
 namespace tactus {
 
+// The samples are left as allocated (read() gives only samples written since reset()), but each
+// page is touched here, so the audio thread's first write to it takes no page fault. A fresh
+// mapping's pages are zeroed by the kernel as they are touched: clearing them too was a second
+// pass over the ring (960 KB at 48 kHz), 0.96 M of another engine's 1.2 M prepare instructions.
 void InputRing::prepare(int lanes, int64_t capacity, int max_write) {
-    samples_ = std::make_unique<std::atomic<float>[]>(static_cast<size_t>(lanes * capacity));
+    const auto size = static_cast<size_t>(lanes * capacity);
+    samples_ = std::make_unique_for_overwrite<float[]>(size);
+    constexpr size_t kPageFloats = 4096 / sizeof(float);
+    for (size_t i = 0; i < size; i += kPageFloats) samples_[i] = 0.0f;
     lanes_ = lanes;
     capacity_ = capacity;
     max_write_ = max_write;
@@ -25,13 +32,14 @@ void InputRing::write(const float* const* lanes, int count) noexcept {
     // a sample's where they were two thirds.
     const int before_end = static_cast<int>(std::min<int64_t>(count, capacity_ - slot));
     for (int l = 0; l < lanes_; ++l) {
-        std::atomic<float>* lane = samples_.get() + l * capacity_;
+        float* lane = samples_.get() + l * capacity_;
         const float* in = lanes[l];
 #pragma GCC unroll 8
-        for (int i = 0; i < before_end; ++i) lane[slot + i].store(in[i], std::memory_order_release);
+        for (int i = 0; i < before_end; ++i)
+            std::atomic_ref(lane[slot + i]).store(in[i], std::memory_order_release);
 #pragma GCC unroll 8
         for (int i = before_end; i < count; ++i)
-            lane[i - before_end].store(in[i], std::memory_order_release);
+            std::atomic_ref(lane[i - before_end]).store(in[i], std::memory_order_release);
     }
     written_.store(start + count, std::memory_order_release);
 }
@@ -43,9 +51,10 @@ bool InputRing::read(int64_t from, float* const* lanes, int count) const noexcep
     };
     if (!held()) return false;
     for (int l = 0; l < lanes_; ++l) {
-        const std::atomic<float>* lane = samples_.get() + l * capacity_;
+        float* lane = samples_.get() + l * capacity_;
         for (int i = 0; i < count; ++i)
-            lanes[l][i] = lane[(from + i) % capacity_].load(std::memory_order_acquire);
+            lanes[l][i] =
+                std::atomic_ref(lane[(from + i) % capacity_]).load(std::memory_order_acquire);
     }
     return held();  // after every sample's load (acquire)
 }

@@ -32,7 +32,8 @@ class InputRing {
     bool read(int64_t from, float* const* lanes, int count) const noexcept;
 
   private:
-    std::unique_ptr<std::atomic<float>[]> samples_;
+    // Accessed through std::atomic_ref: allocated without clearing (input_ring.cpp).
+    std::unique_ptr<float[]> samples_;
     int64_t capacity_ = 0;  // per lane; lane l is samples_[l * capacity_ ...]
     int lanes_ = 0;
     int max_write_ = 0;
