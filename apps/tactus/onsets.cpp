@@ -36,6 +36,7 @@ void onsets(const OnsetsOptions& o) {
     TextOutput output(o.output);
     std::ostream& out = output.stream();
     Analyzer analyzer;
+    analyzer.read_every_onset(o.part_features);
     double sample_rate_hz = 0;
     Progress progress("onsets");
     OnsetDecisions decisions;

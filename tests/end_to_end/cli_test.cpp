@@ -19,6 +19,7 @@
 #include "support/run_cli.hpp"
 #include "support/signals.hpp"
 #include "support/sounds.hpp"
+#include "tactus/analysis/onset_rises.hpp"
 #include "tactus/io/audio_reader.hpp"
 #include "tactus/params/params.hpp"
 
@@ -146,6 +147,26 @@ TEST_F(Cli, AnalyzeCsvAndJson) {
     EXPECT_NE(text.find("\"frequency_hz\""), std::string::npos);
     EXPECT_NE(text.find("\"part\":\"hat\""), std::string::npos);  // the part by name
     EXPECT_EQ(text.substr(text.size() - 3), "]}\n");
+}
+
+// --part-features ends each line with the onset model's numbers, read on every onset of an input
+// with the 6-10 kHz band (the Amen break, 44.1 kHz) though parts.drum_min is off and the
+// analysis alone would not read them.
+TEST_F(Cli, PartFeaturesPrintTheOnsetModelsNumbersWithDrumMinOff) {
+    const Result r = run("onsets " + kAmen + " --part-features");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::istringstream lines(r.out);
+    int count = 0, read = 0;
+    for (std::string line; std::getline(lines, line); ++count) {
+        std::vector<std::string> fields;
+        std::istringstream s(line);
+        for (std::string field; s >> field;) fields.push_back(field);
+        ASSERT_GT(fields.size(), 4u + tactus::OnsetRises::kCount) << line;
+        read += std::all_of(fields.end() - tactus::OnsetRises::kCount, fields.end(),
+                            [](const std::string& f) { return std::isfinite(std::stod(f)); });
+    }
+    EXPECT_GT(count, 20);
+    EXPECT_GE(read, 0.9 * count) << r.out;
 }
 
 TEST_F(Cli, OnsetsAreAscendingWithTheirPart) {

@@ -80,6 +80,8 @@ class Analyzer {
     const Features& analyse() noexcept;
     // What each hit added and its part (read after analyse()).
     const HitAnalysis& hits() const { return hits_; }
+    // The onset model reads every onset (HitAnalysis::read_every_onset).
+    void read_every_onset(bool every) noexcept { hits_.read_every_onset(every); }
     // The onset detector's settings among `settings`.
     static OnsetSettings onset_settings(const Settings& settings);
     // Whether the analysis reads parameter `id` (prepare() or set_live()): the features of an

@@ -85,7 +85,7 @@ void HitAnalysis::reset() noexcept {
     level_db_ = peak_db_ = kSilentDb;
     brightness_hz_ = 0;
     part_ = DrumPart::other;
-    part_decided_ = deciding_ = features_read_ = false;
+    part_decided_ = deciding_ = features_read_ = rises_read_ = false;
 }
 
 void HitAnalysis::analyse(const Frame& frame, int64_t now, int64_t onset_start) noexcept {
@@ -118,8 +118,10 @@ void HitAnalysis::analyse(const Frame& frame, int64_t now, int64_t onset_start) 
     part_decided_ = false;
     // Not a drum's onset by how its bands rose (onset_rises.hpp): `other` at once, before its
     // pulse starts. Without the high band the model cannot be read: every onset waits for its
-    // part.
-    if (onset_start >= 0 && has_high_band_) {
+    // part. With drum_min off nothing reads it (its numbers are 4 k instructions of an onset's
+    // frame, a block's p99).
+    if (onset_start >= 0) rises_read_ = has_high_band_ && (drum_min_ > 0 || rises_always_);
+    if (onset_start >= 0 && rises_read_) {
         const auto band = [](const AddedSpectrum& one) {
             return OnsetRises::Band{.before = one.reference()[0], .added = one.added()[0]};
         };

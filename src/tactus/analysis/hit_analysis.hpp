@@ -68,9 +68,11 @@ class HitAnalysis {
     // read it (an onset that was not a drum's, or that added nothing, has none).
     bool part_features_read() const { return features_read_; }
     std::span<const float> part_features() const { return features_.values(); }
-    // What the latest onset was told a drum's or not by (analysis/onset_rises.hpp), read for
-    // every onset of an input with the high band.
-    bool onset_rises_read() const { return has_high_band_; }
+    // The onset model reads every onset of an input with the high band, not only while drum_min
+    // is on (tactus onsets --part-features); else its numbers are not computed.
+    void read_every_onset(bool every) noexcept { rises_always_ = every; }
+    // What the latest onset was told a drum's or not by (analysis/onset_rises.hpp), when read.
+    bool onset_rises_read() const { return rises_read_; }
     std::span<const float> onset_rises() const { return rises_.values(); }
 
   private:
@@ -83,7 +85,7 @@ class HitAnalysis {
     OnsetRises rises_;
     std::vector<float> fine_magnitude_;
     int low_bins_ = 0, mid_bins_ = 0, top_bins_ = 0;  // band edges in fast bins (rule_part())
-    bool has_high_band_ = true;
+    bool has_high_band_ = true, rises_always_ = false, rises_read_ = false;
     double sample_rate_hz_ = 16000, drum_min_ = 0;
     int64_t settle_samples_ = 0, hit_start_ = -1;
     double level_db_ = -120, brightness_hz_ = 0, peak_db_ = -120;
