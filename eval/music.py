@@ -18,7 +18,9 @@ held-out part side by side.
   felt output at half its pulse peak (felt.half_peak_latency_s), over the hits that give a
   distinct pulse as above (the others' half peak would be the bed's), their count given; and
   Spearman's rho of hit gain -> the strength `tactus onsets` prints for the hit's onset (a hit
-  without one lowest): the hit's own reading, apart from the bed's pulses.
+  without one lowest): the hit's own reading, apart from the bed's pulses; and the share of the
+  hits whose felt peak stands 6 dB over the bed's own (the bed stem rendered alone, the same
+  window), the hits whose order the bed's pulses do not decide.
 - Drum part: when `tactus onsets` prints a 4th column (kick, snare, hat or other), the share of
   its onsets matched one-to-one to a hit within +-50 ms whose part is the hit's, per part and
   overall. Where hits coincide the true part is the first of kick, snare, hat among them. And
@@ -45,6 +47,7 @@ PULSE_S = 0.06  # a hit's felt pulse is looked for over this long after it
 BEFORE_S = 0.01  # against the felt level over this long before it
 DISTINCT_DB = 6.0
 ISOLATED_PULSE_S = 0.08
+ABOVE_BED_DB = 6.0  # an isolated hit's felt peak over the bed's own, to stand out of it
 STRENGTH_MATCH_S = 0.02  # an isolated hit's onset, for its strength
 PRIORITY = ("kick", "snare", "hat")
 NAMED = PRIORITY + ("other",)  # the parts `tactus onsets` names
@@ -147,16 +150,20 @@ def count_parts(parts, labels, matches):
     return counts
 
 
-IsolatedHit = collections.namedtuple("IsolatedHit", "gain_db peak hz latency_s strength_db")
+IsolatedHit = collections.namedtuple("IsolatedHit",
+                                     "gain_db peak hz latency_s strength_db bed_peak")
 
 
 def analyse_gain(tactus, entry, directory, renders, preset):
     """One isolated-hit file's IsolatedHit per hit: its gain, felt peak and felt Hz; its
     half-peak latency, None when it gives no distinct pulse; the strength `tactus onsets` gives
-    its onset (matched one-to-one within +-STRENGTH_MATCH_S), None without one."""
+    its onset (matched one-to-one within +-STRENGTH_MATCH_S), None without one; over a bed, the
+    felt peak of the bed rendered alone over the same window (its stem, NAME.bed.wav)."""
     wav = directory / f"{entry['name']}.wav"
     hits = read_hits(directory / f"{entry['name']}.hits.csv")
     signal, envelope, rate = felt_render(tactus, wav, renders, preset)
+    bed = None if entry["bed_db"] is None else \
+        felt_render(tactus, directory / f"{entry['name']}.bed.wav", renders, preset)[0]
     rows = onset_rows(tactus, wav, preset)
     matches = dict(mir_eval.util.match_events(np.array([t for t, _, _ in hits]),
                                               np.array([float(r[0]) for r in rows]),
@@ -168,7 +175,9 @@ def analyse_gain(tactus, entry, directory, renders, preset):
             else None
         hz = felt.centroid_hz(felt.pulse(signal, rate, t), rate)
         strength = float(rows[matches[i]][2]) if i in matches else None
-        out.append(IsolatedHit(gain, felt.peak(segment), hz, latency, strength))
+        bed_peak = None if bed is None else \
+            felt.peak(felt.pulse(bed, rate, t, ISOLATED_PULSE_S))
+        out.append(IsolatedHit(gain, felt.peak(segment), hz, latency, strength, bed_peak))
     return out
 
 
@@ -262,6 +271,16 @@ def latencies(part, level):
 def worst_cell(pairs, digits):
     value, where = min(pairs)
     return f"{value:.{digits}f} ({where})"
+
+
+def above_bed_cell(part, level):
+    """The share of the isolated hits whose felt peak stands ABOVE_BED_DB over the bed's own (the
+    bed rendered alone, same window): the others' peaks are ordered by the bed's pulses."""
+    if level is None:
+        return "-"
+    hits = [h for file in part["gain"][level].values() for h in file]
+    above = sum(h.peak >= h.bed_peak * 10 ** (ABOVE_BED_DB / 20) for h in hits)
+    return f"{above / len(hits):.3f} ({above} of {len(hits)})"
 
 
 def latency_cell(part, level):
@@ -396,7 +415,10 @@ def section(result):
               "above, without the onset condition); tactus strength: the strength `tactus "
               f"onsets` gives the onset within +-{1000 * STRENGTH_MATCH_S:.0f} ms of the hit (a "
               "hit without one lowest), the hit's own reading, whatever the bed's pulses do to "
-              "the felt peak.", "",
+              "the felt peak; above the bed: the hits whose felt peak is "
+              f"{ABOVE_BED_DB:.0f} dB or more above the felt peak, over the same window, of the "
+              "bed rendered alone (its stem): the others' peaks, and so rho, are the bed's "
+              "pulses' as much as the hit's.", "",
               "| figure | bed | " + " | ".join(names) + " |", "|---|---" + rule]
     figures = [("gain -> felt peak rho, worst", lambda p, lv: worst_cell(rhos(p, lv), 3)),
                ("gain -> felt peak rho, median",
@@ -405,6 +427,7 @@ def section(result):
                ("felt snare/kick, median over kits",
                 lambda p, lv: f"{np.median([r for r, _ in snare_kick(p, lv)]):.2f}"),
                ("onset -> felt half peak, median / p95 ms", latency_cell),
+               (f"hits {ABOVE_BED_DB:.0f} dB above the bed's own felt peak", above_bed_cell),
                ("gain -> tactus strength rho, median / worst",
                 lambda p, lv: f"{np.median([r for r, _ in rhos(p, lv, 'strength_db')]):.3f} / "
                               + worst_cell(rhos(p, lv, "strength_db"), 3))]
