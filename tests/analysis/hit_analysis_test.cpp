@@ -240,16 +240,18 @@ Told told_apart(double drum_min) {
     return told;
 }
 
-// parts.drum_min: off, no onset is `other` before its part is decided; at 0.3 (about 90 % of the
-// music corpus's drum hits kept, eval/fit_parts.py), at least three of the eight notes are
-// `other` at once and at most one drum is.
+// parts.drum_min: off, no onset is `other` before its part is decided; at 0.8, at least four of
+// the eight notes are `other` at once and at most two drums are. Over near-silence every sound's
+// highs rise far over their recent loudest, as a drum's do in a mix (recent_loudest.hpp), so the
+// model tells these apart only at a drum_min far above the music corpus's (drums.toml: 0.1, about
+// 98 % of its drum hits kept; eval/fit_parts.py), where it named none of either other.
 TEST(HitAnalysis, DrumMinTellsNotesFromDrumsBeforeTheirPulse) {
     const Told off = told_apart(0);
     EXPECT_EQ(off.drums_other, 0);
     EXPECT_EQ(off.notes_other, 0);
-    const Told on = told_apart(0.5);
-    EXPECT_LE(on.drums_other, 1);
-    EXPECT_GE(on.notes_other, 3);
+    const Told on = told_apart(0.8);
+    EXPECT_LE(on.drums_other, 2);
+    EXPECT_GE(on.notes_other, 4);
     EXPECT_TRUE(on.every_other_at_once);
 }
 

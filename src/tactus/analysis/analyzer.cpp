@@ -203,7 +203,8 @@ const Features& Analyzer::analyse() noexcept {
                        .fast = onsets_.frame().powers(),
                        .fine = stft_.powers(),
                        .low_band_power = low_band.hann,
-                       .high_band_power = high_band.hann},
+                       .high_band_power = high_band.hann,
+                       .high_band_newest = high_band.newest},
                       history_.written(), onset.onset ? onset.onset_sample : -1);
         f.hit_db = hits_.level_db();
         f.hit_brightness_hz = hits_.brightness_hz();

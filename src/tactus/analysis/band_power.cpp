@@ -68,11 +68,12 @@ BandPower::Power BandPower::frame() noexcept {
         weighted_energy += weight_[j] * energy_[slot];
         weighted_samples += weight_[j] * samples_[slot];
     }
+    const double newest = samples_[position_] > 0 ? energy_[position_] / samples_[position_] : 0.0;
     position_ = (position_ + 1) % static_cast<int>(energy_.size());
     energy_[position_] = 0;
     samples_[position_] = 0;
     if (samples <= 0) return {};
-    return {.mean = energy / samples, .hann = weighted_energy / weighted_samples};
+    return {.mean = energy / samples, .hann = weighted_energy / weighted_samples, .newest = newest};
 }
 
 }  // namespace tactus

@@ -48,6 +48,7 @@ class BandPower {
 
     struct Power {
         double mean = 0, hann = 0;  // mean power over the window, plain and Hann-weighted
+        double newest = 0;          // mean power over the newest frame alone
     };
     // Closes one analysis frame: the power over the newest window of frames.
     Power frame() noexcept;

@@ -67,6 +67,7 @@ void HitAnalysis::prepare(SpectrumShape fast, SpectrumShape fine, double sample_
     top_bins_ = bin_of(kTopEdgeHz);
     features_.prepare(fast, fine);
     rises_.prepare(fast, fine);
+    high_recent_.prepare(hop_samples, sample_rate_hz, longest_wait_samples);
     brightness_.prepare(fine.bins, fine.bin_hz, settings.brightness_max_hz);
     set_live(settings);
     reset();
@@ -80,6 +81,7 @@ void HitAnalysis::set_live(const HitSettings& settings) noexcept {
 
 void HitAnalysis::reset() noexcept {
     for (AddedSpectrum* each : {&loudness_, &low_, &high_, &fast_, &fine_}) each->reset();
+    high_recent_.reset();
     features_.reset();
     hit_start_ = -1;
     level_db_ = peak_db_ = kSilentDb;
@@ -98,6 +100,7 @@ void HitAnalysis::analyse(const Frame& frame, int64_t now, int64_t onset_start) 
     one(high_, frame.high_band_power);
     fast_.analyse(frame.fast, now, onset_start);
     fine_.analyse(frame.fine, now, onset_start);
+    high_recent_.push(frame.high_band_newest);
     if (onset_start >= 0) {
         hit_start_ = onset_start;
         peak_db_ = kSilentDb;
@@ -118,8 +121,8 @@ void HitAnalysis::analyse(const Frame& frame, int64_t now, int64_t onset_start) 
     part_decided_ = false;
     // Not a drum's onset by how its bands rose (onset_rises.hpp): `other` at once, before its
     // pulse starts. Without the high band the model cannot be read: every onset waits for its
-    // part. With drum_min off nothing reads it (its numbers are 4 k instructions of an onset's
-    // frame, a block's p99).
+    // part. With drum_min off nothing reads it, and its numbers (about 4 k instructions on an
+    // onset's frame, which set a 64-frame block's p99) are not computed.
     if (onset_start >= 0) rises_read_ = has_high_band_ && (drum_min_ > 0 || rises_always_);
     if (onset_start >= 0 && rises_read_) {
         const auto band = [](const AddedSpectrum& one) {
@@ -130,7 +133,8 @@ void HitAnalysis::analyse(const Frame& frame, int64_t now, int64_t onset_start) 
                         .fine_added = fine_.added(),
                         .low = band(low_),
                         .high = band(high_),
-                        .loudness = band(loudness_)});
+                        .loudness = band(loudness_),
+                        .high_over_recent = high_recent_.rise(now, onset_start)});
         if (drum_min_ > 0 && rises_.drum_probability() < drum_min_) {
             part_ = DrumPart::other;
             part_decided_ = true;

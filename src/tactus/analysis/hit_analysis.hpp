@@ -27,6 +27,7 @@
 #include "tactus/analysis/drum_part.hpp"
 #include "tactus/analysis/onset_rises.hpp"
 #include "tactus/analysis/part_features.hpp"
+#include "tactus/analysis/recent_loudest.hpp"
 
 namespace tactus {
 
@@ -52,6 +53,7 @@ class HitAnalysis {
         double loudness_mean_square = 0;
         std::span<const float> fast, fine;  // power spectra
         double low_band_power = 0, high_band_power = 0;
+        double high_band_newest = 0;  // the high band's plain power over the newest frame
     };
     // One frame ending at analysis sample `now`, and the start of an onset this frame decided
     // (< 0: none).
@@ -83,6 +85,7 @@ class HitAnalysis {
     Brightness brightness_;
     PartFeatures features_;
     OnsetRises rises_;
+    RecentLoudest high_recent_;
     std::vector<float> fine_magnitude_;
     int low_bins_ = 0, mid_bins_ = 0, top_bins_ = 0;  // band edges in fast bins (rule_part())
     bool has_high_band_ = true, rises_always_ = false, rises_read_ = false;

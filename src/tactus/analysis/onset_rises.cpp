@@ -49,6 +49,7 @@ void OnsetRises::compute(const Frame& frame) noexcept {
     values_[v++] = rise(frame.loudness.before, frame.loudness.added);
     values_[v++] = flatness(frame.fast_added, fast_edges_[0]);
     values_[v++] = flatness(frame.fine_added, fine_first_);
+    values_[v++] = frame.high_over_recent;
 }
 
 // The logistic of the model's score on the values and their pairwise products (model_terms.hpp).

@@ -6,10 +6,11 @@
 // input's bands, analysis/band_power.hpp), at 150-400 Hz, 400 Hz-1 kHz, 1-2.5 kHz and 2.5 kHz
 // to the top of the 10 ms spectrum, and of the K-weighted loudness; and the flatness of what it
 // added above 150 Hz in the 10 ms and the 23 ms spectra (ln of geometric over arithmetic mean:
-// noise 0, a tone far below). A drum rises at once across the spectrum, most above 6 kHz, as noise;
-// a pitched note in a few bands, as partials. A logistic model over them and their pairwise
-// products (analysis/part_model.hpp, fitted by eval/fit_parts.py) gives the probability that the
-// onset is a drum's.
+// noise 0, a tone far below); and how far the 6-10 kHz band rose over its loudest of the 50 ms
+// before the onset (analysis/recent_loudest.hpp). A drum rises at once across the spectrum, most
+// above 6 kHz, as noise, and over what the mix's highs just did; a pitched note in a few bands,
+// as partials. A logistic model over them and their pairwise products (analysis/part_model.hpp,
+// fitted by eval/fit_parts.py) gives the probability that the onset is a drum's.
 // Audio thread: compute(), drum_probability(); prepare() sets band edges only.
 #pragma once
 
@@ -22,7 +23,7 @@ namespace tactus {
 
 class OnsetRises {
   public:
-    static constexpr int kCount = 9;
+    static constexpr int kCount = 10;
 
     // One band's power just before the onset and what the onset added to it.
     struct Band {
@@ -32,6 +33,7 @@ class OnsetRises {
         std::span<const float> fast_before, fast_added;  // the 10 ms spectrum's powers
         std::span<const float> fine_added;               // the 23 ms spectrum's added power
         Band low, high, loudness;
+        float high_over_recent = 0;  // analysis/recent_loudest.hpp
     };
 
     void prepare(SpectrumShape fast, SpectrumShape fine);
