@@ -33,7 +33,7 @@ TACTUS_VECTOR_CLONES void AddedSpectrum::analyse(std::span<const float> powers, 
     if (onset_start >= 0) {
         // The last frame that ended kMarginMs or more before the hit's start.
         const auto back = static_cast<int>(std::min<int64_t>(
-            (now - onset_start + margin_samples_ + hop_samples_ - 1) / hop_samples_, frames_ - 1));
+            frames_back_before(now, onset_start, margin_samples_, hop_samples_), frames_ - 1));
         const int slot = (position_ + frames_ - back) % frames_;
         std::copy_n(ring_.data() + static_cast<size_t>(slot) * bins_, bins_, reference_.data());
     }

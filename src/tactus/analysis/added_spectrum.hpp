@@ -13,6 +13,13 @@
 
 namespace tactus {
 
+// Frames back from the newest, which ended at analysis sample `now`, to the last that ended
+// `margin_samples` or more before `start`, frames ending every `hop_samples`.
+inline int64_t frames_back_before(int64_t now, int64_t start, int margin_samples,
+                                  int hop_samples) noexcept {
+    return (now - start + margin_samples + hop_samples - 1) / hop_samples;
+}
+
 class AddedSpectrum {
   public:
     static constexpr double kMarginMs = 1;

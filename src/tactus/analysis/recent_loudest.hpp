@@ -1,8 +1,8 @@
 // The onset model's rise of the highs over their recent loudest (analysis/onset_rises.hpp): the
 // 6-10 kHz band's power (analysis/band_power.hpp, plain, one analysis frame at a time, at the
 // input rate) over the last two frames up to an onset's decision, from its start on, against its
-// loudest over two frames among those that ended in the 50 ms before the start (and kMarginMs or
-// more before it, as analysis/added_spectrum.hpp keeps what was sounding). A voice's sibilants
+// loudest over two frames among those that ended in the 50 ms before the start (and
+// AddedSpectrum::kMarginMs or more before it, as what was sounding is kept). A voice's sibilants
 // and a pad's shimmer swell and fade from one moment to the next, so rising over the moment just
 // before the onset says little; a drum's noise rises over the mix's loudest highs of the last
 // 50 ms. The spectra's Hann windows weigh a frame's newest milliseconds, where the decision finds
@@ -19,7 +19,7 @@ namespace tactus {
 
 class RecentLoudest {
   public:
-    static constexpr double kSpanMs = 50, kMarginMs = 1;
+    static constexpr double kSpanMs = 50;
     static constexpr int kWindowFrames = 2;
 
     // `longest_wait_samples`: the most analysis samples an onset's start can lie before the

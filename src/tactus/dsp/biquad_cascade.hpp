@@ -197,8 +197,8 @@ TACTUS_VECTOR_CLONES Sink side_by_side_each(LanesOf<Lengths...>& lanes, int coun
     using Layout = SideBySide<Lengths...>;
     using Lanes = typename LanesOf<Lengths...>::Lanes;
     constexpr int kLanes = Layout::kLanes, V = Layout::kVectors, C = Layout::kChains;
-    LaneIndexQuad
-        place[V];  // each lane's place in its chain: it filters sample t - place at step t
+    // Each lane's place in its chain: it filters sample t - place at step t.
+    LaneIndexQuad place[V];
     for (int k = 0; k < Layout::kSlots; ++k) place[k / kLanes][k % kLanes] = Layout::kPlace[k];
     // In locals for the block: kept in registers.
     Lanes b0[V], b1[V], b2[V], a1[V], a2[V], s1[V], s2[V], y[V];
