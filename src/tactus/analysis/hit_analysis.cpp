@@ -8,6 +8,7 @@
 #include "tactus/analysis/model_terms.hpp"
 #include "tactus/analysis/part_model.hpp"
 #include "tactus/core/fast_math.hpp"
+#include "tactus/core/vector_clones.hpp"
 
 namespace tactus {
 namespace {
@@ -31,7 +32,7 @@ constexpr double kKickLowPerMid = 1.0, kKickLowShare = 0.2;
 // The part model (analysis/part_model.hpp): the hit's own numbers and their pairwise products,
 // then its numbers relative to the recent hits, standardised; the class of the largest linear
 // score.
-DrumPart modelled_part(std::span<const float> x) noexcept {
+TACTUS_VECTOR_CLONES DrumPart modelled_part(std::span<const float> x) noexcept {
     using namespace part_model;
     constexpr size_t kOwn = PartFeatures::kOwn;
     std::array<float, kTerms> z{};

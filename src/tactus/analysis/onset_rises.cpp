@@ -7,6 +7,7 @@
 #include "tactus/analysis/model_terms.hpp"
 #include "tactus/analysis/part_model.hpp"
 #include "tactus/core/fast_math.hpp"
+#include "tactus/core/vector_clones.hpp"
 
 namespace tactus {
 namespace {
@@ -53,7 +54,7 @@ void OnsetRises::compute(const Frame& frame) noexcept {
 }
 
 // The logistic of the model's score on the values and their pairwise products (model_terms.hpp).
-double OnsetRises::drum_probability() const noexcept {
+TACTUS_VECTOR_CLONES double OnsetRises::drum_probability() const noexcept {
     using namespace part_model;
     std::array<float, kDrumTerms> z{};
     put_quadratic(values_, z.data());

@@ -49,7 +49,7 @@ TACTUS_VECTOR_CLONES double log_flatness(const float* powers, int count) noexcep
     for (int start = 0; start < count; start += kChunk) {
         const int n = std::min(kChunk, count - start);
         for (int k = 0; k < n; ++k) logs[k] = fast_log(powers[start + k] + kTinyPower);
-        for (int k = 0; k < n; ++k) log_sum += logs[k];
+        log_sum = sum_in_order(log_sum, logs, static_cast<size_t>(n));
     }
     const int n = std::max(1, count);
     const double mean = sum_of(powers, std::max(0, count)) / n + kTinyPower;

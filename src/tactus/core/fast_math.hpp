@@ -7,6 +7,7 @@
 #pragma once
 
 #include <bit>
+#include <cstddef>
 #include <cstdint>
 
 namespace tactus {
@@ -31,6 +32,16 @@ inline double sum_of(const float* x, int n) noexcept {
         for (int j = 0; j < 4; ++j) s[j] += x[i + j];
     for (; i < n; ++i) s[0] += x[i];
     return (s[0] + s[1]) + (s[2] + s[3]);
+}
+
+// sum + x[0] + x[1] + ... + x[n - 1], added in that order (the same, bit for bit, as one scalar
+// loop), four terms a step: a quarter of the loop's own instructions.
+template <typename T>
+double sum_in_order(double sum, const T* x, size_t n) noexcept {
+    size_t i = 0;
+    for (; i + 4 <= n; i += 4) sum = sum + x[i] + x[i + 1] + x[i + 2] + x[i + 3];
+    for (; i < n; ++i) sum += x[i];
+    return sum;
 }
 
 // sum w[i] x[i] for i < n.
