@@ -106,8 +106,8 @@ OnsetDetector::analyse(const SampleHistory& history, std::array<double, 2> band_
 // The sub-block with the largest energy rise over its predecessor, within the newest window and
 // hop: where the new sound begins. The squares in one loop the compiler vectorises, then each
 // sub-block's summed in order (the same, bit for bit, as one scalar loop).
-TACTUS_VECTOR_CLONES int64_t OnsetDetector::refine_onset_sample(
-    const SampleHistory& history) noexcept {
+TACTUS_VECTOR_CLONES int64_t
+OnsetDetector::refine_onset_sample(const SampleHistory& history) noexcept {
     const int span = span_samples();
     history.read_latest(segment_.data(), span);
     for (size_t i = 0; i < static_cast<size_t>(span); ++i) {
@@ -118,8 +118,10 @@ TACTUS_VECTOR_CLONES int64_t OnsetDetector::refine_onset_sample(
     const int offset = span - blocks * sub_block_samples_;
     double loudest = 0.0;
     for (int b = 0; b < blocks; ++b) {
-        const double e = sum_in_order(0.0, squares_.data() + offset + b * sub_block_samples_,
-                                      static_cast<size_t>(sub_block_samples_));
+        const auto first = static_cast<size_t>(offset) +
+                           static_cast<size_t>(b) * static_cast<size_t>(sub_block_samples_);
+        const double e =
+            sum_in_order(0.0, squares_.data() + first, static_cast<size_t>(sub_block_samples_));
         block_energy_[b] = e;
         loudest = std::max(loudest, e);
     }

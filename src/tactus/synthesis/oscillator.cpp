@@ -101,8 +101,8 @@ double Oscillator::next(double frequency_hz, double square_mix) noexcept {
         current = next_harmonic;
     };
     square += current;  // k = 1: weight 1 and 1 / k = 1, both products exact
-    if (last_harmonic < 3)  // no harmonic above the fundamental: the loops below add nothing
-        return fundamental + square_mix * (square * (4.0 / kPi) - fundamental);
+    // No harmonic above the fundamental: the loops below would add nothing.
+    if (last_harmonic < 3) return fundamental + square_mix * (square * (4.0 / kPi) - fundamental);
     next();
     // The harmonics with a tabled reciprocal, then (absurdly low f0) the others. `fade` is
     // harmonic k's unclamped weight, (ratio - k) / 2, one less at each step. The tabled ones two
@@ -110,24 +110,25 @@ double Oscillator::next(double frequency_hz, double square_mix) noexcept {
     // same operations in the same order as one a step.
     const int last_tabled =
         std::min(last_harmonic, static_cast<int>(2 * kOddReciprocals.size() - 1));
-    const int tabled = (last_tabled - 1) / 2;  // harmonics 3 ... last_tabled: reciprocals 1 ...
+    // harmonics 3 ... last_tabled: reciprocals 1 ... tabled
+    const auto tabled = static_cast<size_t>((last_tabled - 1) / 2);
     double fade = 0.5 * (ratio - 3.0);
-    int i = 1;  // harmonic k = 2 i + 1
+    size_t i = 1;  // harmonic k = 2 i + 1
     for (; i < tabled; i += 2) {
-        square += std::min(1.0, fade) * current * kOddReciprocals[static_cast<size_t>(i)];
+        square += std::min(1.0, fade) * current * kOddReciprocals[i];
         previous = two_cos * current - previous;  // the next harmonic, in `previous`
         fade -= 1.0;
-        square += std::min(1.0, fade) * previous * kOddReciprocals[static_cast<size_t>(i + 1)];
+        square += std::min(1.0, fade) * previous * kOddReciprocals[i + 1];
         current = two_cos * previous - current;
         fade -= 1.0;
     }
     if (i == tabled) {
-        square += std::min(1.0, fade) * current * kOddReciprocals[static_cast<size_t>(i)];
+        square += std::min(1.0, fade) * current * kOddReciprocals[i];
         next();
         fade -= 1.0;
     }
     if (last_harmonic > last_tabled)
-        for (int k = 2 * tabled + 3; k <= last_harmonic; k += 2, fade -= 1.0) {
+        for (int k = 2 * static_cast<int>(tabled) + 3; k <= last_harmonic; k += 2, fade -= 1.0) {
             square += std::min(1.0, fade) * current * (1.0 / k);
             next();
         }
