@@ -10,10 +10,11 @@ built in --work once and cached), matches its onsets to the drum hits as eval/mu
 parts.drum_min that keeps each of KEEPS of the tuning parts' drum hits, per bed level and part,
 the share of drum hits the onset model keeps and of the other onsets (over a bed, the bed's
 own) it names other; then, per bed level and part, the share of matched onsets whose part
-tactus names right (kick / snare / hat / all): as tactus printed it, and as the model fitted
-here would; then the same model fitted with two of the tuning kits left out at a time, measured
-on those two (the two tuning parts, Sonic Pi's kits and the recorded tuning kits, are what the
-model may be chosen on; the held-out parts give the figures).
+tactus names right (kick / snare / hat / all): as tactus printed it (and per kit, with the
+drums alone), and as the model fitted here would; then the same model fitted with two of the
+tuning kits left out at a time, measured on those two (the two tuning parts, Sonic Pi's kits and
+the recorded tuning kits, are what the model may be chosen on; the held-out parts give the
+figures).
 
 The model: multinomial logistic regression (kick, snare, hat) on a hit's own features and their
 pairwise products (quadratic terms) and, linearly, its features less the song's recent hits' mean
@@ -291,6 +292,22 @@ def kits_left_out(mixes, kits_out=2):
     return {row: music.pooled_accuracy(counts[row]) for row in ROWS}
 
 
+def kits_table(data):
+    """Each kit's hits named right of those matched, kick / snare / hat, with the drums alone:
+    where the part model's errors lie."""
+    print("| part | kit | kick / snare / hat right, drums alone |")
+    print("|---|---|---|")
+    for part, mixes in data.items():
+        kits = collections.defaultdict(list)
+        for mix in mixes:
+            if mix["row"] == (False, None):
+                kits[mix["kit"]].append(counted(mix, mix["tactus"]))
+        for kit, results in sorted(kits.items()):
+            cells = [f"{sum(r[p][0] for r in results)}/{sum(r[p][1] for r in results)}"
+                     for p in music.PRIORITY]
+            print(f"| {part} | {kit} | {' / '.join(cells)} |")
+
+
 def table(results):
     names = list(results)
     print("| bed | " + " | ".join(f"{n}: kick / snare / hat / all" for n in names) + " |")
@@ -318,6 +335,8 @@ def main():
     onsets_table(data, onsets)
     print("\ndrum part right, tactus as built:")
     table({part: accuracy(mixes, lambda m: m["tactus"]) for part, mixes in data.items()})
+    print("\ndrum part right per kit, tactus as built:")
+    kits_table(data)
     print("\nthe model fitted now (tuning parts):")
     table({part: accuracy(mixes, predictor(model)) for part, mixes in data.items()})
     print("\nfitted with two tuning kits left out, measured on them:")
