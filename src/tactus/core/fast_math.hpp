@@ -1,6 +1,7 @@
 // Arithmetic kernels for the analysis hot loops, written so that the compiler can vectorise
 // them for any x86-64 (SSE2) without -ffast-math: sums in four independent double partial
-// sums (a fixed, block-size-independent order, so results are reproducible), and a natural
+// sums (a fixed, block-size-independent order, so results are reproducible), a sum in a scalar
+// loop's own order with less of the loop's overhead (sum_in_order), and a natural
 // logarithm from the float's exponent and a short series (Abramowitz & Stegun 4.1.27):
 // ln x = e ln 2 + 2 atanh(s), s = (m - 1) / (m + 1), m in [sqrt(1/2), sqrt(2)), to within
 // 2 float ulps, where std::log costs a library call per value.
