@@ -11,7 +11,7 @@ void AddedSpectrum::prepare(int bins, int hop_samples, int longest_wait_samples,
                             double sample_rate_hz) {
     bins_ = bins;
     hop_samples_ = std::max(1, hop_samples);
-    margin_samples_ = static_cast<int>(std::lround(kMarginMs * 1e-3 * sample_rate_hz));
+    margin_samples_ = margin_samples(sample_rate_hz);
     frames_ = (longest_wait_samples + margin_samples_) / hop_samples_ + 2;
     ring_.assign(static_cast<size_t>(frames_) * static_cast<size_t>(bins_), 0.0f);
     reference_.assign(static_cast<size_t>(bins_), 0.0f);

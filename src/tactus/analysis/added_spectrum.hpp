@@ -11,6 +11,8 @@
 #include <span>
 #include <vector>
 
+#include "tactus/core/units.hpp"
+
 namespace tactus {
 
 // Frames back from the newest, which ended at analysis sample `now`, to the last that ended
@@ -23,6 +25,10 @@ inline int64_t frames_back_before(int64_t now, int64_t start, int margin_samples
 class AddedSpectrum {
   public:
     static constexpr double kMarginMs = 1;
+    // kMarginMs in samples at `sample_rate_hz` (RecentLoudest keeps the same margin).
+    static int margin_samples(double sample_rate_hz) {
+        return static_cast<int>(ms_to_samples(kMarginMs, sample_rate_hz));
+    }
 
     // `longest_wait_samples`: the most analysis samples an onset's start can lie before the frame
     // that decides it (the ring of past spectra covers it).

@@ -14,7 +14,7 @@ constexpr double kRiseLimit = 6;       // log10 of a power's rise
 
 void RecentLoudest::prepare(int hop_samples, double sample_rate_hz, int longest_wait_samples) {
     hop_samples_ = std::max(1, hop_samples);
-    margin_samples_ = static_cast<int>(ms_to_samples(AddedSpectrum::kMarginMs, sample_rate_hz));
+    margin_samples_ = AddedSpectrum::margin_samples(sample_rate_hz);
     span_frames_ = std::max(
         kWindowFrames, static_cast<int>(ms_to_samples(kSpanMs, sample_rate_hz)) / hop_samples_);
     frames_ = (longest_wait_samples + margin_samples_) / hop_samples_ + span_frames_ + 2;
@@ -35,7 +35,7 @@ void RecentLoudest::push(double power) noexcept {
 float RecentLoudest::rise(int64_t now, int64_t start) const noexcept {
     // Frames since the start (at least the newest), and the newest that ended a margin before it.
     const auto since = static_cast<int>(
-        std::clamp<int64_t>((now - start + hop_samples_ - 1) / hop_samples_, 1, kWindowFrames));
+        std::clamp<int64_t>(frames_back_before(now, start, 0, hop_samples_), 1, kWindowFrames));
     double power_now = 0;
     for (int j = 0; j < since; ++j) power_now += back(j) / since;
     const auto before = static_cast<int>(std::min<int64_t>(
