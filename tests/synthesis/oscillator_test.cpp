@@ -83,12 +83,12 @@ TEST_P(OscillatorCase, SquareHarmonicsFollowOneOverKBelowTheLimit) {
 
 INSTANTIATE_TEST_SUITE_P(
     RatesAndPitches, OscillatorCase,
-    ::testing::Values(OscillatorSetting{48000, 1000, 50}, OscillatorSetting{48000, 1000, 73.3},
-                      OscillatorSetting{48000, 1000, 101.7}, OscillatorSetting{48000, 1000, 237.1},
-                      OscillatorSetting{48000, 1000, 320}, OscillatorSetting{48000, 2000, 61.9},
-                      OscillatorSetting{8000, 1000, 55.5}, OscillatorSetting{8000, 1000, 123.4},
-                      OscillatorSetting{8000, 1000, 300}, OscillatorSetting{8000, 4000, 97.3},
-                      OscillatorSetting{8000, 4000, 440}));
+    ::testing::Values(OscillatorSetting{48000, 1000, 23.7}, OscillatorSetting{48000, 1000, 50},
+                      OscillatorSetting{48000, 1000, 73.3}, OscillatorSetting{48000, 1000, 101.7},
+                      OscillatorSetting{48000, 1000, 237.1}, OscillatorSetting{48000, 1000, 320},
+                      OscillatorSetting{48000, 2000, 61.9}, OscillatorSetting{8000, 1000, 55.5},
+                      OscillatorSetting{8000, 1000, 123.4}, OscillatorSetting{8000, 1000, 300},
+                      OscillatorSetting{8000, 4000, 97.3}, OscillatorSetting{8000, 4000, 440}));
 
 TEST(Oscillator, MixIsLinearBetweenSineAndSquare) {
     const double fs = 48000, f0 = 87.3;
@@ -145,6 +145,18 @@ TEST(Oscillator, NonFiniteFrequencyDoesNotPoisonLaterOutput) {
         osc.next(bad, 1.0);
         for (int i = 0; i < 100; ++i) ASSERT_TRUE(std::isfinite(osc.next(100.0, 0.5))) << bad;
     }
+}
+
+// Under limit / 1024 the series keeps its 512 tabled odd harmonics: up to 1021 f0 at 4/(pi k),
+// 1023 f0 at half that, nothing above.
+TEST(Oscillator, SquareUnderAThousandthOfTheLimitKeepsItsTabledHarmonics) {
+    const double fs = 4000, f0 = 0.7;  // 1023 f0 = 716 Hz, under the 1 kHz limit
+    const auto x = render(fs, 1000, f0, 1.0);
+    const test::Spectrum s(x, fs);
+    for (int k : {3, 101, 1021})
+        EXPECT_NEAR(db(s.amplitude_near(k * f0) / (4.0 / (kPi * k))), 0.0, 0.1) << k;
+    EXPECT_NEAR(db(s.amplitude_near(1023 * f0) / (2.0 / (kPi * 1023))), 0.0, 0.1);
+    EXPECT_LT(s.max_bin_amplitude(1023 * f0 + 0.5 * f0, fs / 2), kFloor * s.amplitude_near(f0));
 }
 
 TEST(Oscillator, HarmonicLimitIsClampedBelowNyquist) {

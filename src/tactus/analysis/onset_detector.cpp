@@ -48,7 +48,6 @@ void OnsetDetector::prepare(const ProcessSpec& spec, int hop_samples, const Onse
     sub_block_samples_ =
         std::max<int>(1, static_cast<int>(ms_to_samples(kSubBlockMs, sample_rate_hz)));
     segment_.assign(static_cast<size_t>(span_samples()), 0.0f);
-    squares_.assign(static_cast<size_t>(span_samples()), 0.0);
     block_energy_.assign(static_cast<size_t>(span_samples() / sub_block_samples_), 0.0);
     reset();
 }
@@ -104,24 +103,18 @@ OnsetDetector::analyse(const SampleHistory& history, std::array<double, 2> band_
 }
 
 // The sub-block with the largest energy rise over its predecessor, within the newest window and
-// hop: where the new sound begins. The squares in one loop the compiler vectorises, then each
-// sub-block's summed in order (the same, bit for bit, as one scalar loop).
+// hop: where the new sound begins.
 TACTUS_VECTOR_CLONES int64_t
 OnsetDetector::refine_onset_sample(const SampleHistory& history) noexcept {
     const int span = span_samples();
     history.read_latest(segment_.data(), span);
-    for (size_t i = 0; i < static_cast<size_t>(span); ++i) {
-        const double x = segment_[i];
-        squares_[i] = x * x;
-    }
     const int blocks = static_cast<int>(block_energy_.size());
     const int offset = span - blocks * sub_block_samples_;
     double loudest = 0.0;
     for (int b = 0; b < blocks; ++b) {
         const auto first = static_cast<size_t>(offset) +
                            static_cast<size_t>(b) * static_cast<size_t>(sub_block_samples_);
-        const double e =
-            sum_in_order(0.0, squares_.data() + first, static_cast<size_t>(sub_block_samples_));
+        const double e = sum_of_squares(segment_.data() + first, sub_block_samples_);
         block_energy_[b] = e;
         loudest = std::max(loudest, e);
     }

@@ -77,7 +77,7 @@ class OnsetDetector {
     TemporalMax bins_max_;              // the bins' log magnitudes, kLagMs to kSpanMs back
     std::array<TemporalMax, 2> bands_;  // low, high: their log power over their own lags
     SlidingMedian recent_flux_;         // over onset.history_ms
-    std::vector<double> squares_, block_energy_;  // segment_'s samples squared; per sub-block
+    std::vector<double> block_energy_;  // per sub-block of segment_
     int hop_samples_ = 0, sub_block_samples_ = 0, bins_ = 0;
     int64_t min_interval_samples_ = 0, last_onset_sample_ = INT64_MIN / 2;
     bool armed_ = true;

@@ -35,6 +35,16 @@ inline double sum_of(const float* x, int n) noexcept {
     return (s[0] + s[1]) + (s[2] + s[3]);
 }
 
+// sum x[i]^2 for i < n, in double: eight partial sums, two AVX vectors (four SSE2 ones).
+inline double sum_of_squares(const float* x, int n) noexcept {
+    double s[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+    int i = 0;
+    for (; i + 8 <= n; i += 8)
+        for (int j = 0; j < 8; ++j) s[j] += static_cast<double>(x[i + j]) * x[i + j];
+    for (; i < n; ++i) s[0] += static_cast<double>(x[i]) * x[i];
+    return ((s[0] + s[1]) + (s[2] + s[3])) + ((s[4] + s[5]) + (s[6] + s[7]));
+}
+
 // sum + x[0] + x[1] + ... + x[n - 1], added in that order (the same, bit for bit, as one scalar
 // loop), four terms a step: a quarter of the loop's own instructions.
 template <typename T>

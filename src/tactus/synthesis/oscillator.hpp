@@ -2,7 +2,7 @@
 // generators). The square is additive: odd harmonics k up to the harmonic limit, amplitude
 // 4/(pi k), the top one faded in/out continuously as f0 moves, so no partial lies above the limit
 // and nothing aliases into the vibrotactile band. Harmonics come from the Chebyshev recurrence
-// sin((k+2)x) = 2 cos(2x) sin(kx) - sin((k-2)x): one multiply-add per harmonic.
+// sin((k+4)x) = 2 cos(4x) sin(kx) - sin((k-4)x), two interleaved: one multiply-add per harmonic.
 #pragma once
 
 #include "tactus/dsp/process_spec.hpp"
