@@ -53,6 +53,26 @@ inline void update_live_lanes(Lanes& s1, Lanes& s2, const Lanes& n1, const Lanes
     }
 }
 
+// One step of the sections in a vector of lanes, each Biquad::process's arithmetic in its order
+// on its input x: their outputs into y, their new states into s1 and s2, every lane's or
+// (`masked`) the live lanes' only. By reference, as update_live_lanes.
+template <typename Lanes, typename Places>
+[[gnu::always_inline]] inline void step_sections(const Lanes& b0, const Lanes& b1, const Lanes& b2,
+                                                 const Lanes& a1, const Lanes& a2, Lanes& s1,
+                                                 Lanes& s2, Lanes& y, const Lanes& x, bool masked,
+                                                 const Places& place, int t, int count) noexcept {
+    const Lanes out = b0 * x + s1;
+    const Lanes n1 = (b1 * x - a1 * out) + s2;
+    const Lanes n2 = b2 * x - a2 * out;
+    if (masked) {
+        update_live_lanes(s1, s2, n1, n2, place, t, count);
+    } else {
+        s1 = n1;
+        s2 = n2;
+    }
+    y = out;
+}
+
 // cascade_each, one section after the other: the sections are copied into locals (unrolled,
 // states in registers) and written back after.
 template <int N, typename Input, typename Sink>
@@ -106,16 +126,8 @@ TACTUS_VECTOR_CLONES void wavefront_each(Biquad* sections, int count, Input inpu
                 x = Lanes{first, y[v][0], y[v][1], y[v][2]};
             else
                 x = Lanes{first, y[v][0]};
-            const Lanes out = b0[v] * x + s1[v];
-            const Lanes n1 = (b1[v] * x - a1[v] * out) + s2[v];
-            const Lanes n2 = b2[v] * x - a2[v] * out;
-            if (masked) {
-                update_live_lanes(s1[v], s2[v], n1, n2, place[v], t, count);
-            } else {
-                s1[v] = n1;
-                s2[v] = n2;
-            }
-            y[v] = out;
+            step_sections(b0[v], b1[v], b2[v], a1[v], a2[v], s1[v], s2[v], y[v], x, masked,
+                          place[v], t, count);
         }
         const int done = t - (N - 1);  // unmasked steps all have 0 <= done < count
         if (!masked || (done >= 0 && done < count)) sink(done, y[V - 1][(N - 1) % kLanes]);
@@ -223,16 +235,8 @@ TACTUS_VECTOR_CLONES Sink side_by_side_each(LanesOf<Lengths...>& lanes, int coun
                 else  // a section after a chain's head: lane k - 1 holds the one before it
                     x[lane] = y[std::max(k - 1, 0) / kLanes][std::max(k - 1, 0) % kLanes];
             }
-            const Lanes out = b0[v] * x + s1[v];
-            const Lanes n1 = (b1[v] * x - a1[v] * out) + s2[v];
-            const Lanes n2 = b2[v] * x - a2[v] * out;
-            if (masked) {
-                update_live_lanes(s1[v], s2[v], n1, n2, place[v], t, count);
-            } else {
-                s1[v] = n1;
-                s2[v] = n2;
-            }
-            y[v] = out;
+            step_sections(b0[v], b1[v], b2[v], a1[v], a2[v], s1[v], s2[v], y[v], x, masked,
+                          place[v], t, count);
         }
         for (int c = 0, last = -1; c < C; ++c) {
             last += Layout::kLength[c];
