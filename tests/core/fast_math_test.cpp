@@ -1,7 +1,8 @@
 // sum_in_order adds its terms in the order a scalar loop does, bit for bit, at every length (the
 // part model's scores and the spectral flatness rely on it: analysis/model_terms.hpp,
 // analysis/part_features.cpp), on terms whose sum depends on the order; and linear_score, which
-// reads its products through it, scores as the plain loop does.
+// reads its products through it, scores as the plain loop does; sum_of_squares, whose partial
+// sums the onset refinement reads, is the squares' sum within rounding, every term counted once.
 #include "tactus/core/fast_math.hpp"
 
 #include <gtest/gtest.h>
@@ -51,6 +52,21 @@ TEST(SumInOrder, IsTheScalarLoopsSumBitForBit) {
                           bits(scalar_sum(-3.0, floats));
     }
     EXPECT_GT(order_mattered, 30);  // the terms do tell orders apart
+}
+
+TEST(SumOfSquares, IsTheSquaresSumAtEveryLength) {
+    for (int count = 0; count <= 70; ++count) {
+        std::vector<float> x(static_cast<size_t>(count));
+        for (int i = 0; i < count; ++i) x[static_cast<size_t>(i)] = static_cast<float>(i + 1);
+        // 1 + 4 + ... + n^2, exact in double: any term missed or counted twice shows
+        const double exact = count * (count + 1.0) * (2.0 * count + 1.0) / 6.0;
+        EXPECT_EQ(sum_of_squares(x.data(), count), exact) << count;
+        const auto wild =
+            wild_terms<float>(static_cast<size_t>(count), static_cast<uint32_t>(count));
+        double plain = 0.0;
+        for (const float v : wild) plain += static_cast<double>(v) * v;
+        EXPECT_NEAR(sum_of_squares(wild.data(), count), plain, 1e-14 * plain) << count;
+    }
 }
 
 TEST(LinearScore, ScoresAsThePlainLoop) {
