@@ -9,6 +9,10 @@
 #   per block         Engine::process of one 64-frame block at 48 kHz (the Amen break, default
 #                     preset, 2 s after a second's warm-up): instructions at the median, 99th
 #                     percentile and largest; a block's work, apart from caches and the machine
+#   floors            what no change of ours can lower: a program linked as the engine that
+#                     returns at once (the dynamic loader and the libraries' start-up), and
+#                     FFTW's first plan, of 2 points (its planner made, which every process's
+#                     first Engine::prepare pays)
 #   structural swap   Engine::set() of the hop on the control thread of a running engine (64-frame
 #                     blocks): the new pipeline built and primed; median and largest of 20 (ms,
 #                     this machine, whatever else runs), and its instructions
@@ -43,6 +47,8 @@ soundfile.write('$work/ten_ms.wav', (0.5 * numpy.sin(2 * numpy.pi * 100 * t)).as
                 48000, subtype='FLOAT')"
 seconds=10
 whole=$(count -- "$tactus" render "$work/ten_ms.wav" -o "$work/out.wav" --force)
+floor=$(count -- "$bench" floor)
+fftw=$(inside measured_fftw_planner fftw)
 first=$(inside measured_first_prepare prepare)
 again=$(inside measured_prepare_again prepare)
 process=$(inside measured_process process $seconds)
@@ -57,6 +63,8 @@ swap_instructions=$(inside measured_swap swap $swaps)
 read -r swap_median swap_max < <("$bench" swap 20)
 
 printf '%-58s %14s\n' "whole process, tactus render of a 10 ms file" "$whole"
+printf '%-58s %14s\n' "floor: a program linked as the engine, returning at once" "$floor"
+printf '%-58s %14s\n' "floor: FFTW's first plan in a process (2 points)" "$fftw"
 printf '%-58s %14s\n' "Engine::prepare, the first in the process" "$first"
 printf '%-58s %14s\n' "Engine::prepare, another engine, same settings" "$again"
 printf '%-58s %14s\n' "Engine::process, per second of 48 kHz mono (default preset)" \

@@ -8,9 +8,15 @@
 //   startup_bench blocks S  Engine::process on S seconds of the Amen break at 48 kHz mono in
 //                           64-frame blocks (a live device's period) after a second's warm-up,
 //                           each block a call of its own: instructions per block
+//   startup_bench floor     nothing: the dynamic loader and the libraries' start-up alone, the
+//                           least any program linked as the engine pays
+//   startup_bench fftw      FFTW's first plan, of 2 points: its planner made (its solvers
+//                           registered), the least the first FFT plan of a process pays
 //   startup_bench swap N    N structural changes (the hop, 2 <-> 3 ms) on the control thread of
 //                           an engine running at 48 kHz in 64-frame blocks: prints the median
 //                           and largest time of Engine::set() in ms
+#include <fftw3.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -66,6 +72,11 @@ __attribute__((noinline)) void measured_block(Engine& engine, const float* in, f
                                               int block) {
     engine.process(in, out, block);
 }
+__attribute__((noinline)) void measured_fftw_planner() {
+    float time[2] = {};
+    fftwf_complex spectrum[2] = {};
+    fftwf_destroy_plan(fftwf_plan_dft_r2c_1d(2, time, spectrum, FFTW_ESTIMATE));
+}
 __attribute__((noinline)) void measured_swap(Engine& engine, double hop_ms) {
     engine.set(tactus::P::analysis_hop_ms, hop_ms);
 }
@@ -73,6 +84,11 @@ __attribute__((noinline)) void measured_swap(Engine& engine, double hop_ms) {
 
 int main(int argc, char** argv) {
     const std::string mode = argc > 1 ? argv[1] : "";
+    if (mode == "floor") return 0;
+    if (mode == "fftw") {
+        measured_fftw_planner();
+        return 0;
+    }
     if (mode == "prepare") {
         Engine first, again;
         measured_first_prepare(first);
@@ -121,7 +137,9 @@ int main(int argc, char** argv) {
         std::printf("%.2f %.2f\n", ms[ms.size() / 2], ms.back());
         return 0;
     }
-    std::fprintf(stderr, "usage: %s prepare | process SECONDS | blocks SECONDS | swap COUNT\n",
-                 argv[0]);
+    std::fprintf(
+        stderr,
+        "usage: %s floor | fftw | prepare | process SECONDS | blocks SECONDS | swap COUNT\n",
+        argv[0]);
     return 2;
 }
