@@ -15,6 +15,10 @@ sounding before the hit, the largest over the 25 ms after it, summed
   strongest the same over whichever of below 150 Hz, 150 Hz-1 kHz and 1-5.6 kHz gained most;
   loudest   whole, each bin over its loudest of the frames of the 50 ms before, counting only the
             bins at least twice that (a bed's own swells left out), in the 23 ms spectrum;
+  template  a separation that knows each hit's exact sound: the magnitude spectrum of the 12 ms
+            from the hit in the mix fitted, by non-negative least squares up to 5.6 kHz, as the
+            bed's (the 12 ms that ended 2 ms before it) plus the hit's own spectrum shape (from the
+            drum stem, scaled to unit norm); the reading is that shape's weight;
   stem      whole, on the drum stem alone (no bed: the reading's own bound).
 Prints Spearman's rho of hit gain -> that power per file, median and worst over the files, per
 part of the corpus and instrument: what `gain -> felt peak rho` in eval/results.md could reach if
@@ -24,6 +28,7 @@ import pathlib
 import sys
 
 import numpy as np
+import scipy.optimize
 import scipy.stats
 import soundfile
 
@@ -35,6 +40,7 @@ WINDOW_S, HOP_S = 0.010, 0.00145
 REFERENCE_GAP_S, LOOK_S = 0.001, 0.025
 LOUDEST_WINDOW_S, LOUDEST_SPAN_S, LOUDEST_TIMES = 0.023, 0.050, 2.0
 TOP_HZ, LOW_HZ, MID_HZ = 5600, 150, 1000
+TEMPLATE_S, TEMPLATE_GAP_S, TEMPLATE_FFT = 0.012, 0.002, 2048
 
 
 def spectra(path, window_s=WINDOW_S):
@@ -61,6 +67,27 @@ def added(power, ends, freqs, window_s, t, bands, span_s=0.0, times=1.0):
     return max(gained[:, (freqs >= low) & (freqs < high)].sum(axis=1).max() for low, high in bands)
 
 
+def magnitude(x, rate, start_s):
+    """The Hann-windowed magnitude spectrum up to TOP_HZ of the TEMPLATE_S from start_s."""
+    segment = x[max(0, int(start_s * rate)):int((start_s + TEMPLATE_S) * rate)]
+    spectrum = np.abs(np.fft.rfft(segment * np.hanning(len(segment)), TEMPLATE_FFT))
+    return spectrum[np.fft.rfftfreq(TEMPLATE_FFT, 1 / rate) <= TOP_HZ]
+
+
+def template_weight(mix, stem, rate, t):
+    """The weight of the hit's own spectrum shape in the mix's, beside the bed's just before."""
+    shape = magnitude(stem, rate, t)
+    shape /= np.linalg.norm(shape) + 1e-30
+    bed = magnitude(mix, rate, t - TEMPLATE_GAP_S - TEMPLATE_S)
+    (_, weight), _ = scipy.optimize.nnls(np.stack([bed, shape], axis=1), magnitude(mix, rate, t))
+    return weight
+
+
+def mono(path):
+    x, rate = soundfile.read(path, dtype="float64", always_2d=True)
+    return x.mean(axis=1), rate
+
+
 def readings(entry, directory):
     """{reading: rho of gain -> added power} for one isolated-hit file."""
     hits = read_hits(directory / f"{entry['name']}.hits.csv")
@@ -74,6 +101,10 @@ def readings(entry, directory):
     fine = spectra(directory / f"{entry['name']}.wav", LOUDEST_WINDOW_S)
     out["loudest"] = scipy.stats.spearmanr(gains, [
         added(*fine, t, [(0, TOP_HZ)], LOUDEST_SPAN_S, LOUDEST_TIMES) for t, _, _ in hits])[0]
+    (mix_x, rate), (stem_x, _) = (mono(directory / f"{entry['name']}{suffix}.wav")
+                                  for suffix in ("", ".drums"))
+    out["template"] = scipy.stats.spearmanr(gains, [template_weight(mix_x, stem_x, rate, t)
+                                                    for t, _, _ in hits])[0]
     stem = spectra(directory / f"{entry['name']}.drums.wav")
     out["stem"] = scipy.stats.spearmanr(gains, [added(*stem, t, [(0, TOP_HZ)])
                                                 for t, _, _ in hits])[0]
@@ -88,15 +119,16 @@ def main():
     manifests = music_corpus.build(args.work, args.work / "gm-samples", music.PARTS, 2)
     print(f"isolated hits over a bed at {args.bed:+g} dB: rho of hit gain -> added power, "
           "median / worst over the files")
-    print("| part | instrument | files | whole | by part | strongest | loudest | stem |")
-    print("|---|---|---|---|---|---|---|---|")
+    names = ("whole", "by part", "strongest", "loudest", "template", "stem")
+    print("| part | instrument | files | " + " | ".join(names) + " |")
+    print("|---|---|---|" + "---|" * len(names))
     for part in music.PARTS:
         entries = [e for e in manifests[part]["gain"] if e["bed_db"] == args.bed]
         for instrument in ("kick", "snare"):
             rows = [readings(e, args.work / part) for e in entries
                     if e["instrument"] == instrument]
             cells = [f"{np.median([r[k] for r in rows]):.2f} / {np.min([r[k] for r in rows]):.2f}"
-                     for k in ("whole", "by part", "strongest", "loudest", "stem")]
+                     for k in names]
             print(f"| {music.PART_NAMES[part]} | {instrument} | {len(rows)} | "
                   + " | ".join(cells) + " |")
     return 0
