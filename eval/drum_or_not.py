@@ -25,12 +25,11 @@ import mir_eval
 import numpy as np
 import scipy.signal
 import scipy.stats
-import soundfile
 
 import fit_parts
 import music
 import music_corpus
-from shared import onset_rows, read_hits
+from shared import onset_rows, read_hits, read_mono
 
 BANDS_HZ = ((30, 150), (150, 400), (400, 1000), (1000, 2500), (2500, 6000), (6000, 10000))
 NAMES = [f"rise {lo}-{hi} Hz" for lo, hi in BANDS_HZ] + ["rise, whole", "strength"]
@@ -41,9 +40,7 @@ TUNING, HELD_OUT = ("tuning", "recorded-tuning"), ("held-out", "recorded-held-ou
 
 def rises(path, onsets):
     """[onset][band] power rise, dB, for (start s, decided s) pairs."""
-    x, rate = soundfile.read(path, dtype="float64")
-    if x.ndim > 1:
-        x = x.mean(axis=1)
+    x, rate = read_mono(path)
     signals = [scipy.signal.sosfilt(scipy.signal.butter(4, band, "bandpass", fs=rate,
                                                         output="sos"), x) for band in BANDS_HZ]
     energy = [np.concatenate([[0.0], np.cumsum(s * s)]) for s in signals + [x]]

@@ -24,19 +24,18 @@ import tempfile
 
 import numpy as np
 import scipy.signal
-import soundfile
 
 import music
 import music_corpus
-from shared import read_hits, run
+from shared import read_hits, read_mono, run
 
 AFTER_MS = (3, 6, 12, 24)
 MATCH_S = 0.02
 SPLIT_HZ = 150
 
 
-def pulse_hz(tactus, wav, preset):
-    """Per hit of `wav`, the mapped frequency AFTER_MS after its onset was decided (nan: none)."""
+def pulse_hz(tactus, wav, hits, preset):
+    """Per hit, the mapped frequency AFTER_MS after its onset was decided (nan: none)."""
     text = run([tactus, "analyze", wav, "--preset", preset]).stdout
     rows = list(csv.DictReader(line for line in text.splitlines() if not line.startswith("#")))
     times = np.array([float(r["time_s"]) for r in rows])
@@ -44,7 +43,7 @@ def pulse_hz(tactus, wav, preset):
     decided = np.flatnonzero([r["onset"] == "1" for r in rows])
     starts = np.array([float(rows[k]["onset_time_s"]) for k in decided])
     out = []
-    for t, _, _ in read_hits(wav.with_name(wav.name.replace(".wav", ".hits.csv"))):
+    for t, _, _ in hits:
         near = decided[np.abs(starts - t) < MATCH_S] if len(decided) else decided
         out.append([np.interp(times[near[0]] + ms / 1000, times, hz) if len(near) else np.nan
                     for ms in AFTER_MS])
@@ -53,8 +52,7 @@ def pulse_hz(tactus, wav, preset):
 
 def low_share(stem, hits):
     """The loudest hit's share of energy below SPLIT_HZ in its first AFTER_MS."""
-    x, rate = soundfile.read(stem, dtype="float64", always_2d=True)
-    x = x.mean(axis=1)
+    x, rate = read_mono(stem)
     low = scipy.signal.sosfilt(scipy.signal.butter(4, SPLIT_HZ, "low", fs=rate, output="sos"), x)
     high = x - low
     t = max(hits, key=lambda hit: hit[2])[0]
@@ -84,27 +82,27 @@ def main():
     for part in music.PARTS:
         directory = work / part
         entries = manifests[part]["gain"]
+        hits = {e["name"]: read_hits(directory / f"{e['name']}.hits.csv") for e in entries}
         with concurrent.futures.ThreadPoolExecutor(2) as pool:
-            hz = list(pool.map(lambda e: np.nanmedian(
-                pulse_hz(tactus, directory / f"{e['name']}.wav", args.preset), axis=0), entries))
+            hz = list(pool.map(lambda e: np.nanmedian(pulse_hz(
+                tactus, directory / f"{e['name']}.wav", hits[e["name"]], args.preset), axis=0),
+                entries))
+        # The drums alone: each kit's stem is its file without a bed.
+        shares = {i: [low_share(directory / f"{e['name']}.wav", hits[e["name"]])
+                      for e in entries if e["bed_db"] is None and e["instrument"] == i]
+                  for i in ("kick", "snare")}
+        spans = [" / ".join(f"{lo:.2f}-{hi:.2f}"
+                            for lo, hi in zip(np.min(shares[i], axis=0), np.max(shares[i], axis=0)))
+                 for i in ("kick", "snare")]
         for level in music.GAIN_LEVELS:
             by_kit = {(e["kit"], e["instrument"]): h for e, h in zip(entries, hz)
                       if e["bed_db"] == level}
             ratios = np.array([by_kit[(kit, "snare")] / by_kit[(kit, "kick")]
                                for kit, instrument in by_kit if instrument == "kick"])
             cells = [f"{np.nanmedian(r):.2f} / {np.nanmin(r):.2f}" for r in ratios.T]
-            shares = {"kick": [], "snare": []}
-            if level is None:
-                for e in entries:
-                    if e["bed_db"] is None:
-                        shares[e["instrument"]].append(low_share(
-                            directory / f"{e['name']}.wav",
-                            read_hits(directory / f"{e['name']}.hits.csv")))
-            spans = [" / ".join(f"{lo:.2f}-{hi:.2f}" for lo, hi in
-                                zip(np.min(shares[i], axis=0), np.max(shares[i], axis=0)))
-                     if shares[i] else "" for i in ("kick", "snare")]
+            alone = spans if level is None else ["", ""]
             print(f"| {music.PART_NAMES[part]} | {music.level_label(level)} | "
-                  + ", ".join(cells) + f" | {spans[0]} | {spans[1]} |")
+                  + ", ".join(cells) + f" | {alone[0]} | {alone[1]} |")
     return 0
 
 

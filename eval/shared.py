@@ -1,12 +1,13 @@
-"""What the evaluation scripts share: running a tool, aubioonset's parameters, reading a corpus
-file's hits, `tactus onsets`' times, the share of a render's energy inside a band, and the command
-line of a script that prints one section of the report."""
+"""What the evaluation scripts share: running a tool, aubioonset's parameters, reading a sound
+file as mono, reading a corpus file's hits, `tactus onsets`' times, the share of a render's energy
+inside a band, and the command line of a script that prints one section of the report."""
 import argparse
 import pathlib
 import subprocess
 import tempfile
 
 import numpy as np
+import soundfile
 
 # aubioonset's defaults, passed explicitly: buffer 512, hop 256, threshold 0.3, minioi 12 ms,
 # silence -90 dB.
@@ -16,6 +17,12 @@ AUBIO_ARGS = ["-B", "512", "-H", "256", "-t", "0.3", "-M", "0.012", "-s", "-90"]
 def run(cmd):
     """Runs `cmd` (paths allowed), raising on failure; its output captured as text."""
     return subprocess.run([str(c) for c in cmd], check=True, capture_output=True, text=True)
+
+
+def read_mono(path):
+    """(samples in float64, the channels' mean; sample rate Hz) of a sound file."""
+    x, rate = soundfile.read(path, dtype="float64", always_2d=True)
+    return x.mean(axis=1), rate
 
 
 def read_hits(path):

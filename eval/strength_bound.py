@@ -32,11 +32,10 @@ import sys
 import numpy as np
 import scipy.optimize
 import scipy.stats
-import soundfile
 
 import music
 import music_corpus
-from shared import read_hits
+from shared import read_hits, read_mono
 
 WINDOW_S, HOP_S = 0.010, 0.00145
 REFERENCE_GAP_S, LOOK_S = 0.001, 0.025
@@ -45,11 +44,9 @@ TOP_HZ, LOW_HZ, MID_HZ = 5600, 150, 1000
 TEMPLATE_GAP_S = 0.002
 
 
-def spectra(path, window_s=WINDOW_S):
-    """(power spectra of the Hann frames, each frame's end time s, bin frequencies Hz, window s)."""
-    x, rate = soundfile.read(path, dtype="float64")
-    if x.ndim > 1:
-        x = x.mean(axis=1)
+def spectra(x, rate, window_s=WINDOW_S):
+    """(power spectra of the Hann frames of x, each frame's end time s, bin frequencies Hz,
+    window s)."""
     n, hop = int(rate * window_s), int(rate * HOP_S)
     starts = np.arange(0, len(x) - n, hop)
     frames = np.stack([x[s:s + n] for s in starts]) * np.hanning(n)
@@ -87,11 +84,6 @@ def template_weight(mix, stem, rate, t, span_s):
     return weight
 
 
-def mono(path):
-    x, rate = soundfile.read(path, dtype="float64", always_2d=True)
-    return x.mean(axis=1), rate
-
-
 def readings(entry, directory, template_s):
     """{reading: rho of gain -> added power} for one isolated-hit file."""
     hits = read_hits(directory / f"{entry['name']}.hits.csv")
@@ -99,17 +91,17 @@ def readings(entry, directory, template_s):
     own = [(0, LOW_HZ)] if entry["instrument"] == "kick" else [(LOW_HZ, TOP_HZ)]
     variants = {"whole": [(0, TOP_HZ)], "by part": own,
                 "strongest": [(0, LOW_HZ), (LOW_HZ, MID_HZ), (MID_HZ, TOP_HZ)]}
-    mix = spectra(directory / f"{entry['name']}.wav")
+    (mix_x, rate), (stem_x, _) = (read_mono(directory / f"{entry['name']}{suffix}.wav")
+                                  for suffix in ("", ".drums"))
+    mix = spectra(mix_x, rate)
     out = {name: scipy.stats.spearmanr(gains, [added(*mix, t, bands) for t, _, _ in hits])[0]
            for name, bands in variants.items()}
-    fine = spectra(directory / f"{entry['name']}.wav", LOUDEST_WINDOW_S)
+    fine = spectra(mix_x, rate, LOUDEST_WINDOW_S)
     out["loudest"] = scipy.stats.spearmanr(gains, [
         added(*fine, t, [(0, TOP_HZ)], LOUDEST_SPAN_S, LOUDEST_TIMES) for t, _, _ in hits])[0]
-    (mix_x, rate), (stem_x, _) = (mono(directory / f"{entry['name']}{suffix}.wav")
-                                  for suffix in ("", ".drums"))
     out["template"] = scipy.stats.spearmanr(
         gains, [template_weight(mix_x, stem_x, rate, t, template_s) for t, _, _ in hits])[0]
-    stem = spectra(directory / f"{entry['name']}.drums.wav")
+    stem = spectra(stem_x, rate)
     out["stem"] = scipy.stats.spearmanr(gains, [added(*stem, t, [(0, TOP_HZ)])
                                                 for t, _, _ in hits])[0]
     return out
