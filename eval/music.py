@@ -16,7 +16,10 @@ held-out part side by side.
   hit lowers rho; the felt snare/kick ratio of the median pulse frequencies (felt.centroid_hz over
   felt.PULSE_WINDOW_S, as evaluate.py's per-kit table, bed included); and the latency onset ->
   felt output at half its pulse peak (felt.half_peak_latency_s), over the hits that give a
-  distinct pulse as above (the others' half peak would be the bed's), their count given; and
+  distinct pulse as above (the others' half peak would be the bed's), their count given, and
+  the same from the hit's own sound reaching half its peak (its drum stem, |x| over the same
+  window): a recorded kick's beater and body take up to 16 ms to rise from its first sample, a
+  wait no causal analysis can shorten, so this is what tactus adds; and
   Spearman's rho of hit gain -> the strength `tactus onsets` prints for the hit's onset (a hit
   without one lowest): the hit's own reading, apart from the bed's pulses; and the share of the
   hits whose felt peak stands 6 dB over the bed's own (the bed stem rendered alone, the same
@@ -151,16 +154,20 @@ def count_parts(parts, labels, matches):
 
 
 IsolatedHit = collections.namedtuple("IsolatedHit",
-                                     "gain_db peak hz latency_s strength_db bed_peak")
+                                     "gain_db peak hz latency_s strength_db bed_peak "
+                                     "sound_half_peak_s")
 
 
 def analyse_gain(tactus, entry, directory, renders, preset):
     """One isolated-hit file's IsolatedHit per hit: its gain, felt peak and felt Hz; its
     half-peak latency, None when it gives no distinct pulse; the strength `tactus onsets` gives
     its onset (matched one-to-one within +-STRENGTH_MATCH_S), None without one; over a bed, the
-    felt peak of the bed rendered alone over the same window (its stem, NAME.bed.wav)."""
+    felt peak of the bed rendered alone over the same window (its stem, NAME.bed.wav); the time
+    the hit's own sound takes to reach half its peak (the drum stem, NAME.drums.wav over a bed)."""
     wav = directory / f"{entry['name']}.wav"
     hits = read_hits(directory / f"{entry['name']}.hits.csv")
+    drums, drums_rate = soundfile.read(
+        wav if entry["bed_db"] is None else directory / f"{entry['name']}.drums.wav")
     signal, envelope, rate = felt_render(tactus, wav, renders, preset)
     bed = None if entry["bed_db"] is None else \
         felt_render(tactus, directory / f"{entry['name']}.bed.wav", renders, preset)[0]
@@ -177,7 +184,9 @@ def analyse_gain(tactus, entry, directory, renders, preset):
         strength = float(rows[matches[i]][2]) if i in matches else None
         bed_peak = None if bed is None else \
             felt.peak(felt.pulse(bed, rate, t, ISOLATED_PULSE_S))
-        out.append(IsolatedHit(gain, felt.peak(segment), hz, latency, strength, bed_peak))
+        sound = felt.half_peak_latency_s(felt.pulse(drums, drums_rate, t, ISOLATED_PULSE_S),
+                                         drums_rate)
+        out.append(IsolatedHit(gain, felt.peak(segment), hz, latency, strength, bed_peak, sound))
     return out
 
 
@@ -261,10 +270,20 @@ def snare_kick(part, level):
             for kit in sorted({k for k, _ in files})]
 
 
-def latencies(part, level):
-    """Half-peak latencies (s) of the hits giving a distinct pulse, and the number of hits."""
-    hits = [h for file in part["gain"][level].values() for h in file]
-    return [h.latency_s for h in hits if h.latency_s is not None], len(hits)
+def above_bed(hit):
+    """Whether an isolated hit's felt peak stands ABOVE_BED_DB over the bed's own (the bed
+    rendered alone, same window); the others' peaks are ordered by the bed's pulses."""
+    return hit.bed_peak is None or hit.peak >= hit.bed_peak * 10 ** (ABOVE_BED_DB / 20)
+
+
+def latencies(part, level, since_sound=False, only_above_bed=False):
+    """Half-peak latencies (s) of the hits giving a distinct pulse (only_above_bed: of those
+    standing above the bed), from the hit or (since_sound) from its own sound's half peak, and
+    the number of hits."""
+    hits = [h for file in part["gain"][level].values() for h in file
+            if not only_above_bed or above_bed(h)]
+    return [h.latency_s - (h.sound_half_peak_s if since_sound else 0) for h in hits
+            if h.latency_s is not None], len(hits)
 
 
 # Cells.
@@ -274,17 +293,18 @@ def worst_cell(pairs, digits):
 
 
 def above_bed_cell(part, level):
-    """The share of the isolated hits whose felt peak stands ABOVE_BED_DB over the bed's own (the
-    bed rendered alone, same window): the others' peaks are ordered by the bed's pulses."""
+    """The share of the isolated hits standing above the bed (above_bed)."""
     if level is None:
         return "-"
     hits = [h for file in part["gain"][level].values() for h in file]
-    above = sum(h.peak >= h.bed_peak * 10 ** (ABOVE_BED_DB / 20) for h in hits)
+    above = sum(map(above_bed, hits))
     return f"{above / len(hits):.3f} ({above} of {len(hits)})"
 
 
-def latency_cell(part, level):
-    values, total = latencies(part, level)
+def latency_cell(part, level, since_sound=False, only_above_bed=False):
+    if only_above_bed and level is None:
+        return "-"
+    values, total = latencies(part, level, since_sound, only_above_bed)
     ms = 1000 * np.array(values)
     return f"{np.median(ms):.1f} / {np.percentile(ms, 95):.1f} ({len(values)} of {total})"
 
@@ -336,6 +356,8 @@ def summary(result):
              lambda p: worst_cell(snare_kick(p, -6), 2)),
             ("music: isolated hits, bed -6 dB: onset -> felt half peak, median / 95th "
              "percentile ms (distinct pulses)", lambda p: latency_cell(p, -6)),
+            ("music: isolated hits, bed -6 dB: the hit's sound at half its peak -> felt half "
+             "peak, median / 95th percentile ms", lambda p: latency_cell(p, -6, since_sound=True)),
             ("music: drum part right, bed 0 dB, kick / snare / hat / all",
              lambda p: accuracy_cell(p, 0)),
             ("music: the bed's own onsets, bed 0 dB, named kick / snare / hat / other (count)",
@@ -412,10 +434,12 @@ def section(result):
               "peak; snare/kick: of the median felt pulse frequencies (felt centroid over "
               f"{1000 * felt.PULSE_WINDOW_S:.0f} ms, as in the per-kit table); latency: onset -> "
               "felt output at half its pulse peak, over the hits giving a distinct pulse (as "
-              "above, without the onset condition); tactus strength: the strength `tactus "
-              f"onsets` gives the onset within +-{1000 * STRENGTH_MATCH_S:.0f} ms of the hit (a "
-              "hit without one lowest), the hit's own reading, whatever the bed's pulses do to "
-              "the felt peak; above the bed: the hits whose felt peak is "
+              "above, without the onset condition), and from the hit's own sound (its drum "
+              "stem) reaching half its peak, what tactus adds to the sound's own rise; tactus "
+              "strength: the strength `tactus onsets` gives the onset within "
+              f"+-{1000 * STRENGTH_MATCH_S:.0f} ms of the hit (a hit without one lowest), the "
+              "hit's own reading, whatever the bed's pulses do to the felt peak; above the bed: "
+              "the hits whose felt peak is "
               f"{ABOVE_BED_DB:.0f} dB or more above the felt peak, over the same window, of the "
               "bed rendered alone (its stem): the others' peaks, and so rho, are the bed's "
               "pulses' as much as the hit's.", "",
@@ -427,6 +451,10 @@ def section(result):
                ("felt snare/kick, median over kits",
                 lambda p, lv: f"{np.median([r for r, _ in snare_kick(p, lv)]):.2f}"),
                ("onset -> felt half peak, median / p95 ms", latency_cell),
+               ("the hit's sound at half its peak -> felt half peak, median / p95 ms",
+                lambda p, lv: latency_cell(p, lv, since_sound=True)),
+               (f"the same, hits {ABOVE_BED_DB:.0f} dB above the bed's own felt peak",
+                lambda p, lv: latency_cell(p, lv, since_sound=True, only_above_bed=True)),
                (f"hits {ABOVE_BED_DB:.0f} dB above the bed's own felt peak", above_bed_cell),
                ("gain -> tactus strength rho, median / worst",
                 lambda p, lv: f"{np.median([r for r, _ in rhos(p, lv, 'strength_db')]):.3f} / "
