@@ -43,7 +43,7 @@ import soundfile
 
 import felt
 import music_corpus
-from shared import AUBIO_ARGS, onset_rows, read_hits, run
+from shared import AUBIO_ARGS, onset_rows, read_hits, read_mono, run
 
 TOLERANCE_S = 0.05
 PULSE_S = 0.06  # a hit's felt pulse is looked for over this long after it
@@ -166,7 +166,7 @@ def analyse_gain(tactus, entry, directory, renders, preset):
     the hit's own sound takes to reach half its peak (the drum stem, NAME.drums.wav over a bed)."""
     wav = directory / f"{entry['name']}.wav"
     hits = read_hits(directory / f"{entry['name']}.hits.csv")
-    drums, drums_rate = soundfile.read(
+    drums, drums_rate = read_mono(
         wav if entry["bed_db"] is None else directory / f"{entry['name']}.drums.wav")
     signal, envelope, rate = felt_render(tactus, wav, renders, preset)
     bed = None if entry["bed_db"] is None else \
