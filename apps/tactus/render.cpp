@@ -1,7 +1,8 @@
 // tactus render IN... (-o OUT | -O DIR) [-j N]: audio files -> vibration files (N identical
-// channels, the container the output's extension names, the vibration's tail included, how it
-// was made in the file's comment). Several inputs are rendered in parallel, one file per worker,
-// each with its own Engine.
+// channels, or a layout's channels: each output playing its route, the sound on its sound
+// channels; the container the output's extension names, the vibration's tail included, how it
+// was made in the file's comment). Several inputs are rendered in parallel, one file per
+// worker, each with its own Engine.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -16,10 +17,12 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "global_options.hpp"
+#include "layout_option.hpp"
 #include "pipeline_options.hpp"
 #include "tactus/io/actuator_file.hpp"
 #include "tactus/io/audio_reader.hpp"
 #include "tactus/io/audio_writer.hpp"
+#include "tactus/io/layout_frames.hpp"
 #include "tactus/io/render_info.hpp"
 #include "tactus/io/temporary_path.hpp"
 #include "unfelt_sound.hpp"
@@ -34,7 +37,17 @@ struct RenderOptions {
     SampleFormat sample_format = SampleFormat::automatic;
     int channels = 1;
     std::string actuator;
+    std::string layout;
     PipelineOptions pipeline;
+};
+
+// What each render writes: N identical outputs (--channels, --actuator) or a layout's.
+struct Outputs {
+    std::vector<ActuatorOutput> engine;
+    std::optional<Layout> layout;
+    int file_channels() const {
+        return layout ? layout->channels : static_cast<int>(engine.size());
+    }
 };
 
 using Job = BatchJob;
@@ -66,29 +79,36 @@ std::vector<Job> plan(const RenderOptions& o) {
 }
 
 // Renders one file; returns its one-line summary. On failure the output is not written.
-std::string render_one(const Job& job, const Settings& settings,
-                       const std::optional<ActuatorProfile>& actuator, int channels,
+std::string render_one(const Job& job, const Settings& settings, const Outputs& outputs,
                        SampleFormat sample_format, const RenderInfo& how, RunAnalysis analysis,
                        const std::function<void(int64_t done, int64_t total)>& on_progress) {
     Engine engine(settings);
-    engine.set_actuators(std::vector<ActuatorOutput>(static_cast<size_t>(channels),
-                                                     ActuatorOutput{.profile = actuator}));
+    engine.set_actuators(outputs.engine);
     RenderStats stats(settings);
     engine.set_observer(&stats);
+    const int channels = outputs.file_channels();
     std::optional<AudioWriter> writer;  // opened at the input's sample rate
+    std::optional<LayoutFrames> frames;
+    int input_channels = 1;
     const auto write = [&](const float* const* v, int n) {
-        stats.unfelt.on_output(v, channels, n);
-        writer->write(v, n);
+        stats.unfelt.on_output(v, engine.actuators(), n);
+        writer->write(frames ? frames->compose(v, n) : v, n);
+    };
+    const auto sound = [&](const float* const* in, int n) {
+        if (frames) frames->set_sound(in, input_channels, n);
     };
     RenderInfo info = how;
     info.source = job.input.filename().string();
-    const auto open = [&](double sample_rate_hz, int) {
+    const auto open = [&](double sample_rate_hz, int input) {
+        input_channels = input;
+        if (outputs.layout) frames.emplace(*outputs.layout, kStreamBlockFrames);
         writer.emplace(job.output, sample_rate_hz, channels, sample_format,
                        SoundTags{.software = "tactus " + info.version, .comment = info.comment()});
     };
     // The vibration rings out after the input: a short sound keeps its whole pulse.
     const RunSummary summary = run_file(
-        job.input, engine, {.on_output = write, .on_progress = on_progress, .on_start = open},
+        job.input, engine,
+        {.on_output = write, .on_progress = on_progress, .on_start = open, .on_input = sound},
         RunTail::ring_out, analysis);
     writer->commit();
     if (const std::string warning =
@@ -115,9 +135,19 @@ int64_t total_frames(const std::vector<Job>& jobs) {
 void render(const RenderOptions& o) {
     const Settings settings = o.pipeline.resolve();
     const std::vector<Job> jobs = plan(o);
-    std::optional<ActuatorProfile> actuator;
-    if (!o.actuator.empty()) actuator = load_actuator_for(o.actuator, settings);
-    const RenderInfo how = o.pipeline.render_info({}, actuator ? actuator->name : std::string());
+    Outputs outputs;
+    std::string actuator_name;
+    if (!o.layout.empty()) {
+        outputs.layout = load_layout(resolve_layout(o.layout));
+        outputs.engine = layout_outputs(*outputs.layout, settings);
+    } else {
+        std::optional<ActuatorProfile> actuator;
+        if (!o.actuator.empty()) actuator = load_actuator_for(o.actuator, settings);
+        if (actuator) actuator_name = actuator->name;
+        outputs.engine.assign(static_cast<size_t>(o.channels), ActuatorOutput{.profile = actuator});
+    }
+    RenderInfo how = o.pipeline.render_info({}, actuator_name);
+    how.layout = o.layout;
     // One file at a time: its analysis on a thread of its own; several: a file per core.
     const RunAnalysis analysis =
         std::min<size_t>(jobs.size(), static_cast<size_t>(o.batch.jobs)) > 1 ? RunAnalysis::engine
@@ -126,7 +156,7 @@ void render(const RenderOptions& o) {
         o.batch, jobs,
         [&](const Job& job, const AddFrames& add_frames) {
             int64_t reported = 0;
-            return render_one(job, settings, actuator, o.channels, o.sample_format, how, analysis,
+            return render_one(job, settings, outputs, o.sample_format, how, analysis,
                               [&](int64_t done, int64_t) {
                                   add_frames(done - reported);
                                   reported = done;
@@ -152,12 +182,16 @@ void add_render(CLI::App& app) {
             std::map<std::string, SampleFormat>{{"16", SampleFormat::pcm16},
                                                 {"24", SampleFormat::pcm24},
                                                 {"float", SampleFormat::float32}}));
-    command->add_option("--channels,-c", options->channels, "identical actuator channels")
-        ->check(CLI::Range(1, 64))
-        ->capture_default_str();
+    CLI::Option* channels =
+        command->add_option("--channels,-c", options->channels, "identical actuator channels")
+            ->check(CLI::Range(1, 64))
+            ->capture_default_str();
     add_actuator_option(*command, options->actuator,
                         "actuator profile (name in actuators/ or FILE.toml): compensate its "
                         "response, respect its max drive, warn about what it cannot do");
+    add_layout_option(*command, options->layout)
+        ->excludes(channels)
+        ->excludes(command->get_option("--actuator"));
     options->pipeline.add_to(*command);
     command->callback([options] { render(*options); });
 }

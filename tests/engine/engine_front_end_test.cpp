@@ -34,12 +34,6 @@ namespace {
 
 using ::testing::HasSubstr;
 
-bool bit_identical(const std::vector<float>& a, const std::vector<float>& b) {
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](float x, float y) {
-               return std::bit_cast<uint32_t>(x) == std::bit_cast<uint32_t>(y);
-           });
-}
-
 Settings four_channel() {
     Settings s;
     apply_preset_file(s,
@@ -88,7 +82,7 @@ TEST(EngineFrontEnd, AnyBlockSizeGivesTheOutputOfFixedBlocks) {
             Engine engine(s);
             engine.prepare(fs, 64);  // every block above is split inside process()
             const auto y = run(engine, {x}, blocks);
-            EXPECT_TRUE(bit_identical(y[0], reference)) << "blocks from " << blocks.front();
+            EXPECT_TRUE(test::same_bits(y[0], reference)) << "blocks from " << blocks.front();
         }
     }
 }
@@ -142,7 +136,7 @@ TEST(EngineFrontEnd, ChannelsAreDownmixedInTheEngineAndTheirLoudnessSummed) {
     Engine chosen;  // one channel analysed: exactly as if it came alone
     chosen.set_input_channel(1);
     chosen.prepare({.sample_rate_hz = fs, .max_block = 64, .channels = 2});
-    EXPECT_TRUE(bit_identical(run(chosen, {left, right}, {64})[0], mono_render(right, fs)));
+    EXPECT_TRUE(test::same_bits(run(chosen, {left, right}, {64})[0], mono_render(right, fs)));
     Engine bad;
     bad.set_input_channel(2);
     EXPECT_THROW(bad.prepare({.sample_rate_hz = fs, .channels = 2}), std::invalid_argument);
@@ -162,10 +156,10 @@ TEST(EngineFrontEnd, ActuatorsShareOneAnalysisWithTheirOwnProfileTrimAndDelay) {
     const auto y = run(engine, {x}, {64});
     const auto compensated = mono_render(x, fs, {}, lra);
     const auto plain = mono_render(x, fs, fit_to_actuator(lra, Settings{}).settings);
-    EXPECT_TRUE(bit_identical(y[0], compensated));
-    EXPECT_TRUE(bit_identical(y[1], plain));
-    EXPECT_FALSE(bit_identical(y[0], y[1]));
-    EXPECT_FALSE(bit_identical(y[1], mono_render(x, fs)));  // fitted: not the default mapping
+    EXPECT_TRUE(test::same_bits(y[0], compensated));
+    EXPECT_TRUE(test::same_bits(y[1], plain));
+    EXPECT_FALSE(test::same_bits(y[0], y[1]));
+    EXPECT_FALSE(test::same_bits(y[1], mono_render(x, fs)));  // fitted: not the default mapping
     const size_t delay = 480;                               // 10 ms
     for (size_t i = 0; i < delay; ++i) ASSERT_EQ(y[2][i], 0.0f);
     for (size_t i = delay; i < x.size(); ++i)
@@ -234,7 +228,7 @@ TEST(EngineFrontEnd, TurningAParameterToItsValueChangesNothing) {
         engine.set(id, start[id]);
         engine.process(x.data() + done, y.data() + done, 64);
     }
-    EXPECT_TRUE(bit_identical(y, reference));
+    EXPECT_TRUE(test::same_bits(y, reference));
 }
 
 TEST(EngineFrontEnd, ValuesAreCheckedBeforeAnythingChanges) {

@@ -60,10 +60,6 @@ Rendered run(const Settings& settings, const std::vector<std::vector<float>>& in
     return out;
 }
 
-bool same_bits(const std::vector<float>& a, const std::vector<float>& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
-}
-
 bool same_features(const Features& a, const Features& b) {
     const auto bits = [](double x) { return std::bit_cast<uint64_t>(x); };
     return a.frame_end_sample == b.frame_end_sample && bits(a.loudness_db) == bits(b.loudness_db) &&
@@ -102,7 +98,7 @@ TEST(ReplayAnalysis, RendersWhatAnalysingAgainRendersBitForBit) {
         ASSERT_GT(test::peak(analysed.vibration), 0.05);
         for (const std::vector<int>& blocks : {std::vector<int>{4096}, {1, 700, 64, 4096, 13}}) {
             const Rendered replayed = run(s, input, blocks, recording);
-            EXPECT_TRUE(same_bits(replayed.vibration, analysed.vibration)) << blocks.size();
+            EXPECT_TRUE(test::same_bits(replayed.vibration, analysed.vibration)) << blocks.size();
             EXPECT_TRUE(same_frames(replayed.frames, analysed.frames));
             EXPECT_FALSE(replayed.ran_out);
         }
@@ -114,7 +110,7 @@ TEST(ReplayAnalysis, DoesNotAnalyseTheInput) {
     const Rendered analysed = run({}, input, {4096});
     const auto recording = std::make_shared<const RecordedAnalysis>(analysed.frames);
     const std::vector<std::vector<float>> silence(2, std::vector<float>(input[0].size(), 0.0f));
-    EXPECT_TRUE(same_bits(run({}, silence, {512}, recording).vibration, analysed.vibration));
+    EXPECT_TRUE(test::same_bits(run({}, silence, {512}, recording).vibration, analysed.vibration));
 }
 
 TEST(ReplayAnalysis, SaysWhenTheRecordingRanOut) {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstring>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -237,6 +238,11 @@ inline DrumSignal drum_pattern(double sample_rate_hz, double seconds, uint64_t s
         if (t >= 0 && (step / 16) % 4 == 2 && step % 16 >= 9) d.audio[n] = 0.0f;
     }
     return d;
+}
+
+// Whether two signals are the same, bit for bit (NaNs and signed zeros included).
+inline bool same_bits(const std::vector<float>& a, const std::vector<float>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
 }
 
 }  // namespace tactus::test

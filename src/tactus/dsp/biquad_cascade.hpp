@@ -172,9 +172,11 @@ struct SideBySide {
 };
 
 // side_by_side_each's lanes: chain c's sections in lanes start[c] ..., spare lanes passing their
-// input through; the coefficients and the states.
+// input through; the coefficients and the states. Aligned as the AVX2 clones load them: without
+// AVX a 32-byte vector type is only 16-byte aligned (GCC caps it at the target's largest), and
+// an object placed by that alignment faults in a clone's aligned loads.
 template <int... Lengths>
-struct LanesOf {
+struct alignas(4 * sizeof(double)) LanesOf {
     using Layout = SideBySide<Lengths...>;
     using Lanes = double __attribute__((vector_size(4 * sizeof(double))));  // Layout::kLanes
     static constexpr int V = Layout::kVectors;

@@ -86,6 +86,7 @@ void Engine::prepare(const ProcessSpec& spec) {
     check_range("block size", spec.max_block, 1, kMaxBlock);
     check_range("input channel count", spec.channels, 1, kMaxInputChannels);
     check_range("input channel", input_channel_, -1, spec.channels - 1);
+    for (size_t k = 0; k < outputs_.size(); ++k) outputs_[k].check_input(static_cast<int>(k), spec);
     spec_ = spec;
     for (Change c; changes_.try_dequeue(c);) delete c.pipeline;  // settings_ holds them
     for (ControlFrame f; injected_.try_dequeue(f);) {
@@ -107,8 +108,10 @@ void Engine::prepare(const ProcessSpec& spec) {
         std::max<int>(1, static_cast<int>(ms_to_samples(kCrossfadeMs, spec.sample_rate_hz)));
     summed_loudness_ = spec.channels > 1 && input_channel_ < 0;
     if (summed_loudness_) channel_power_.prepare(spec);
-    ring_.prepare(summed_loudness_ ? 2 : 1, ms_to_samples(2e3 * kPrimeSeconds, spec.sample_rate_hz),
-                  spec.max_block);
+    routed_channels_ = spec.channels > 1 ? std::min(spec.channels, Route::kMaxChannel) : 0;
+    ring_.prepare(first_channel_lane() + routed_channels_,
+                  ms_to_samples(2e3 * kPrimeSeconds, spec.sample_rate_hz), spec.max_block);
+    channels_catch_up_.assign(static_cast<size_t>(routed_channels_), std::vector<float>(block));
     power_.assign(summed_loudness_ ? block : 0, 0.0f);
     power_catch_up_.assign(power_.size(), 0.0f);
     prepared_ = true;
@@ -276,34 +279,33 @@ void Engine::swap_in(const Settings& settings) {
     // input samples), so a change that keeps the hop keeps every frame and onset time.
     const int64_t grid = std::lcm(Analyzer::frame_grid_samples(settings, spec_.sample_rate_hz),
                                   int64_t{rate_divisor_});
-    std::vector<float> past, past_power;
+    std::vector<std::vector<float>> past(static_cast<size_t>(ring_.lanes()));
+    std::vector<float*> lanes(past.size());
     int64_t to = 0, from = 0;
-    std::unique_ptr<Pipeline> pipeline;
     for (int attempt = 0;; ++attempt) {  // the audio thread may overwrite what is being read
         to = ring_.written();
         from = std::max<int64_t>(0, to - prime);
         from -= from % grid;
-        const auto count = static_cast<int>(to - from);
-        past.resize(static_cast<size_t>(count));
-        past_power.resize(summed_loudness_ ? past.size() : 0);
-        float* const lanes[] = {past.data(), past_power.data()};
-        if (ring_.read(from, lanes, count) || attempt == 3) break;
+        for (size_t l = 0; l < past.size(); ++l) {
+            past[l].resize(static_cast<size_t>(to - from));
+            lanes[l] = past[l].data();
+        }
+        if (ring_.read(from, lanes.data(), static_cast<int>(to - from)) || attempt == 3) break;
     }
     const int prime_block = std::max(spec_.max_block, kPrimeBlock);
-    pipeline = make_pipeline(settings, from, prime_block);
+    std::unique_ptr<Pipeline> pipeline = make_pipeline(settings, from, prime_block);
     std::vector<std::vector<float>> scratch(outputs_.size(),
                                             std::vector<float>(static_cast<size_t>(prime_block)));
     std::vector<float*> out(outputs_.size());
     for (size_t k = 0; k < out.size(); ++k) out[k] = scratch[k].data();
     {
         const ScopedFlushDenormals no_denormals;
-        for (size_t done = 0; done < past.size();) {
-            const int count = static_cast<int>(
-                std::min<size_t>(past.size() - done, static_cast<size_t>(prime_block)));
-            pipeline->process(past.data() + done,
-                              summed_loudness_ ? past_power.data() + done : nullptr, out.data(),
-                              count, nullptr);
-            done += static_cast<size_t>(count);
+        const float* channels[Route::kMaxChannel];
+        for (int64_t done = 0; done < to - from;) {
+            const int count = static_cast<int>(std::min<int64_t>(to - from - done, prime_block));
+            pipeline->process(input_from(lanes.data(), static_cast<int>(done), channels),
+                              out.data(), count, nullptr);
+            done += count;
         }
     }
     send({.kind = Change::Kind::pipeline, .pipeline = pipeline.get(), .primed_to = to});
@@ -320,6 +322,41 @@ void Engine::set_actuator_gain_db(int actuator, double gain_db) {
     if (prepared_)
         send({.kind = Change::Kind::actuator_gain, .actuator = actuator, .gain_db = gain_db});
     outputs_[static_cast<size_t>(actuator)] = output;
+}
+
+void Engine::set_routes(const std::vector<Routing>& routes) {
+    const std::lock_guard lock(control_);
+    check_range("route count", static_cast<int>(routes.size()), actuators(), actuators());
+    std::vector<ActuatorOutput> next = outputs_;
+    for (size_t k = 0; k < routes.size(); ++k) {
+        next[k].route = routes[k].route;
+        next[k].overlay = routes[k].overlay;
+        next[k].check(static_cast<int>(k));
+        if (prepared_) next[k].check_input(static_cast<int>(k), spec_);
+    }
+    if (routes == routes_of(outputs_)) return;
+    if (prepared_) {
+        free_retired();
+        if (static_cast<int>(changes_.size_approx()) + 1 > kChangeCapacity)
+            throw std::runtime_error("engine: too many changes waiting for the audio thread");
+    }
+    // Element by element: the audio thread never reads outputs_, but actuators() may.
+    for (size_t k = 0; k < routes.size(); ++k) {
+        outputs_[k].route = routes[k].route;
+        outputs_[k].overlay = routes[k].overlay;
+    }
+    if (prepared_) swap_in(settings_);
+}
+
+std::vector<Engine::Routing> Engine::routes_of(const std::vector<ActuatorOutput>& outputs) {
+    std::vector<Routing> routes;
+    for (const ActuatorOutput& o : outputs) routes.push_back({o.route, o.overlay});
+    return routes;
+}
+
+std::vector<Engine::Routing> Engine::routes() const {
+    const std::lock_guard lock(control_);
+    return routes_of(outputs_);
 }
 
 void Engine::inject(const ControlFrame& frame) {
@@ -411,14 +448,29 @@ void Engine::start_crossfade() noexcept {
     const int block = spec_.max_block;
     for (int64_t at = p->position(); at < ring_.written();) {
         const int count = static_cast<int>(std::min<int64_t>(block, ring_.written() - at));
-        float* const lanes[] = {mono_catch_up_.data(), power_catch_up_.data()};
+        float* lanes[2 + Route::kMaxChannel] = {mono_catch_up_.data()};
+        if (summed_loudness_) lanes[1] = power_catch_up_.data();
+        for (int c = 0; c < routed_channels_; ++c)
+            lanes[first_channel_lane() + c] = channels_catch_up_[static_cast<size_t>(c)].data();
         if (!ring_.read(at, lanes, count)) break;  // too far behind: as it is
-        p->process(mono_catch_up_.data(), summed_loudness_ ? power_catch_up_.data() : nullptr,
-                   incoming_pointers_.data(), count, nullptr);
+        const float* channels[Route::kMaxChannel];
+        p->process(input_from(lanes, 0, channels), incoming_pointers_.data(), count, nullptr);
         at += count;
     }
     incoming_ = p;
     fade_done_ = 0;
+}
+
+// The pipeline's input from the ring's lanes (the mono input, the summed power when there are
+// several channels as their mean, the routed channels) at `offset`; `channels` holds the
+// channels' pointers (one input channel: the mono input is it).
+PipelineInput Engine::input_from(const float* const* lanes, int offset,
+                                 const float** channels) const noexcept {
+    for (int c = 0; c < routed_channels_; ++c) channels[c] = lanes[first_channel_lane() + c] + offset;
+    if (routed_channels_ == 0) channels[0] = lanes[0] + offset;
+    return {.mono = lanes[0] + offset,
+            .power = summed_loudness_ ? lanes[1] + offset : nullptr,
+            .channels = channels};
 }
 
 const float* Engine::downmix(const float* const* in, int offset, int count) noexcept {
@@ -447,15 +499,19 @@ void Engine::process_chunk(const float* const* in, float* const* out, int offset
         if (!recording_) channel_power_.process(in, offset, count, power_.data());
         power = power_.data();
     }
-    const float* const lanes[] = {mono, power};
+    const float* lanes[2 + Route::kMaxChannel] = {mono};
+    if (summed_loudness_) lanes[1] = power;
+    for (int c = 0; c < routed_channels_; ++c) lanes[first_channel_lane() + c] = in[c] + offset;
     ring_.write(lanes, count);
+    const float* channels[Route::kMaxChannel];
+    const PipelineInput input = input_from(lanes, 0, channels);
     float* outs[kMaxActuators];
     const size_t n = trims_.size();
     for (size_t k = 0; k < n; ++k) outs[k] = out[k] + offset;
     // While a new pipeline fades in, the frames are its own (primed: they go on seamlessly).
-    active_->process(mono, power, outs, count, incoming_ ? nullptr : &forwarder_);
+    active_->process(input, outs, count, incoming_ ? nullptr : &forwarder_);
     if (incoming_) {
-        incoming_->process(mono, power, incoming_pointers_.data(), count, &forwarder_);
+        incoming_->process(input, incoming_pointers_.data(), count, &forwarder_);
         for (size_t k = 0; k < n; ++k) {
             const float* next = incoming_pointers_[k];
             for (int i = 0; i < count; ++i) {

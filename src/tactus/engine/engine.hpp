@@ -17,12 +17,13 @@
 //
 // Channels. Any number of input channels, downmixed to their mean or one chosen channel (the
 // mean's loudness is the channels' sum as ITU-R BS.1770 sums it: engine/channel_power.hpp); N
-// actuator outputs (ActuatorOutput: profile, trim gain, delay), one post chain per distinct
-// profile, all reading one analysis and one synthesis (Pipeline).
+// actuator outputs (ActuatorOutput: profile, trim gain, delay, route), each playing its route
+// (engine/route.hpp): one analysis per distinct input a route hears, one synthesis per distinct
+// way of playing it, one post chain per distinct profile among its outputs (Pipeline).
 //
 // Threads (docs/architecture.md, "Threads and queues"):
-//   control threads  set(), set_actuator_gain_db(), inject(), trigger(), set_program_source(),
-//                    settings_snapshot(), settings():
+//   control threads  set(), set_actuator_gain_db(), set_routes(), inject(), trigger(),
+//                    set_program_source(), settings_snapshot(), settings():
 //                    thread-safe among themselves (a mutex no audio thread takes); they validate,
 //                    then hand the change to the audio thread through a lock-free queue
 //                    (moodycamel::ReaderWriterQueue). A live parameter glides over its smoothing
@@ -155,6 +156,16 @@ class Engine {
     // build one new pipeline between them, not one each.
     void set(const Settings& settings);
     void set_actuator_gain_db(int actuator, double gain_db);
+    // What each actuator plays (its route and overlay, in actuator order: as many as there are
+    // actuators): structural, swapped in without a gap. Throws std::invalid_argument naming the
+    // actuator and the route (a channel the input lacks, a bad overlay) having changed nothing.
+    struct Routing {
+        Route route;
+        Overlay overlay;
+        bool operator==(const Routing&) const = default;
+    };
+    void set_routes(const std::vector<Routing>& routes);
+    std::vector<Routing> routes() const;
     // The vibration program from outside: applied at the audio thread's next block.
     void inject(const ControlFrame& frame);
     // A pulse at `frequency_hz` and `amplitude` with the envelope of the current settings.
@@ -222,7 +233,7 @@ class Engine {
     void commit(const Settings& next);  // control thread, control_ held
     void apply(const Settings& next);   // control thread, control_ held
     int changes_needed(const Settings& was, const Settings& now) const;
-    void swap_in(const Settings& settings);  // control thread
+    void swap_in(const Settings& settings);  // control thread, control_ held
     void send(const Change& change);
     void free_retired();  // control thread
     FeatureSet extra_features() const;
@@ -230,6 +241,10 @@ class Engine {
     void start_crossfade() noexcept;
     void process_chunk(const float* const* in, float* const* out, int offset, int count) noexcept;
     const float* downmix(const float* const* in, int offset, int count) noexcept;
+    int first_channel_lane() const noexcept { return summed_loudness_ ? 2 : 1; }
+    PipelineInput input_from(const float* const* lanes, int offset,
+                             const float** channels) const noexcept;
+    static std::vector<Routing> routes_of(const std::vector<ActuatorOutput>& outputs);
     void retire(Pipeline* pipeline) noexcept;
 
     Settings settings_;     // control side, control_ held
@@ -252,9 +267,13 @@ class Engine {
     std::vector<OutputTrim> trims_;     // per actuator
     std::vector<float> mono_;           // downmixed input, one chunk
     std::vector<float> mono_catch_up_;  // input a waiting pipeline has not heard, one chunk
+    std::vector<std::vector<float>> channels_catch_up_;  // the same of each routed channel
     std::vector<std::vector<float>> incoming_out_;  // the incoming pipeline's output, one chunk
     std::vector<float*> incoming_pointers_;
-    InputRing ring_;  // what the analysis read: the mono input (and the summed power)
+    // What the analysis read: the mono input (and the summed power), and the input channels a
+    // route may take (the first Route::kMaxChannel, when there are several).
+    InputRing ring_;
+    int routed_channels_ = 0;
     // Several channels analysed as their mean: the loudness is their BS.1770 sum.
     bool summed_loudness_ = false;
     ChannelPower channel_power_;

@@ -24,6 +24,22 @@ void ActuatorOutput::check(int index) const {
     if (!(delay_ms >= 0 && delay_ms <= kMaxDelayMs))
         throw std::invalid_argument(fmt::format("actuator {}: delay {} ms is outside 0 to {} ms",
                                                 index, delay_ms, kMaxDelayMs));
+    try {
+        check_overlay(overlay);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(fmt::format("actuator {}: {}", index, e.what()));
+    }
+}
+
+void ActuatorOutput::check_input(int index, const ProcessSpec& spec) const {
+    if (route.kind == Route::Kind::channel && route.channel >= spec.channels)
+        throw std::invalid_argument(
+            fmt::format("actuator {}: route {} takes input channel {}; the input has {}", index,
+                        route.text(), route.channel + 1, spec.channels));
+    if (route.kind == Route::Kind::band && route.high_hz >= 0.5 * spec.sample_rate_hz)
+        throw std::invalid_argument(
+            fmt::format("actuator {}: route {} reaches past half the sample rate ({:g} Hz)",
+                        index, route.text(), spec.sample_rate_hz));
 }
 
 void OutputTrim::prepare(const ProcessSpec& spec, const ActuatorOutput& output) {

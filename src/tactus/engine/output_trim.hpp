@@ -9,6 +9,7 @@
 #include "tactus/actuator/profile.hpp"
 #include "tactus/dsp/delay_line.hpp"
 #include "tactus/dsp/process_spec.hpp"
+#include "tactus/engine/route.hpp"
 
 namespace tactus {
 
@@ -17,11 +18,16 @@ struct ActuatorOutput {
     std::optional<ActuatorProfile> profile;  // none: no compensation, the ceiling of the settings
     double gain_db = 0;                      // trim after the limiter, kMinGainDb ... 0 (live)
     double delay_ms = 0;                     // alignment, 0 ... kMaxDelayMs (structural)
+    Route route{};                           // what it plays (structural)
+    Overlay overlay{};                       // its own mapping values (structural)
 
     static constexpr double kMinGainDb = -60;
     static constexpr double kMaxDelayMs = 1000;
     // Throws std::invalid_argument naming the actuator index and the value.
     void check(int index) const;
+    // Whether the input of `spec` has what the route takes (a channel, a band below Nyquist);
+    // throws std::invalid_argument naming the actuator index and the route.
+    void check_input(int index, const ProcessSpec& spec) const;
     // Throws std::invalid_argument naming the gain (any thread).
     static void check_gain_db(double gain_db);
 };

@@ -12,75 +12,13 @@
 
 #include "tactus/core/printable.hpp"
 #include "tactus/io/search_path.hpp"
+#include "tactus/io/toml_reader.hpp"
 
 namespace tactus {
 
 // [response] kind, in the order of ResonanceKind.
 constexpr std::string_view kResonanceKinds[] = {"none", "low-pass", "band-pass"};
 namespace fs = std::filesystem;
-namespace {
-
-// Reads a TOML table's keys with one-line errors "ORIGIN:LINE:COL: key: problem".
-class Reader {
-  public:
-    Reader(const toml::table& table, std::string_view origin, std::string prefix)
-        : table_(table), origin_(origin), prefix_(std::move(prefix)) {}
-
-    [[noreturn]] void fail(const toml::node* node, std::string_view key,
-                           std::string_view problem) const {
-        const auto& where = node ? node->source() : table_.source();
-        throw std::runtime_error(fmt::format("{}:{}:{}: {}: {}", origin_, where.begin.line,
-                                             where.begin.column,
-                                             printable(prefix_ + std::string(key)), problem));
-    }
-    const toml::node* get(std::string_view key) {
-        seen_.insert(std::string(key));
-        return table_.get(key);
-    }
-    double number(std::string_view key, double min, double max, double fallback,
-                  bool required = false) {
-        const toml::node* node = get(key);
-        if (!node) {
-            if (required) fail(nullptr, key, "missing (a number is required)");
-            return fallback;
-        }
-        if (!node->is_number()) fail(node, key, "must be a number");
-        const double v = *node->value<double>();
-        if (!std::isfinite(v) || v < min || v > max)
-            fail(node, key, fmt::format("{} is out of range: allowed {} to {}", v, min, max));
-        return v;
-    }
-    std::string text(std::string_view key, std::string fallback) {
-        const toml::node* node = get(key);
-        if (!node) return fallback;
-        if (!node->is_string()) fail(node, key, "must be a string in quotes");
-        return *node->value<std::string>();
-    }
-    template <size_t N>
-    size_t choice(std::string_view key, const std::string_view (&names)[N], size_t fallback) {
-        const toml::node* node = get(key);
-        if (!node) return fallback;
-        const std::string value = node->is_string() ? *node->value<std::string>() : "";
-        for (size_t i = 0; i < N; ++i)
-            if (names[i] == value) return i;
-        std::string allowed;
-        for (auto n : names) allowed += (allowed.empty() ? "" : ", ") + std::string(n);
-        fail(node, key, fmt::format("must be one of: {}", allowed));
-    }
-    // Every key must have been read: a misspelt key is an error, not silently ignored.
-    void reject_unknown_keys() const {
-        for (const auto& [key, node] : table_)
-            if (!seen_.contains(std::string(key.str()))) fail(&node, key.str(), "unknown key");
-    }
-
-  private:
-    const toml::table& table_;
-    std::string_view origin_;
-    std::string prefix_;
-    std::set<std::string> seen_;
-};
-
-}  // namespace
 
 std::vector<fs::path> actuator_search_path() {
     return search_path("TACTUS_ACTUATOR_PATH", "actuators");
@@ -91,16 +29,9 @@ fs::path resolve_actuator(std::string_view name_or_path) {
 }
 
 ActuatorProfile parse_actuator(std::string_view toml_text, std::string_view origin) {
-    toml::table table;
-    try {
-        table = toml::parse(toml_text, origin);
-    } catch (const toml::parse_error& e) {
-        throw std::runtime_error(fmt::format("{}:{}:{}: TOML syntax error: {}", origin,
-                                             e.source().begin.line, e.source().begin.column,
-                                             printable(e.description())));
-    }
+    const toml::table table = parse_toml(toml_text, origin);
     ActuatorProfile a;
-    Reader top(table, origin, "");
+    TomlReader top(table, origin, "");
     a.name = top.text("name", fs::path(origin).stem().string());
     a.description = top.text("description", "");
     a.type = static_cast<ActuatorType>(top.choice("type", kActuatorTypeNames, 0));
@@ -122,7 +53,7 @@ ActuatorProfile parse_actuator(std::string_view toml_text, std::string_view orig
 
     if (const toml::node* node = top.get("response")) {
         if (!node->is_table()) top.fail(node, "response", "must be a table [response]");
-        Reader response(*node->as_table(), origin, "response.");
+        TomlReader response(*node->as_table(), origin, "response.");
         a.resonance = static_cast<ResonanceKind>(response.choice("kind", kResonanceKinds, 0));
         if (a.resonance != ResonanceKind::none) {
             a.resonance_hz = response.number("resonance_hz", 0.1, 20000, 0, true);
@@ -150,7 +81,7 @@ ActuatorProfile parse_actuator(std::string_view toml_text, std::string_view orig
         top.fail(top.get("dc"), "dc", "a band-pass (resonant) actuator cannot hold an offset");
     if (const toml::node* node = top.get("erm")) {
         if (!node->is_table()) top.fail(node, "erm", "must be a table [erm]");
-        Reader erm(*node->as_table(), origin, "erm.");
+        TomlReader erm(*node->as_table(), origin, "erm.");
         a.erm_min_drive_hz = erm.number("frequency_at_min_drive_hz", 1, 1000, 0, true);
         a.erm_max_drive_hz = erm.number("frequency_at_max_drive_hz", 1, 1000, 0, true);
         erm.reject_unknown_keys();

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "tactus/core/printable.hpp"
+#include "tactus/io/preset_table.hpp"
 #include "tactus/io/search_path.hpp"
 
 namespace tactus {
@@ -35,14 +36,15 @@ int format_of(const toml::table& table, std::string_view origin) {
     return static_cast<int>(*format);
 }
 
+// `set`, when given, receives each parameter set, in the table's order.
 void apply_node(Settings& settings, const std::string& path, const toml::node& node, int format,
-                std::string_view origin) {
+                std::string_view origin, std::vector<P>* set = nullptr) {
     if (const auto* table = node.as_table()) {
         for (const auto& [name, child] : *table)
             apply_node(
                 settings,
                 path.empty() ? std::string(name.str()) : path + "." + std::string(name.str()),
-                child, format, origin);
+                child, format, origin, set);
         return;
     }
     if (path == "format") return;  // format_of() read it
@@ -75,6 +77,7 @@ void apply_node(Settings& settings, const std::string& path, const toml::node& n
     } catch (const std::invalid_argument& e) {
         throw std::runtime_error(fmt::format("{}: {}", where(origin, node.source()), e.what()));
     }
+    if (set) set->push_back(*id);
 }
 
 // One value as TOML: a toggle as a boolean, a choice by name, a real in its shortest form that
@@ -102,6 +105,20 @@ void apply_table(Settings& settings, const toml::table& table, std::string_view 
     apply_node(candidate, "", table, format_of(table, origin), origin);
     settings = candidate;
 }
+
+}  // namespace
+
+std::vector<std::pair<P, double>> preset_values(const toml::table& table,
+                                                std::string_view origin) {
+    Settings settings;
+    std::vector<P> set;
+    apply_node(settings, "", table, kPresetFormat, origin, &set);
+    std::vector<std::pair<P, double>> values;
+    for (const P id : set) values.emplace_back(id, settings[id]);
+    return values;
+}
+
+namespace {
 
 std::string description_of(const fs::path& path) {
     try {

@@ -10,6 +10,7 @@ std::string RenderInfo::describe() const {
     std::string text = fmt::format("tactus {} from {}: preset {}", version, source, preset);
     for (const auto& c : changes) text += " --set " + c;
     text += actuator.empty() ? ", no actuator profile" : ", actuator " + actuator;
+    if (!layout.empty()) text += ", layout " + layout;
     return text;
 }
 
@@ -22,6 +23,7 @@ std::string RenderInfo::comment() const {
         for (size_t i = 0; i < changes.size(); ++i) text += (i ? " " : "") + changes[i];
     }
     if (!actuator.empty()) text += "; actuator=" + actuator;
+    if (!layout.empty()) text += "; layout=" + layout;
     return text;
 }
 
@@ -44,6 +46,8 @@ RenderInfo RenderInfo::from_comment(const std::string& text) {
             info.preset = value;
         else if (key == "actuator")
             info.actuator = value;
+        else if (key == "layout")
+            info.layout = value;
         else if (key == "set") {
             std::istringstream words(value);
             for (std::string w; words >> w;) info.changes.push_back(w);

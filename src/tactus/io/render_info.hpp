@@ -14,11 +14,12 @@ struct RenderInfo {
     std::vector<std::string> changes;  // key=value settings changed from the preset
     std::string actuator;              // profile name, empty for none
     std::string version;               // tactus version
+    std::string layout{};              // layout name or path, empty for none
 
     // One line for people: "tactus 0.1.0 from amen.flac: preset tfd --set k=v, actuator lra-175".
     std::string describe() const;
     // One line for programs: "tactus=0.1.0; source=amen.flac; preset=tfd; set=k=v k=v;
-    // actuator=lra-175" (fields without a value left out).
+    // actuator=lra-175; layout=controller" (fields without a value left out).
     std::string comment() const;
     // Reads comment()'s form back; fields it does not find stay empty.
     static RenderInfo from_comment(const std::string& text);
