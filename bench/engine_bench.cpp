@@ -3,6 +3,9 @@
 //   EngineBlock        each block's cost on the audio thread after one warm-up pass: p10, p50,
 //                      p90, p99 and max in microseconds, against the block's period (1333 us at
 //                      64 frames, 48 kHz). Run under SCHED_FIFO (chrt -f 80) for a fair max.
+//   EngineBlock/routes:<r,r,...>  the same with the Amen break on two input channels and one
+//                      actuator output per route (engine/route.hpp): four on `all` (one
+//                      analysis, one synthesis) against four routes of every kind.
 //   LiveChange/<key>   Engine::set() of a live parameter on the control thread (ns), with the
 //                      audio thread taking the change at its next block.
 //   StructuralSwap     Engine::set() of a structural parameter (the hop): a new pipeline built
@@ -11,6 +14,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <string>
 #include <vector>
 
 #include "bench_input.hpp"
@@ -39,22 +43,36 @@ size_t run_blocks(Engine& engine, size_t at, size_t blocks) {
     return at;
 }
 
-void EngineBlock(benchmark::State& state) {
+// `routes`: none, one output on mono input (today's default); else one output per route, the
+// input on two channels.
+void engine_block(benchmark::State& state, const std::vector<std::string>& routes) {
     const std::vector<float>& in = amen();
     Engine engine;
-    engine.prepare(kLiveRateHz, kLiveBlock);
-    std::vector<float> out(kLiveBlock);
+    const int channels = routes.empty() ? 1 : 2;
+    if (!routes.empty()) {
+        std::vector<ActuatorOutput> outputs;
+        for (const auto& r : routes) outputs.push_back({.profile = {}, .route = Route::parse(r)});
+        engine.set_actuators(outputs);
+    }
+    engine.prepare({.sample_rate_hz = kLiveRateHz, .max_block = kLiveBlock, .channels = channels});
+    std::vector<std::vector<float>> out(static_cast<size_t>(engine.actuators()),
+                                        std::vector<float>(kLiveBlock));
+    std::vector<float*> outs;
+    for (auto& o : out) outs.push_back(o.data());
+    const auto process = [&](size_t i) {
+        const float* ins[] = {in.data() + i, in.data() + i};
+        engine.process(ins, outs.data(), kLiveBlock);
+    };
     std::vector<double> us;
     us.reserve(in.size() / kLiveBlock * 64);
-    for (size_t i = 0; i + kLiveBlock <= in.size(); i += kLiveBlock)  // warm: pages touched
-        engine.process(in.data() + i, out.data(), kLiveBlock);
+    for (size_t i = 0; i + kLiveBlock <= in.size(); i += kLiveBlock) process(i);  // warm
     for (auto _ : state) {
         for (size_t i = 0; i + kLiveBlock <= in.size(); i += kLiveBlock) {
             const auto start = Clock::now();
-            engine.process(in.data() + i, out.data(), kLiveBlock);
+            process(i);
             us.push_back(microseconds(Clock::now() - start));
         }
-        benchmark::DoNotOptimize(out.data());
+        benchmark::DoNotOptimize(outs.data());
     }
     std::sort(us.begin(), us.end());
     state.counters["p10_us"] = us[us.size() / 10];
@@ -64,7 +82,16 @@ void EngineBlock(benchmark::State& state) {
     state.counters["max_us"] = us.back();
     state.counters["period_us"] = kLiveBlock / kLiveRateHz * 1e6;
 }
+
+void EngineBlock(benchmark::State& state) {
+    engine_block(state, {});
+}
 BENCHMARK(EngineBlock)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(engine_block, routes:all x4, {"all", "all", "all", "all"})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(engine_block, routes:all kick+snare band:40-200 channel:2,
+                  {"all", "kick+snare", "band:40-200", "channel:2"})
+    ->Unit(benchmark::kMillisecond);
 
 // Turns `id` between two values, one turn per block; times set() alone.
 void live_change(benchmark::State& state, P id, double a, double b) {

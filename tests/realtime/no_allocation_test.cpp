@@ -198,14 +198,20 @@ TEST(RealTime, WithActuatorCompensation) {
 // new pipeline up and crossfading to it) without an allocation, a free or a lock. Turning a
 // component's weight from or to 0 is structural (routing): weights are turned only between values
 // above 0. With several input channels their summed loudness is primed too. With an actuator
-// profile each change goes through its fit (actuator/fit.hpp) on the control thread.
+// profile each change goes through its fit (actuator/fit.hpp) on the control thread. With
+// `routes`, the two outputs play routes of every kind (engine/route.hpp), swapped now and then.
 void expect_live_changes_are_real_time_safe(const Settings& start, double fs, int channels,
-                                            std::optional<ActuatorProfile> actuator = {}) {
+                                            std::optional<ActuatorProfile> actuator = {},
+                                            bool routes = false) {
     const std::vector<float> x = varied_input(fs);
     std::vector<float> y(x.size());
     Engine engine(start);
     engine.set_actuators(
         {ActuatorOutput{.profile = actuator}, ActuatorOutput{.profile = actuator, .gain_db = -3}});
+    const std::vector<Engine::Routing> each_kind[] = {
+        {{Route::parse("kick+snare"), {}}, {Route::parse("channel:2"), {}}},
+        {{Route::parse("band:40-200"), {{P::frequency_out_max, 90}}}, {Route::parse("all"), {}}}};
+    if (routes) engine.set_routes(each_kind[0]);
     engine.enable_frame_queue();
     engine.prepare({.sample_rate_hz = fs, .max_block = 256, .channels = channels});
     std::vector<float> second(x.size());
@@ -224,6 +230,7 @@ void expect_live_changes_are_real_time_safe(const Settings& start, double fs, in
                 if (b % 35 == 0) engine.trigger(120, 0.5);
                 if (b % 140 == 0)  // structural: a pipeline primed here, crossfaded in there
                     engine.set(P::analysis_hop_ms, b % 280 == 0 ? 2.0 : start[P::analysis_hop_ms]);
+                if (routes && b % 140 == 70) engine.set_routes(each_kind[b % 280 == 70 ? 1 : 0]);
             });
             control.join();
         }
@@ -250,6 +257,10 @@ TEST(RealTime, LiveParameterChanges) {
                       std::filesystem::path(TACTUS_SOURCE_DIR) / "presets" / "four-channel.toml");
     four.set(P::actuator_dc, 1);
     expect_live_changes_are_real_time_safe(four, 44100, 2);
+}
+
+TEST(RealTime, RoutesOfEveryKindChangedLive) {
+    expect_live_changes_are_real_time_safe(Settings{}, 48000, 2, {}, true);
 }
 
 TEST(RealTime, LiveParameterChangesFittedToAnActuator) {
