@@ -87,10 +87,12 @@ void EngineBlock(benchmark::State& state) {
     engine_block(state, {});
 }
 BENCHMARK(EngineBlock)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(engine_block, routes:all x4, {"all", "all", "all", "all"})
+BENCHMARK_CAPTURE(engine_block, routes
+                  : all x4, {"all", "all", "all", "all"})
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(engine_block, routes:all kick+snare band:40-200 channel:2,
-                  {"all", "kick+snare", "band:40-200", "channel:2"})
+BENCHMARK_CAPTURE(engine_block, routes
+                  : all kick + snare band : 40 - 200 channel : 2,
+                    {"all", "kick+snare", "band:40-200", "channel:2"})
     ->Unit(benchmark::kMillisecond);
 
 // Turns `id` between two values, one turn per block; times set() alone.

@@ -15,8 +15,8 @@ foreach(helper tactus_live_program tactus_studio_program)
 endforeach()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/tactus DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
         FILES_MATCHING PATTERN "*.hpp")
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/presets ${PROJECT_SOURCE_DIR}/actuators ${PROJECT_SOURCE_DIR}/layouts
-        DESTINATION ${CMAKE_INSTALL_DATADIR}/tactus)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/presets ${PROJECT_SOURCE_DIR}/actuators
+                  ${PROJECT_SOURCE_DIR}/layouts DESTINATION ${CMAKE_INSTALL_DATADIR}/tactus)
 
 set(package_dir ${CMAKE_INSTALL_LIBDIR}/cmake/tactus)
 install(EXPORT tactusTargets NAMESPACE tactus:: DESTINATION ${package_dir})

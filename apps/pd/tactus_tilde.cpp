@@ -8,10 +8,12 @@
 // (`kick -12.5`; parts kick, snare, hat, other: [route kick snare hat other] splits them).
 //
 // Messages are the parameter table's keys (`envelope.decay_ms 120`, `mapping.frequency.curve
-// log`), `preset NAME|FILE`, `actuator [OUTLET] NAME|FILE|none`, `gain OUTLET DB`, `trigger
-// [FREQUENCY_HZ AMPLITUDE]`, `reset`, `print` and `save FILE`. A value goes through the engine's
-// live path (Engine::set: live values glide, structural ones are swapped in with a crossfade);
-// while DSP is off it is kept and the engine is prepared with it when DSP starts.
+// log`), `preset NAME|FILE`, `actuator [OUTLET] NAME|FILE|none`, `gain OUTLET DB`, `route OUTLET
+// ROUTE` (what an outlet plays: all, kick, snare+hat, band:20-120; engine/route.hpp), `layout
+// NAME|FILE` (every outlet's route, overlay, profile, trim and delay: io/layout_file.hpp),
+// `trigger [FREQUENCY_HZ AMPLITUDE]`, `reset`, `print` and `save FILE`. A value goes through the
+// engine's live path (Engine::set: live values glide, structural ones are swapped in with a
+// crossfade); while DSP is off it is kept and the engine is prepared with it when DSP starts.
 //
 // Threads: Pd calls the methods and the perform routine from its one scheduler thread, never at
 // once; perform() only runs the engine and copies (no allocation, lock or I/O), and the feature
@@ -37,6 +39,7 @@
 #include "tactus/engine/max_latency.hpp"
 #include "tactus/engine/onset_decisions.hpp"
 #include "tactus/io/actuator_file.hpp"
+#include "tactus/io/layout_file.hpp"
 #include "tactus/io/preset.hpp"
 #include "tactus/io/text_output.hpp"
 
@@ -73,6 +76,8 @@ class Object {
     void load_preset(const std::string& name);
     void load_actuator(int outlet, const std::string& name);
     void set_gain(int outlet, double gain_db);
+    void set_route(int outlet, const std::string& route);
+    void load_layout(const std::string& name);
     void print() const;
     void save(const std::string& path) const;
     std::filesystem::path beside_patch(const std::string& name) const;
@@ -297,6 +302,51 @@ void Object::set_gain(int outlet, double gain_db) {
         stale_ = true;
 }
 
+// A route changes live (Engine::set_route: a primed pipeline crossfaded in, no gap).
+void Object::set_route(int outlet, const std::string& route) {
+    if (outlet < 0 || outlet >= static_cast<int>(outputs_.size()))
+        throw std::invalid_argument(
+            fmt::format("route: outlet {} out of range (0 to {})", outlet, outputs_.size() - 1));
+    ActuatorOutput& output = outputs_[static_cast<size_t>(outlet)];
+    const Engine::Routing routing{Route::parse(route), output.overlay};
+    if (running())
+        engine_->set_route(outlet, routing);
+    else
+        stale_ = true;
+    output.route = routing.route;
+}
+
+// Routes, overlays and trims change live; profiles and delays are the engine's setup, and a
+// change of them prepares it again (as `actuator` does).
+void Object::load_layout(const std::string& name) {
+    const Layout layout = tactus::load_layout(
+        resolve_layout(name.ends_with(".toml") ? beside_patch(name).string() : name));
+    if (layout.outputs.size() != outputs_.size())
+        throw std::invalid_argument(fmt::format("layout {} has {} output(s), tactus~ {} outlet(s)",
+                                                layout.name, layout.outputs.size(),
+                                                outputs_.size()));
+    std::vector<ActuatorOutput> next = layout.actuator_outputs();
+    bool setup_changed = false;
+    for (size_t k = 0; k < next.size(); ++k) {
+        if (!layout.outputs[k].actuator.empty())
+            next[k].profile = tactus::load_actuator(resolve_actuator(layout.outputs[k].actuator));
+        setup_changed |=
+            next[k].profile != outputs_[k].profile || next[k].delay_ms != outputs_[k].delay_ms;
+    }
+    const bool live = running() && !setup_changed;
+    if (live) {
+        std::vector<Engine::Routing> routes;
+        for (const ActuatorOutput& o : next) routes.push_back({o.route, o.overlay});
+        engine_->set_routes(routes);
+        for (size_t k = 0; k < next.size(); ++k)
+            engine_->set_actuator_gain_db(static_cast<int>(k), next[k].gain_db);
+    }
+    outputs_ = std::move(next);
+    if (live) return;
+    stale_ = true;
+    if (engine_ && canvas_dspstate) prepare(sample_rate_hz_, block_);
+}
+
 void Object::print() const {
     post("tactus~: %d actuator outlet(s), %s", static_cast<int>(outputs_.size()),
          engine_ ? fmt::format("{:g} Hz, latency {} samples", sample_rate_hz_, engine_->latency())
@@ -344,6 +394,10 @@ void Object::message(t_symbol* selector, int argc, t_atom* argv) {
             }
         } else if (name == "gain" && argc == 2) {
             set_gain(static_cast<int>(number(0)), number(1));
+        } else if (name == "route" && argc == 2) {
+            set_route(static_cast<int>(number(0)), symbol(1));
+        } else if (name == "layout" && argc == 1) {
+            load_layout(symbol(0));
         } else if (name == "trigger" && (argc == 0 || argc == 2)) {
             if (!engine_) throw std::invalid_argument("trigger: DSP is off");
             // Without arguments: a pulse at the top of the frequency mapping, full scale.
@@ -356,7 +410,8 @@ void Object::message(t_symbol* selector, int argc, t_atom* argv) {
         } else if (name == "save" && argc == 1) {
             save(symbol(0));
         } else {
-            const std::string known = "preset, actuator, gain, trigger, reset, print, save";
+            const std::string known =
+                "preset, actuator, gain, route, layout, trigger, reset, print, save";
             throw std::invalid_argument(
                 fmt::format("unknown message '{}' with {} argument(s) (a parameter: did you mean "
                             "'{}'? or one of {})",

@@ -20,6 +20,7 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "helper_commands.hpp"
+#include "layout_option.hpp"
 #include "live/channel_list.hpp"
 #include "live/console.hpp"
 #include "live/device_stream.hpp"
@@ -53,6 +54,7 @@ extern "C" void request_stop(int) {
 struct LiveOptions {
     std::string backend, input, output;
     std::string actuator_channels = "1", sound_channels;
+    std::string layout;
     std::vector<std::string> play;
     bool loop = false, sync = false;
     std::vector<std::string> actuators;       // one for all, or one per actuator channel
@@ -125,8 +127,16 @@ void live_run(const LiveOptions& o) {
         throw std::runtime_error("live: --sync delays the sound of --play");
 
     live::Routing routing;
-    routing.actuator_channels =
-        live::parse_channel_list(o.actuator_channels, "--actuator-channels");
+    std::optional<Layout> layout;
+    if (!o.layout.empty()) {  // the layout's channels; its sound channels carry --play's
+        layout = load_layout(resolve_layout(o.layout));
+        for (const LayoutOutput& output : layout->outputs)
+            routing.actuator_channels.push_back(output.channel);
+        if (!o.play.empty()) routing.sound_channels = layout->sound_channels;
+    } else {
+        routing.actuator_channels =
+            live::parse_channel_list(o.actuator_channels, "--actuator-channels");
+    }
     if (!o.sound_channels.empty()) {
         if (o.play.empty())
             throw std::runtime_error("live: --sound-channels carry the sound of --play");
@@ -143,7 +153,8 @@ void live_run(const LiveOptions& o) {
         throw std::runtime_error(
             fmt::format("--actuator-channels: at most {} actuators", Engine::kMaxActuators));
 
-    const std::vector<ActuatorOutput> outputs = actuator_outputs(o, settings, routing);
+    const std::vector<ActuatorOutput> outputs =
+        layout ? layout_outputs(*layout, settings) : actuator_outputs(o, settings, routing);
     std::optional<live::OscEndpoint> osc_in, osc_out;
     if (!o.osc_port.empty()) osc_in = live::parse_endpoint(o.osc_port, "--osc-port", "127.0.0.1");
     if (!o.osc_send.empty()) osc_out = live::parse_endpoint(o.osc_send, "--osc-send", "127.0.0.1");
@@ -292,8 +303,9 @@ void add_live(CLI::App& app) {
                      "output channels of the actuators, from 1: 1,2 or 1-4 (one actuator each, "
                      "the same signal)")
         ->capture_default_str();
-    command->add_option("--sound-channels", o->sound_channels,
-                        "output channels of the sound of --play (its channels in turn)");
+    CLI::Option* sound =
+        command->add_option("--sound-channels", o->sound_channels,
+                            "output channels of the sound of --play (its channels in turn)");
     command->add_option("--play", o->play, "audio files played as sound and vibration")
         ->type_name("FILE");
     command->add_flag("--loop", o->loop, "play the files again and again");
@@ -329,6 +341,11 @@ void add_live(CLI::App& app) {
         ->add_option("--duration", o->duration_s,
                      "stop after this many seconds (default: Ctrl-C, or the end of --play)")
         ->check(CLI::PositiveNumber);
+    CLI::Option* layout = add_layout_option(*command, o->layout);
+    for (const char* name :
+         {"--actuator-channels", "--actuator", "--actuator-gain-db", "--actuator-delay-ms"})
+        layout->excludes(command->get_option(name));
+    layout->excludes(sound);
     o->pipeline.add_to(*command);
     command->callback([o, block] {
         o->block_given = block->count() > 0;

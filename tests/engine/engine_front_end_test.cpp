@@ -160,7 +160,7 @@ TEST(EngineFrontEnd, ActuatorsShareOneAnalysisWithTheirOwnProfileTrimAndDelay) {
     EXPECT_TRUE(test::same_bits(y[1], plain));
     EXPECT_FALSE(test::same_bits(y[0], y[1]));
     EXPECT_FALSE(test::same_bits(y[1], mono_render(x, fs)));  // fitted: not the default mapping
-    const size_t delay = 480;                               // 10 ms
+    const size_t delay = 480;                                 // 10 ms
     for (size_t i = 0; i < delay; ++i) ASSERT_EQ(y[2][i], 0.0f);
     for (size_t i = delay; i < x.size(); ++i)
         ASSERT_EQ(y[2][i], static_cast<float>(plain[i - delay] * db_to_gain(-6))) << i;

@@ -42,7 +42,7 @@ std::vector<std::byte> packet(const char* address, const char* types, ...) {
 
 TEST(OscAddressSpace, EveryParameterOfTheTableHasItsAddress) {
     const auto lines = osc_address_lines();
-    EXPECT_EQ(lines.size(), param_table().size() + 3);
+    EXPECT_EQ(lines.size(), param_table().size() + 5);
     for (const ParamSpec& s : param_table()) {
         const std::string address = "/tactus/" + std::string(s.key);
         EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [&](const std::string& l) {
@@ -77,6 +77,13 @@ TEST(OscAddressSpace, PresetTriggerAndActuatorGain) {
         std::get<ActuatorGain>(parse_osc({"/tactus/actuator/3/gain", {OscArg{'f', -6, ""}}}, 4));
     EXPECT_EQ(g.actuator, 2);
     EXPECT_EQ(g.gain_db, -6);
+    const auto r = std::get<ActuatorRoute>(
+        parse_osc({"/tactus/actuator/2/route", {OscArg{'s', 0, "band:20-120"}}}, 2));
+    EXPECT_EQ(r.actuator, 1);
+    EXPECT_EQ(r.route.text(), "band:20-120");
+    EXPECT_EQ(
+        std::get<LoadLayout>(parse_osc({"/tactus/layout", {OscArg{'s', 0, "controller"}}}, 2)).name,
+        "controller");
 }
 
 // Untrusted input: every one of these is refused with one line naming the address.
@@ -100,6 +107,11 @@ TEST(OscAddressSpace, RefusesWhatIsNotInTheTable) {
         {"/tactus/actuator/2/gain", {OscArg{'f', -6, ""}}},  // one actuator only
         {"/tactus/actuator/1/gain", {OscArg{'f', 6, ""}}},   // above 0 dB
         {"/tactus/actuator/1/trim", {OscArg{'f', -6, ""}}},
+        {"/tactus/actuator/1/route", {OscArg{'s', 0, "kicks"}}},  // no such route
+        {"/tactus/actuator/1/route", {OscArg{'f', 1, ""}}},
+        {"/tactus/actuator/2/route", {OscArg{'s', 0, "all"}}},         // one actuator only
+        {"/tactus/layout", {OscArg{'s', 0, "/etc/controller.toml"}}},  // a file: never read
+        {"/tactus/layout", {}},
         {std::string("/tactus/post.drive_db\n2nd line"), {OscArg{'f', 1, ""}}},
     };
     for (const OscMessage& m : bad) {

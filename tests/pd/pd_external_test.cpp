@@ -118,6 +118,23 @@ class PdExternal : public Cli {
         return channels[0];
     }
 
+    // A two-output layout beside the patch (the test's folder), the outputs on these routes.
+    void write_layout(const std::string& name, const std::string& first,
+                      const std::string& second) {
+        std::ofstream(dir_ / name) << "[[output]]\nroute = \"" << first
+                                   << "\"\n[[output]]\nroute = \"" << second << "\"\n";
+    }
+    // Both outputs of `tactus render --layout`, the input's length.
+    std::vector<std::vector<float>> render_layout(const std::string& layout) {
+        const CliResult r =
+            run("render " + (dir_ / "in.wav").string() + " -o " + (dir_ / "ref.wav").string() +
+                " --force --layout " + (dir_ / layout).string());
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        auto channels = read_channels(dir_ / "ref.wav");
+        for (auto& c : channels) c.resize(std::min(c.size(), input_.size()));
+        return channels;
+    }
+
     static constexpr const char* kAmen = "/usr/share/sonic-pi/samples/loop_amen.flac";
     std::vector<float> input_;
     std::string pd_log_;
@@ -279,6 +296,26 @@ TEST_F(PdExternal, TheOnsetOutletSendsEveryOnsetOfTactusOnsetsWithItsPart) {
     EXPECT_GE(parts.size(), 2u) << "the Amen break's kick and snare at least";
 }
 
+// `route OUTLET ROUTE` and `layout FILE` play as `tactus render --layout`
+// with those routes; a bad route says why and changes nothing.
+TEST_F(PdExternal, RoutesAndLayoutsPlayAsRenderWithThem) {
+    write_layout("kick-band.toml", "all", "band:20-120");
+    const auto reference = render_layout("kick-band.toml");
+    const auto routed = run_pd({"route 1 band:20-120", "route 0 kicks"});
+    ASSERT_EQ(routed.size(), 3u) << pd_log_;
+    EXPECT_NE(pd_log_.find("route 'kicks'"), std::string::npos) << pd_log_;
+    for (size_t k = 0; k < 2; ++k)
+        EXPECT_LE(largest_difference(routed[k], reference[k]), kTolerance);
+    EXPECT_GT(largest_difference(routed[1], routed[0]), 0.01f) << "the outlets play apart";
+
+    write_layout("snare-left.toml", "snare", "channel:1");
+    const auto laid_out = run_pd({"layout " + (dir_ / "snare-left.toml").string()});
+    ASSERT_EQ(laid_out.size(), 3u) << pd_log_;
+    const auto expected = render_layout("snare-left.toml");
+    for (size_t k = 0; k < 2; ++k)
+        EXPECT_LE(largest_difference(laid_out[k], expected[k]), kTolerance);
+}
+
 TEST_F(PdExternal, GainTrimsOneOutlet) {
     const auto pd = run_pd({"gain 1 -6"});
     ASSERT_EQ(pd.size(), 3u) << pd_log_;
@@ -307,9 +344,15 @@ TEST_F(PdExternal, PerformNeitherAllocatesNorLocks) {
         "100 tactus-msg post.drive_db 3; 100 tactus-msg envelope.decay_ms 60;"
         "100 tactus-msg mapping.frequency.curve lin; 100 tactus-msg analysis.hop_ms 5;"
         "100 tactus-msg preset four-channel; 100 tactus-msg gain 1 -12;"
-        "100 tactus-msg trigger 80 0.5; 100 tactus-msg flutter.weight 0;";
+        "100 tactus-msg trigger 80 0.5; 100 tactus-msg flutter.weight 0;"
+        "100 tactus-msg route 1 band:40-200; 100 tactus-msg route 0 kick+snare;"
+        "100 tactus-msg layout " +
+        (dir_ / "seat-and-all.toml").string() + ";";
+    write_layout("seat-and-all.toml", "band:20-120", "all");
     const auto pd = run_pd({}, score, std::string("LD_PRELOAD=") + TACTUS_PD_GUARD + " ");
     ASSERT_EQ(pd.size(), 3u) << pd_log_;
+    for (const char* refused : {"route", "layout"})  // an error would name the message
+        EXPECT_EQ(pd_log_.find(refused), std::string::npos) << pd_log_;
     long performs = -1, allocations = -1, locks = -1;
     const size_t at = pd_log_.rfind("perform-guard:");
     ASSERT_NE(at, std::string::npos) << pd_log_;

@@ -57,6 +57,11 @@ void send_osc_traffic(lo_address to, size_t round, const std::vector<std::pair<P
     }
     if (round % 40 == 0)  // structural: a new pipeline primed and crossfaded in
         lo_send(to, "/tactus/analysis.hop_ms", "f", round % 80 == 0 ? 2.0f : 2.9f);
+    if (round % 40 == 20) {  // routes and a layout: new pipelines too
+        const char* routes[] = {"kick+snare", "band:40-200", "channel:2", "all"};
+        lo_send(to, "/tactus/actuator/1/route", "s", routes[round / 40 % 4]);
+    }
+    if (round % 200 == 100) lo_send(to, "/tactus/layout", "s", "wrists");
 }
 
 TEST_F(LiveCallbackRealTime, PlayerWithOscTrafficAndPresetReloads) {
@@ -127,6 +132,7 @@ TEST_F(LiveCallbackRealTime, PlayerWithOscTrafficAndPresetReloads) {
     EXPECT_GT(monitor.onsets(), 10);
     EXPECT_GT(control.settings()[P::pitch_min_hz], 50.0) << "a reloaded preset applied";
     EXPECT_EQ(callback.sync_delay_samples(), 90) << "the sound's delay moved, back and forth";
+    EXPECT_EQ(engine.routes()[1].route.text(), "channel:2") << "the layout's right output";
     lo_address_free(to);
     lo_server_free(listener);
 }

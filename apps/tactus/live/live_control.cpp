@@ -1,9 +1,12 @@
 #include "live_control.hpp"
 
+#include <fmt/format.h>
+
 #include <chrono>
 #include <stdexcept>
 #include <thread>
 
+#include "tactus/io/layout_file.hpp"
 #include "tactus/io/preset.hpp"
 
 namespace tactus::live {
@@ -51,12 +54,35 @@ void LiveControl::load_preset(const std::string& name_or_path) {
     load_preset_file(resolve_preset(name_or_path));
 }
 
+void LiveControl::load_layout(const std::string& name_or_path) {
+    const Layout layout = tactus::load_layout(resolve_layout(name_or_path));
+    if (static_cast<int>(layout.outputs.size()) != engine_.actuators())
+        throw std::invalid_argument(fmt::format("layout {} has {} output(s); {} actuator(s) play",
+                                                layout.name, layout.outputs.size(),
+                                                engine_.actuators()));
+    std::vector<Engine::Routing> routes;
+    for (const LayoutOutput& o : layout.outputs)
+        routes.push_back({o.output.route, o.output.overlay});
+    retry_while_full([&] { engine_.set_routes(routes); });
+    for (size_t k = 0; k < layout.outputs.size(); ++k)
+        retry_while_full([&] {
+            engine_.set_actuator_gain_db(static_cast<int>(k), layout.outputs[k].output.gain_db);
+        });
+}
+
 void LiveControl::run(const OscCommand& command) {
     if (const auto* c = std::get_if<SetParameter>(&command)) return set(c->id, c->value);
     if (std::holds_alternative<QueryParameter>(command)) return;  // answered by the server
     if (const auto* c = std::get_if<LoadPreset>(&command)) return load_preset(c->name);
     if (const auto* c = std::get_if<ActuatorGain>(&command))
         return retry_while_full([&] { engine_.set_actuator_gain_db(c->actuator, c->gain_db); });
+    if (const auto* c = std::get_if<ActuatorRoute>(&command))
+        return retry_while_full([&] {
+            engine_.set_route(
+                c->actuator,
+                {c->route, engine_.routes()[static_cast<size_t>(c->actuator)].overlay});
+        });
+    if (const auto* c = std::get_if<LoadLayout>(&command)) return load_layout(c->name);
     const auto& t = std::get<TriggerPulse>(command);
     double frequency_hz = t.frequency_hz, amplitude = t.amplitude;
     if (!t.with_values) {

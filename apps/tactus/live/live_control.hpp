@@ -28,6 +28,9 @@ class LiveControl {
     // parameters that differ from the running ones.
     void load_preset(const std::string& name_or_path);
     void load_preset_file(const std::filesystem::path& path);
+    // A layout's routes, overlays and trims (its channels, profiles and delays are the
+    // device's, set when it opened); it must have as many outputs as there are actuators.
+    void load_layout(const std::string& name_or_path);
     void run(const OscCommand& command);
     // Any control thread: the engine's settings, whole.
     Settings settings() const { return engine_.settings(); }

@@ -68,16 +68,29 @@ OscCommand parse_parameter(const OscMessage& m, std::string_view key) {
 }
 
 OscCommand parse_actuator(const OscMessage& m, std::string_view rest, int actuators) {
-    // rest: "<n>/gain"
+    // rest: "<n>/gain" or "<n>/route"
     const size_t slash = rest.find('/');
-    if (slash == std::string_view::npos || rest.substr(slash + 1) != "gain")
-        refuse(m, fmt::format("unknown address (an actuator's is {}actuator/<n>/gain)", kOscRoot));
+    const std::string_view what = slash == std::string_view::npos ? "" : rest.substr(slash + 1);
+    if (what != "gain" && what != "route")
+        refuse(m, fmt::format("unknown address (an actuator's are {0}actuator/<n>/gain and "
+                              "{0}actuator/<n>/route)",
+                              kOscRoot));
     int n = 0;
     const std::string_view digits = rest.substr(0, slash);
     const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), n);
     if (error != std::errc() || end != digits.data() + digits.size() || n < 1 || n > actuators)
         refuse(m,
                fmt::format("actuator '{}' does not exist: 1 to {}", printable(digits), actuators));
+    if (what == "route") {
+        expect_args(m, 1, 1, "one route");
+        if (!is_text(m.args[0]))
+            refuse(m, "the route must be a string (all, kick, band:20-120, ...)");
+        try {
+            return ActuatorRoute{n - 1, Route::parse(m.args[0].text)};
+        } catch (const std::invalid_argument& e) {
+            refuse(m, e.what());
+        }
+    }
     expect_args(m, 1, 1, "one gain in dB");
     const double gain_db = number_arg(m, 0, "gain_db");
     try {
@@ -88,6 +101,22 @@ OscCommand parse_actuator(const OscMessage& m, std::string_view rest, int actuat
     return ActuatorGain{n - 1, gain_db};
 }
 
+// A preset's or a layout's name: a message from the network reads no file it names.
+std::string plain_name(const OscMessage& m, std::string_view kind, std::string_view listing) {
+    expect_args(m, 1, 1, fmt::format("one {} name", kind));
+    if (!is_text(m.args[0])) refuse(m, fmt::format("the {} name must be a string", kind));
+    const std::string& name = m.args[0].text;
+    const bool plain = !name.empty() && name.size() <= kMaxNameBytes && name[0] != '.' &&
+                       !name.ends_with(".toml") &&
+                       name.find_first_not_of(
+                           "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTU"
+                           "VWXYZ0123456789_-.") == std::string::npos;
+    if (!plain)
+        refuse(m, fmt::format("'{}' is not a {} name (see {}; files are not loaded over OSC)",
+                              printable(std::string_view(name).substr(0, 200)), kind, listing));
+    return name;
+}
+
 }  // namespace
 
 OscCommand parse_osc(const OscMessage& m, int actuators) {
@@ -95,21 +124,8 @@ OscCommand parse_osc(const OscMessage& m, int actuators) {
     if (!address.starts_with(kOscRoot))
         refuse(m, fmt::format("unknown address (tactus listens under {})", kOscRoot));
     const std::string_view rest = address.substr(kOscRoot.size());
-    if (rest == "preset") {
-        expect_args(m, 1, 1, "one preset name");
-        if (!is_text(m.args[0])) refuse(m, "the preset name must be a string");
-        const std::string& name = m.args[0].text;
-        const bool plain = !name.empty() && name.size() <= kMaxNameBytes && name[0] != '.' &&
-                           !name.ends_with(".toml") &&
-                           name.find_first_not_of(
-                               "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTU"
-                               "VWXYZ0123456789_-.") == std::string::npos;
-        if (!plain)  // a message from the network reads no file it names
-            refuse(m, fmt::format("'{}' is not a preset name (see `tactus presets`; files are "
-                                  "not loaded over OSC)",
-                                  printable(std::string_view(name).substr(0, 200))));
-        return LoadPreset{name};
-    }
+    if (rest == "preset") return LoadPreset{plain_name(m, "preset", "`tactus presets`")};
+    if (rest == "layout") return LoadLayout{plain_name(m, "layout", "the layouts folder")};
     if (rest == "trigger") {
         expect_args(m, 0, 2, "no arguments, or frequency_hz and amplitude");
         if (m.args.size() == 1) refuse(m, "takes no arguments, or frequency_hz and amplitude");
@@ -155,6 +171,9 @@ std::vector<std::string> osc_address_lines() {
     lines.push_back(fmt::format("{}trigger [frequency_hz amplitude]", kOscRoot));
     lines.push_back(
         fmt::format("{}actuator/<n>/gain <{} to 0 dB>", kOscRoot, ActuatorOutput::kMinGainDb));
+    lines.push_back(
+        fmt::format("{}actuator/<n>/route <all|kick+snare|band:LOW-HIGH|channel:N>", kOscRoot));
+    lines.push_back(fmt::format("{}layout <name>", kOscRoot));
     return lines;
 }
 

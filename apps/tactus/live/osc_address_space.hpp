@@ -6,6 +6,10 @@
 //   /tactus/trigger [frequency_hz amplitude]   a pulse (without arguments: the mapping's
 //                                         highest frequency and amplitude)
 //   /tactus/actuator/<n>/gain <dB>        actuator n's trim (n from 1)
+//   /tactus/actuator/<n>/route <route>    what actuator n plays (engine/route.hpp: all, kick,
+//                                         band:20-120, channel:1, ...)
+//   /tactus/layout <name>                 a layout's routes and trims by name (io/layout_file.hpp;
+//                                         as many outputs as actuators; no file path)
 // OSC input is untrusted network input: parse_osc() validates everything against the table
 // and throws std::invalid_argument with one line for anything else; nothing is applied here.
 // The server answers every message to a parameter's address (set, refused or asked) with
@@ -18,6 +22,7 @@
 #include <variant>
 #include <vector>
 
+#include "tactus/engine/route.hpp"
 #include "tactus/params/params.hpp"
 
 namespace tactus::live {
@@ -54,8 +59,15 @@ struct ActuatorGain {
     int actuator;  // from 0
     double gain_db;
 };
-using OscCommand =
-    std::variant<SetParameter, QueryParameter, LoadPreset, TriggerPulse, ActuatorGain>;
+struct ActuatorRoute {
+    int actuator;  // from 0
+    Route route;
+};
+struct LoadLayout {
+    std::string name;
+};
+using OscCommand = std::variant<SetParameter, QueryParameter, LoadPreset, TriggerPulse,
+                                ActuatorGain, ActuatorRoute, LoadLayout>;
 
 // `actuators`: the engine's actuator outputs. Throws std::invalid_argument, one line naming the
 // address.

@@ -326,6 +326,20 @@ void Engine::set_actuator_gain_db(int actuator, double gain_db) {
 
 void Engine::set_routes(const std::vector<Routing>& routes) {
     const std::lock_guard lock(control_);
+    apply_routes(routes);
+}
+
+void Engine::set_route(int actuator, const Routing& routing) {
+    const std::lock_guard lock(control_);
+    check_range("actuator", actuator, 0, actuators() - 1);
+    std::vector<Routing> routes = routes_of(outputs_);
+    routes[static_cast<size_t>(actuator)] = routing;
+    apply_routes(routes);
+}
+
+// control_ held: checks every route, then swaps a pipeline playing them in (or, before prepare,
+// keeps them); throws having changed nothing.
+void Engine::apply_routes(const std::vector<Routing>& routes) {
     check_range("route count", static_cast<int>(routes.size()), actuators(), actuators());
     std::vector<ActuatorOutput> next = outputs_;
     for (size_t k = 0; k < routes.size(); ++k) {
@@ -463,11 +477,14 @@ void Engine::start_crossfade() noexcept {
 
 // The pipeline's input from the ring's lanes (the mono input, the summed power when there are
 // several channels as their mean, the routed channels) at `offset`; `channels` holds the
-// channels' pointers (one input channel: the mono input is it).
+// channels' pointers (one input channel: the mono input is every one of them).
 PipelineInput Engine::input_from(const float* const* lanes, int offset,
                                  const float** channels) const noexcept {
-    for (int c = 0; c < routed_channels_; ++c) channels[c] = lanes[first_channel_lane() + c] + offset;
-    if (routed_channels_ == 0) channels[0] = lanes[0] + offset;
+    for (int c = 0; c < Route::kMaxChannel; ++c)
+        channels[c] =
+            routed_channels_ == 0
+                ? lanes[0] + offset
+                : lanes[first_channel_lane() + std::min(c, routed_channels_ - 1)] + offset;
     return {.mono = lanes[0] + offset,
             .power = summed_loudness_ ? lanes[1] + offset : nullptr,
             .channels = channels};

@@ -22,8 +22,8 @@
 // way of playing it, one post chain per distinct profile among its outputs (Pipeline).
 //
 // Threads (docs/architecture.md, "Threads and queues"):
-//   control threads  set(), set_actuator_gain_db(), set_routes(), inject(), trigger(),
-//                    set_program_source(), settings_snapshot(), settings():
+//   control threads  set(), set_actuator_gain_db(), set_routes(), set_route(), inject(),
+//                    trigger(), set_program_source(), settings_snapshot(), settings():
 //                    thread-safe among themselves (a mutex no audio thread takes); they validate,
 //                    then hand the change to the audio thread through a lock-free queue
 //                    (moodycamel::ReaderWriterQueue). A live parameter glides over its smoothing
@@ -165,6 +165,7 @@ class Engine {
         bool operator==(const Routing&) const = default;
     };
     void set_routes(const std::vector<Routing>& routes);
+    void set_route(int actuator, const Routing& routing);  // one actuator's, the others kept
     std::vector<Routing> routes() const;
     // The vibration program from outside: applied at the audio thread's next block.
     void inject(const ControlFrame& frame);
@@ -245,6 +246,7 @@ class Engine {
     PipelineInput input_from(const float* const* lanes, int offset,
                              const float** channels) const noexcept;
     static std::vector<Routing> routes_of(const std::vector<ActuatorOutput>& outputs);
+    void apply_routes(const std::vector<Routing>& routes);  // control_ held
     void retire(Pipeline* pipeline) noexcept;
 
     Settings settings_;     // control side, control_ held

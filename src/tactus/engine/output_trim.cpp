@@ -32,14 +32,14 @@ void ActuatorOutput::check(int index) const {
 }
 
 void ActuatorOutput::check_input(int index, const ProcessSpec& spec) const {
-    if (route.kind == Route::Kind::channel && route.channel >= spec.channels)
+    if (route.kind == Route::Kind::channel && spec.channels > 1 && route.channel >= spec.channels)
         throw std::invalid_argument(
             fmt::format("actuator {}: route {} takes input channel {}; the input has {}", index,
                         route.text(), route.channel + 1, spec.channels));
     if (route.kind == Route::Kind::band && route.high_hz >= 0.5 * spec.sample_rate_hz)
         throw std::invalid_argument(
-            fmt::format("actuator {}: route {} reaches past half the sample rate ({:g} Hz)",
-                        index, route.text(), spec.sample_rate_hz));
+            fmt::format("actuator {}: route {} reaches past half the sample rate ({:g} Hz)", index,
+                        route.text(), spec.sample_rate_hz));
 }
 
 void OutputTrim::prepare(const ProcessSpec& spec, const ActuatorOutput& output) {

@@ -25,8 +25,8 @@ struct ActuatorOutput {
     static constexpr double kMaxDelayMs = 1000;
     // Throws std::invalid_argument naming the actuator index and the value.
     void check(int index) const;
-    // Whether the input of `spec` has what the route takes (a channel, a band below Nyquist);
-    // throws std::invalid_argument naming the actuator index and the route.
+    // Whether the input of `spec` has what the route takes (a channel of several, a band below
+    // Nyquist); throws std::invalid_argument naming the actuator index and the route.
     void check_input(int index, const ProcessSpec& spec) const;
     // Throws std::invalid_argument naming the gain (any thread).
     static void check_gain_db(double gain_db);

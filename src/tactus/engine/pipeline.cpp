@@ -47,7 +47,8 @@ void Pipeline::prepare(const ProcessSpec& spec, const Settings& settings,
     for (size_t k = 0; k < outputs.size(); ++k) {
         const ActuatorOutput& o = outputs[k];
         size_t j = 0;
-        while (j < played.size() && !(played[j]->route == o.route && played[j]->overlay == o.overlay))
+        while (j < played.size() &&
+               !(played[j]->route == o.route && played[j]->overlay == o.overlay))
             ++j;
         if (j == played.size()) played.push_back(&o);
         lane_of[k] = j;
@@ -95,17 +96,17 @@ void Pipeline::prepare(const ProcessSpec& spec, const Settings& settings,
         Lane& lane = lanes_[j];
         lane.route = played[j]->route;
         lane.overlay = played[j]->overlay;
-        lane.listening = static_cast<int>(
-            std::find_if(heard.begin(), heard.end(),
-                         [&](const Route& r) { return r.hears_as(lane.route); }) -
-            heard.begin());
+        lane.listening =
+            static_cast<int>(std::find_if(heard.begin(), heard.end(),
+                                          [&](const Route& r) { return r.hears_as(lane.route); }) -
+                             heard.begin());
         lane.program = lane.route.kind == Route::Kind::all && lane.overlay.empty();
         lane.carrier.assign(internal, 0.0f);
         lane.flutter.assign(flutter_enabled(settings) ? internal : 0, 0.0f);
         lane.pressure.assign(pressure_enabled(settings) ? internal : 0, 0.0f);
-        lane.mapper.prepare(overlaid(settings, lane.overlay),
-                            {.frames_per_second = frames_per_second,
-                             .output_ceiling = lane_ceiling(lane)});
+        lane.mapper.prepare(
+            overlaid(settings, lane.overlay),
+            {.frames_per_second = frames_per_second, .output_ceiling = lane_ceiling(lane)});
         lane.voice.prepare(internal_spec, settings[P::post_band_high_hz]);
         for (size_t c = lane.first_chain; c < lane.first_chain + lane.chains; ++c)
             chains_[c].set_pressure_reference(lane_ceiling(lane));

@@ -136,10 +136,10 @@ class Pipeline {
     LiveSettings live_;
     std::vector<Listening> listenings_;
     std::vector<Lane> lanes_;
-    Mapper program_;                    // the mix's frames, the running settings: the observer's
+    Mapper program_;                     // the mix's frames, the running settings: the observer's
     std::vector<ActuatorChain> chains_;  // lane by lane, one per distinct profile
-    std::vector<int> chain_of_;         // per actuator: its chain
-    std::vector<int> first_of_chain_;   // per chain: the first actuator it feeds
+    std::vector<int> chain_of_;          // per actuator: its chain
+    std::vector<int> first_of_chain_;    // per chain: the first actuator it feeds
     ProgramSource source_ = ProgramSource::analysis;
     FeatureSet extra_features_ = FeatureSet::none();
     const RecordedAnalysis* recording_ = nullptr;

@@ -3,7 +3,8 @@
 // the paper's), only some drum parts' pulses (`kick`, `snare+hat`: the parts of
 // analysis/drum_part.hpp), a band of the input analysed on its own, so its loudness, onsets and
 // brightness are the band's (`band:LOW-HIGH`, Hz), or one input channel, so stereo or surround
-// direction reaches left and right actuators (`channel:N`, counted from 1). On top of the
+// direction reaches left and right actuators (`channel:N`, counted from 1; a mono input is every
+// channel, as a mono sound plays on both sides). On top of the
 // running settings an output may also take its own values of the mapping's parameters (its
 // overlay: a pitch range, an envelope, a part's gain), as a preset would set them.
 // Control threads: parse(), check(); the engine turns routes into its pipeline's lanes.

@@ -32,9 +32,11 @@ LayoutOutput read_output(const toml::table& table, std::string_view origin, size
     o.name = reader.text("name", fmt::format("output{}", index + 1));
     static const std::regex kName("[A-Za-z0-9_-]{1,64}");
     if (!std::regex_match(o.name, kName))
-        reader.fail(reader.get("name"), "name", "1-64 letters, digits, '-' or '_' (it names files)");
+        reader.fail(reader.get("name"), "name",
+                    "1-64 letters, digits, '-' or '_' (it names files)");
     o.channel = -1;
-    if (const toml::node* node = reader.get("channel")) o.channel = channel_of(reader, *node, "channel");
+    if (const toml::node* node = reader.get("channel"))
+        o.channel = channel_of(reader, *node, "channel");
     o.actuator = reader.text("actuator", "");
     const std::string route = reader.text("route", "all");
     try {
@@ -88,7 +90,8 @@ Layout parse_layout(std::string_view toml_text, std::string_view origin) {
     if (const toml::node* sound = top.get("sound")) {
         const toml::array* channels = sound->as_array();
         if (!channels) top.fail(sound, "sound", "must be a list of channel numbers, [1, 2]");
-        for (const toml::node& c : *channels) layout.sound_channels.push_back(channel_of(top, c, "sound"));
+        for (const toml::node& c : *channels)
+            layout.sound_channels.push_back(channel_of(top, c, "sound"));
     }
     std::vector<int> taken = layout.sound_channels;
     for (size_t k = 0; k < array->size(); ++k) {

@@ -108,8 +108,7 @@ void apply_table(Settings& settings, const toml::table& table, std::string_view 
 
 }  // namespace
 
-std::vector<std::pair<P, double>> preset_values(const toml::table& table,
-                                                std::string_view origin) {
+std::vector<std::pair<P, double>> preset_values(const toml::table& table, std::string_view origin) {
     Settings settings;
     std::vector<P> set;
     apply_node(settings, "", table, kPresetFormat, origin, &set);
