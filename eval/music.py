@@ -101,11 +101,11 @@ def felt_render(tactus, wav, renders, preset):
     return signal, np.abs(scipy.signal.hilbert(signal)), rate
 
 
-def gives_pulse(envelope, rate, t):
-    """Whether the felt envelope peaks inside [t, t + PULSE_S], DISTINCT_DB above its largest
+def gives_pulse(envelope, rate, t, pulse_s=PULSE_S):
+    """Whether the felt envelope peaks inside [t, t + pulse_s], DISTINCT_DB above its largest
     value over [t - BEFORE_S, t]."""
     start = int(round(t * rate))
-    window = envelope[start:start + int(PULSE_S * rate)]
+    window = envelope[start:start + int(pulse_s * rate)]
     before = envelope[max(0, start - int(BEFORE_S * rate)):start]
     if len(window) < 2:
         return False

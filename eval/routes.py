@@ -87,18 +87,6 @@ def felt_outputs(tactus, wav, layout, renders, preset):
     return [felt.weighted(y[:, k], rate) for k in range(y.shape[1])], rate
 
 
-def gives_pulse(envelope, rate, t):
-    """music.gives_pulse over [t, t + PART_PULSE_S] instead of music.PULSE_S."""
-    start = int(round(t * rate))
-    window = envelope[start:start + int(PART_PULSE_S * rate)]
-    before = envelope[max(0, start - int(music.BEFORE_S * rate)):start]
-    if len(window) < 2:
-        return False
-    top = int(np.argmax(window))
-    floor = np.max(before) if len(before) else 0.0
-    return top < len(window) - 1 and window[top] >= floor * 10 ** (music.DISTINCT_DB / 20)
-
-
 def ratio_db(a, b, power=True):
     """a re b in dB (energies, or with power=False amplitudes); b silent: inf."""
     with np.errstate(divide="ignore"):
@@ -128,7 +116,7 @@ def part_outputs(tactus, directory, name, layouts, renders, preset):
         own = np.array([t for t, instrument, _ in hits if instrument == part])
         other = [t for t in times[parts == OTHER[part]] if np.all(np.abs(own - t) > CLEAR_S)]
         own_times = times[parts == part]
-        pulses = [gives_pulse(envelope, rate, t) for t in own_times]
+        pulses = [music.gives_pulse(envelope, rate, t, PART_PULSE_S) for t in own_times]
         if not pulses:  # a house song's snares all fall on its kicks, so are kicks
             below = []
         elif np.mean(pulses) < 0.5:  # the median own peak is no pulse's

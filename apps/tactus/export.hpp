@@ -13,6 +13,7 @@ namespace tactus::cli {
 
 struct ExportOptions {
     std::string input, actuator;
+    std::string layout;  // each output's files named by it (OUT.<name>.ahap); the .ogg carries all
     std::vector<std::string> outputs;  // -o, repeatable: one input's outputs
     int channels = 1;
     bool force = false;
@@ -21,7 +22,7 @@ struct ExportOptions {
     PipelineOptions pipeline;
     // A batch (batch_plan.hpp), and with -O the formats each input is written in.
     BatchOptions batch;
-    std::vector<std::string> formats{".ahap", ".haptic", ".android.json", ".ogg"};
+    std::vector<std::string> formats{".ahap", ".haptic", ".android.json", ".envelope.json", ".ogg"};
 };
 
 // Renders o.input once and writes every one of o.outputs (each format named by its ending), all

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -24,11 +25,14 @@ inline CLI::Option* add_layout_option(CLI::App& command, std::string& layout) {
 // layout and the output).
 inline std::vector<ActuatorOutput> layout_outputs(const Layout& layout, const Settings& settings) {
     std::vector<ActuatorOutput> outputs = layout.actuator_outputs();
+    std::map<std::string, ActuatorProfile> loaded;  // each profile once (and its warnings)
     for (size_t k = 0; k < outputs.size(); ++k) {
         const LayoutOutput& o = layout.outputs[k];
         if (o.actuator.empty()) continue;
         try {
-            outputs[k].profile = load_actuator_for(o.actuator, settings);
+            if (!loaded.contains(o.actuator))
+                loaded.emplace(o.actuator, load_actuator_for(o.actuator, settings));
+            outputs[k].profile = loaded.at(o.actuator);
         } catch (const std::exception& e) {
             throw std::runtime_error(
                 fmt::format("layout {}: output {}: {}", layout.name, o.name, e.what()));

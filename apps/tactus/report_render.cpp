@@ -112,7 +112,7 @@ ReportRender render_once(const std::string& input, const Settings& settings,
                             f.features.noisiness, pitched ? f.features.pitch_hz : NAN});
         program.push_back({t, f.control.frequency_hz, f.control.amplitude});
     };
-    const HapticTrack track = render_haptic_track(input, engine, sink, run, on_frame);
+    const HapticTrack track = render_haptic_tracks(input, engine, sink, run, on_frame).front();
     if (out.analysis_replayed && engine.replay_ran_out()) {  // the caller renders again
         out.analysis_replayed = false;
         return out;

@@ -1,5 +1,5 @@
 // The render behind `tactus report` and `tactus studio`: one pass of the engine over a file
-// (export/haptic_track.hpp's render_haptic_track, as `tactus export` runs it) that gathers the
+// (export/haptic_track.hpp's render_haptic_tracks, as `tactus export` runs it) that gathers the
 // report's plots (waveform with onsets, features, vibration program, vibration, felt envelope,
 // sensation per channel of touch) and the sound and the vibration lined up in time. Any thread;
 // one call per Engine.

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <numeric>
 #include <sstream>
@@ -396,6 +397,53 @@ TEST_P(Export, AndroidWaveformIsReadyForCreateWaveform) {
                             "Android");
 }
 
+// BasicEnvelopeBuilder (API 36): intensity and sharpness 0-1, each control point at least 20 ms
+// after the one before, the last at zero intensity; drawn from 0 at time 0 through the points,
+// the envelope follows the felt one as closely as 20 ms ramps can (a hit's attack takes a few ms:
+// its peak comes up to 20 ms late), and reaches its peak.
+TEST_P(Export, AndroidEnvelopeIsReadyForBasicEnvelopeBuilder) {
+    const EngineRun engine = run_engine(GetParam().path);
+    const Json e = read_json(exported(".envelope.json"));
+    EXPECT_EQ(e.at("api_level").get<int>(), 36);
+    const Json& points = e.at("control_points");
+    ASSERT_GE(points.size(), 2u);
+    std::vector<std::pair<double, double>> drawn{{0.0, 0.0}};
+    int64_t total_ms = 0;
+    for (const Json& p : points) {
+        for (const char* key : {"intensity", "sharpness"}) {
+            EXPECT_GE(p.at(key).get<double>(), 0.0) << p;
+            EXPECT_LE(p.at(key).get<double>(), 1.0) << p;
+        }
+        EXPECT_GE(p.at("duration_ms").get<int64_t>(), tactus::kAndroidMinStepMs) << p;
+        total_ms += p.at("duration_ms").get<int64_t>();
+        drawn.emplace_back(static_cast<double>(total_ms) * 1e-3, p.at("intensity").get<double>());
+    }
+    EXPECT_EQ(points.back().at("intensity").get<double>(), 0.0) << "ends at zero intensity";
+    EXPECT_EQ(total_ms, e.at("duration_ms").get<int64_t>());
+    EXPECT_NEAR(static_cast<double>(total_ms), engine.felt.size() * kStepS * 1e3, 45);
+    const double full_scale = e.at("metadata").at("felt_full_scale").get<double>();
+    std::vector<double> felt(engine.felt.size()), grid(engine.felt.size(), 0.0);
+    for (size_t i = 0; i < felt.size(); ++i) felt[i] = std::min(1.0, engine.felt[i] / full_scale);
+    draw(grid, drawn);
+    const double r = correlation(grid, felt);
+    std::cout << GetParam().name << ".envelope.json: " << points.size()
+              << " control points, correlation " << r << " with the felt envelope\n";
+    if (engine.felt.size() * kStepS > 1) {  // a short tick is mostly its attack
+        EXPECT_GE(r, 0.75);
+    }
+    double highest = 0;
+    for (const Json& p : points) highest = std::max(highest, p.at("intensity").get<double>());
+    EXPECT_GE(highest, 0.9 * *std::max_element(felt.begin(), felt.end()));
+    std::vector<double> onsets_s, strengths_db;
+    std::vector<std::string> parts;
+    for (const Json& o : e.at("onsets")) {
+        onsets_s.push_back(o.at("time_ms").get<double>() / 1e3);
+        parts.push_back(o.at("part"));
+        strengths_db.push_back(o.at("strength_db"));
+    }
+    expect_parts_as_printed(onsets_s, parts, strengths_db, onsets(), "Android envelope");
+}
+
 // A phone without amplitude control plays every amplitude but 0 at full strength: nothing below
 // what its actuator makes felt is written, so the motor stops where the vibration fades (a tail
 // of amplitude 1 buzzed to the end), and no step is shorter than a phone resolves (20 ms).
@@ -613,6 +661,50 @@ TEST_F(Cli, ExportRefusesABadNormalisationBeforeReadingAudio) {
         EXPECT_FALSE(fs::exists(out));
     }
     expect_no_temporaries();
+}
+
+// With a layout each actuator output gets its own file of each format, named by the output,
+// each its route's: a kick output's onsets are the kicks `tactus onsets` names, a snare output's
+// the snares; the one .ogg carries both outputs as its haptic channels. An .ogg with more
+// outputs than Android plays is refused before anything is written.
+TEST_F(Cli, ExportWithALayoutWritesEachOutputsFilesAndOneOgg) {
+    const std::string amen = "/usr/share/sonic-pi/samples/loop_amen_full.flac";
+    std::ofstream(dir_ / "drums.toml") << "[[output]]\nname = \"kick\"\nroute = \"kick\"\n"
+                                          "[[output]]\nname = \"snare\"\nroute = \"snare\"\n";
+    const fs::path out = dir_ / "amen";
+    const auto r = run("export " + amen + " -o " + out.string() + ".ahap -o " + out.string() +
+                       ".envelope.json -o " + out.string() + ".ogg --layout " +
+                       (dir_ / "drums.toml").string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_FALSE(fs::exists(out.string() + ".ahap"));
+    const auto printed = run("onsets " + amen);
+    std::map<std::string, int> named;
+    for (const PrintedOnset& o : printed_onsets(printed.out)) ++named[o.part];
+    for (const std::string part : {"kick", "snare"}) {
+        const Json ahap = read_json(out.string() + "." + part + ".ahap");
+        std::vector<std::string> parts;
+        for (const Json& onset : ahap.at("Metadata").at("Onsets"))
+            parts.push_back(onset.at("Part"));
+        EXPECT_GE(static_cast<int>(parts.size()), named[part]) << part;
+        EXPECT_LE(static_cast<int>(parts.size()), named[part] + 1)
+            << part << ": the tail may decide one more";
+        for (const std::string& p : parts) EXPECT_EQ(p, part);
+        const Json envelope = read_json(out.string() + "." + part + ".envelope.json");
+        EXPECT_EQ(envelope.at("onsets").size(), parts.size()) << part;
+    }
+    const auto comments = vorbis_comments(out.string() + ".ogg");
+    EXPECT_NE(std::find(comments.begin(), comments.end(), "ANDROID_HAPTIC=2"), comments.end());
+    SF_INFO info{};
+    SNDFILE* file = sf_open((out.string() + ".ogg").c_str(), SFM_READ, &info);
+    ASSERT_NE(file, nullptr);
+    sf_close(file);
+    EXPECT_EQ(info.channels, tactus::AudioReader(amen).channels() + 2);
+
+    const auto refused = run("export " + amen + " -o " + (dir_ / "four.ogg").string() + " -o " +
+                             (dir_ / "four.ahap").string() + " --layout column-4");
+    EXPECT_NE(refused.exit_code, 0);
+    EXPECT_NE(refused.err.find("at most 2 haptic channels"), std::string::npos) << refused.err;
+    EXPECT_FALSE(fs::exists(dir_ / "four.bottom.ahap"));
 }
 
 }  // namespace

@@ -211,7 +211,7 @@ StudioResponse export_file(StudioSession& session, const StudioRequest& request)
     const std::string format = field(body, "format");
     if (haptic_format_of(format) != format)
         throw Refused(400, fmt::format("format: unknown export format '{}' (.ahap, .haptic, "
-                                       ".android.json, .ogg)",
+                                       ".android.json, .envelope.json, .ogg)",
                                        format));
     ExportOptions o;
     o.input = input.string();

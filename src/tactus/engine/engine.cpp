@@ -142,6 +142,7 @@ void Engine::replay_analysis(std::shared_ptr<const RecordedAnalysis> recording) 
 
 void Engine::enable_frame_queue() {
     frames_.emplace(kQueueCapacity);
+    lane_frames_.emplace(kQueueCapacity);
     if (active_) active_->set_extra_features(extra_features());
 }
 
@@ -155,6 +156,12 @@ void Engine::FrameForwarder::on_frame(const Features& features,
                                       const ControlFrame& control) noexcept {
     if (engine_.observer_) engine_.observer_->on_frame(features, control);
     if (engine_.frames_) engine_.frames_->try_enqueue({features, control});  // dropped when full
+}
+
+void Engine::FrameForwarder::on_lane_frame(int lane, const ControlFrame& control) noexcept {
+    if (engine_.observer_) engine_.observer_->on_lane_frame(lane, control);
+    if (engine_.lane_frames_)
+        engine_.lane_frames_->try_enqueue({lane, control});  // dropped when full
 }
 
 // ---- control threads ----
@@ -410,6 +417,10 @@ void Engine::set_program_source(ProgramSource source) {
 
 bool Engine::pop_frame(AnalysisFrame& frame) {
     return frames_ && frames_->try_dequeue(frame);
+}
+
+bool Engine::pop_lane_frame(LaneFrame& frame) {
+    return lane_frames_ && lane_frames_->try_dequeue(frame);
 }
 
 // ---- audio thread ----

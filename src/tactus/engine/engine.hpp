@@ -35,7 +35,8 @@
 //                    with come back to be freed here.
 //   audio thread     process(): picks changes up at block boundaries; never allocates, frees,
 //                    locks, throws or does I/O; any block size (split at max_block).
-//   one reader       pop_frame(): the analysis and vibration program of every frame.
+//   one reader       pop_frame(), pop_lane_frame(): the analysis and vibration program of every
+//                    frame, and what each lane plays of it.
 //   setup            everything else (constructor, set_actuators, set_observer,
 //                    enable_frame_queue, prepare, reset, post()), while no other thread uses it.
 // The vibration program (ControlFrame) is the seam: frames from the analysis, injected from
@@ -63,6 +64,13 @@ namespace tactus {
 // One analysis frame and the control frame mapped from it, as pop_frame() delivers them.
 struct AnalysisFrame {
     Features features;
+    ControlFrame control;
+};
+
+// One frame of a lane's vibration program (FrameObserver::on_lane_frame), as pop_lane_frame()
+// delivers them.
+struct LaneFrame {
+    int lane = 0;
     ControlFrame control;
 };
 
@@ -176,6 +184,8 @@ class Engine {
     void set_program_source(ProgramSource source);
     // One reader thread: the oldest frame not yet read, if any.
     bool pop_frame(AnalysisFrame& frame);
+    // The same reader: the oldest lane frame not yet read (enable_frame_queue()), if any.
+    bool pop_lane_frame(LaneFrame& frame);
     // The settings as last set, whole, and their version (settings_snapshot.hpp). Takes the
     // control mutex: never from the audio thread.
     SettingsSnapshot settings_snapshot() const;
@@ -194,6 +204,8 @@ class Engine {
     int rate_divisor() const { return rate_divisor_; }
     int actuators() const { return static_cast<int>(outputs_.size()); }
     double sample_rate_hz() const { return prepared_ ? spec_.sample_rate_hz : 0.0; }
+    // Setup thread: the lane of the running pipeline an actuator plays (pop_lane_frame()).
+    int lane_of(int actuator) const { return active_->lane_of(actuator); }
     // Setup thread: the running pipeline's post chain for an actuator.
     const PostChain& post(int actuator = 0) const { return active_->post(actuator); }
     // Output samples a final clip at the ceiling changed (it should not: the limiter leaves a
@@ -221,6 +233,7 @@ class Engine {
       public:
         explicit FrameForwarder(Engine& engine) : engine_(engine) {}
         void on_frame(const Features& features, const ControlFrame& control) noexcept override;
+        void on_lane_frame(int lane, const ControlFrame& control) noexcept override;
 
       private:
         Engine& engine_;
@@ -288,6 +301,7 @@ class Engine {
     moodycamel::ReaderWriterQueue<ControlFrame> injected_{kQueueCapacity};
     moodycamel::ReaderWriterQueue<Pipeline*> retired_{64};
     std::optional<moodycamel::ReaderWriterQueue<AnalysisFrame>> frames_;
+    std::optional<moodycamel::ReaderWriterQueue<LaneFrame>> lane_frames_;
 };
 
 }  // namespace tactus

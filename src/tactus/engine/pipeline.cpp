@@ -85,6 +85,7 @@ void Pipeline::prepare(const ProcessSpec& spec, const Settings& settings,
         }
         lane.chains = first_of_chain_.size() - lane.first_chain;
     }
+    lane_of_.assign(lane_of.begin(), lane_of.end());
     chains_ = std::vector<ActuatorChain>(first_of_chain_.size());
     for (size_t c = 0; c < chains_.size(); ++c) {
         const auto& profile = outputs[static_cast<size_t>(first_of_chain_[c])].profile;
@@ -247,7 +248,9 @@ void Pipeline::apply_live() noexcept {
 // A part route plays only its parts' pulses: one starts on the frame that decides its hit is one
 // of them (parts.settle_ms after the onset; at once for a hit that is no drum's) and follows the
 // frames until the next onset; other hits leave the pulse sounding as it was.
-void Pipeline::play(Lane& lane, const Features& features, const ControlFrame& program) noexcept {
+void Pipeline::play(int index, const Features& features, const ControlFrame& program,
+                    FrameObserver* observer) noexcept {
+    Lane& lane = lanes_[static_cast<size_t>(index)];
     ControlFrame control = lane.program ? program : lane.mapper.map(features);
     if (lane.route.kind == Route::Kind::parts) {
         if (features.onset) lane.own_pulse = false;
@@ -256,6 +259,7 @@ void Pipeline::play(Lane& lane, const Features& features, const ControlFrame& pr
         if (!lane.own_pulse) return;
     }
     if (source_ != ProgramSource::external) lane.voice.apply(control);
+    if (observer) observer->on_lane_frame(index, control);
 }
 
 int Pipeline::latency() const {
@@ -307,8 +311,9 @@ void Pipeline::process(const PipelineInput& in, float* const* out, int count,
                 program = program_.map(features);
                 if (observer) observer->on_frame(features, program);
             }
-            for (Lane& lane : lanes_)
-                if (lane.listening == static_cast<int>(i)) play(lane, features, program);
+            for (size_t j = 0; j < lanes_.size(); ++j)
+                if (lanes_[j].listening == static_cast<int>(i))
+                    play(static_cast<int>(j), features, program, observer);
         }
     }
     if (post_dirty_) {  // glides over an analysis frame: LiveSettings' steps join up

@@ -39,6 +39,9 @@ class FrameObserver {
     // The features on_frame() reads besides the onsets (all by default); the engine computes
     // only these and what the mapping reads.
     virtual FeatureSet reads() const noexcept { return {}; }
+    // The vibration program each lane plays (its route's: a part route only its parts' pulses),
+    // after on_frame() of the same frame; Pipeline::lane_of() tells an actuator's lane.
+    virtual void on_lane_frame(int /*lane*/, const ControlFrame& /*control*/) noexcept {}
 };
 
 // One block of input, as the pipeline reads it.
@@ -86,6 +89,8 @@ class Pipeline {
                  FrameObserver* observer) noexcept;
 
     int rate_divisor() const { return rate_divisor_; }
+    int lanes() const { return static_cast<int>(lanes_.size()); }
+    int lane_of(int actuator) const { return lane_of_[static_cast<size_t>(actuator)]; }
     FeatureSet analysed_features() const { return listenings_.front().analyzer.features(); }
     double internal_rate_hz() const { return sample_rate_hz_ / rate_divisor_; }
     double hop_samples() const {  // input samples, mean
@@ -125,7 +130,8 @@ class Pipeline {
     int take_input(const PipelineInput& in, int offset, int count) noexcept;
     const float* heard(const Listening& listening, const PipelineInput& in, int offset) const;
     Features next_features(Listening& listening) noexcept;
-    void play(Lane& lane, const Features& features, const ControlFrame& program) noexcept;
+    void play(int lane, const Features& features, const ControlFrame& program,
+              FrameObserver* observer) noexcept;
     double lane_ceiling(const Lane& lane) const {
         return chains_[lane.first_chain].post().ceiling();
     }
@@ -139,6 +145,7 @@ class Pipeline {
     Mapper program_;                     // the mix's frames, the running settings: the observer's
     std::vector<ActuatorChain> chains_;  // lane by lane, one per distinct profile
     std::vector<int> chain_of_;          // per actuator: its chain
+    std::vector<int> lane_of_;           // per actuator: its lane
     std::vector<int> first_of_chain_;    // per chain: the first actuator it feeds
     ProgramSource source_ = ProgramSource::analysis;
     FeatureSet extra_features_ = FeatureSet::none();

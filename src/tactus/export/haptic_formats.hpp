@@ -18,6 +18,11 @@
 //                  least, and an amplitude below the actuator's felt floor (felt_floor.hpp) is 0:
 //                  a phone without amplitude control plays every other amplitude at full
 //                  strength, so a tail too weak to feel would buzz.
+//   .envelope.json Android envelope effects, VibrationEffect.BasicEnvelopeBuilder (API 36):
+//                  an initial sharpness, then control points (intensity 0-1, sharpness 0-1, the
+//                  milliseconds to reach them, at least kAndroidMinStepMs each) drawn from the
+//                  felt envelope's breakpoints, the last at zero intensity as the builder
+//                  requires; the onsets beside them.
 // Values are rounded to what a device resolves (0.1 ms, 1e-3 of full scale). Intensity 1 (255) is
 // the track's full scale (normalisation.hpp), stated in each format's description.
 #pragma once
@@ -31,6 +36,7 @@ namespace tactus {
 inline constexpr double kAhapMaxEventS = 30.0;       // a continuous event's longest duration
 inline constexpr int kAhapMaxCurvePoints = 16;       // control points per ParameterCurve
 inline constexpr int kAndroidWaveformApiLevel = 26;  // VibrationEffect.createWaveform
+inline constexpr int kAndroidEnvelopeApiLevel = 36;  // VibrationEffect.BasicEnvelopeBuilder
 inline constexpr int kAndroidMaxAmplitude = 255;
 
 // Breakpoint tolerances (of full scale): the envelope is drawn within these of the felt one.
@@ -52,10 +58,12 @@ std::string ahap_text(const HapticTrack& track);
 std::string meta_haptic_text(const HapticTrack& track);
 // floor: the weakest drive felt (0 ... 1, felt_floor.hpp); amplitudes below it are written 0.
 std::string android_waveform_text(const HapticTrack& track, double floor);
+std::string android_envelope_text(const HapticTrack& track);
 // The lowest amplitude (1-255) at or above `floor`.
 int android_lowest_amplitude(double floor);
 
-// The format named by a path's ending (".ahap", ".haptic", ".android.json", ".ogg"), or empty.
+// The format named by a path's ending (".ahap", ".haptic", ".android.json", ".envelope.json",
+// ".ogg"), or empty.
 std::string haptic_format_of(const std::string& path);
 
 }  // namespace tactus

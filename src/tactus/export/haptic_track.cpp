@@ -17,6 +17,8 @@ namespace {
 
 // An onset's intensity is its pulse's felt peak within this time of it.
 constexpr double kOnsetPeakWindowS = 0.03;
+// A lane's pulse starts this long after its onset at most (a part route's, once decided).
+constexpr double kLanePulseMatchS = 0.1;
 
 // The carrier in effect at each input sample, from the ControlFrames in order.
 class CarrierTrack {
@@ -53,12 +55,24 @@ double sharpness_of(double frequency_hz) {
                       0.0, 1.0);
 }
 
-HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engine,
-                                const AlignedSink& sink, const RunCallbacks& callbacks,
-                                const FrameSink& frames, RunAnalysis analysis) {
+std::vector<HapticTrack> render_haptic_tracks(const std::filesystem::path& input, Engine& engine,
+                                              const AlignedSink& sink,
+                                              const RunCallbacks& callbacks,
+                                              const FrameSink& frames, RunAnalysis analysis) {
     engine.enable_frame_queue();
-    std::optional<FeltEnvelope> envelope;
-    CarrierTrack carrier;
+    const std::vector<Engine::Routing> routes = engine.routes();
+    const size_t outputs = routes.size();
+    // An output on `all` without an overlay plays the program as it is; the others their lane's.
+    std::vector<bool> plays_program(outputs);
+    for (size_t k = 0; k < outputs; ++k)
+        plays_program[k] = routes[k].route.kind == Route::Kind::all && routes[k].overlay.empty();
+    std::vector<FeltEnvelope> envelopes;  // per output
+    CarrierTrack carrier;                 // the program's
+    std::vector<CarrierTrack> lane_carriers;
+    std::vector<double> lane_hz;
+    std::vector<int> lane_of(outputs);
+    // Each pulse a lane starts: (sample, carrier).
+    std::vector<std::vector<std::pair<int64_t, double>>> lane_pulses;
     // Each onset with the carrier when its part was decided (or, undecided, on its own frame).
     std::vector<std::pair<DecidedOnset, double>> onsets;
     OnsetDecisions decisions;
@@ -88,6 +102,12 @@ HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engi
             });
             if (frame.features.onset) onset_carrier_hz = frame.control.frequency_hz;
         }
+        for (LaneFrame frame; engine.pop_lane_frame(frame);) {
+            const auto lane = static_cast<size_t>(frame.lane);
+            lane_carriers[lane].add(frame.control.sample, frame.control.frequency_hz);
+            if (frame.control.trigger)
+                lane_pulses[lane].emplace_back(frame.control.sample, frame.control.frequency_hz);
+        }
     };
     // Vibration sample k (after the latency) lines up with input sample k.
     const auto on_output = [&](const float* const* vibration, int frames) {
@@ -97,12 +117,17 @@ HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engi
         skipped += skip;
         const int count = frames - skip;
         if (count <= 0) return;
-        // The carrier changes at hop boundaries at most; the envelope takes it per hop.
+        // The carrier changes at hop boundaries at most; the envelopes take it per hop.
         for (int done = 0; done < count;) {
             const int64_t at = aligned + done;
             const int chunk =
                 std::min(count - done, std::max(1, static_cast<int>(engine.hop_samples())));
-            envelope->write(vibration[0] + skip + done, chunk, carrier.at(at));
+            const double program_hz = carrier.at(at);
+            for (size_t l = 0; l < lane_carriers.size(); ++l) lane_hz[l] = lane_carriers[l].at(at);
+            for (size_t k = 0; k < outputs; ++k)
+                envelopes[k].write(
+                    vibration[k] + skip + done, chunk,
+                    plays_program[k] ? program_hz : lane_hz[static_cast<size_t>(lane_of[k])]);
             done += chunk;
         }
         if (sink) {
@@ -115,7 +140,15 @@ HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engi
     };
     RunCallbacks run = callbacks;
     run.on_start = [&](double sample_rate_hz, int channels) {
-        envelope.emplace(sample_rate_hz);
+        envelopes.assign(outputs, FeltEnvelope(sample_rate_hz));
+        int lanes = 0;
+        for (size_t k = 0; k < outputs; ++k) {
+            lane_of[k] = engine.lane_of(static_cast<int>(k));
+            lanes = std::max(lanes, lane_of[k] + 1);
+        }
+        lane_carriers.assign(static_cast<size_t>(lanes), {});
+        lane_hz.assign(static_cast<size_t>(lanes), 0.0);
+        lane_pulses.assign(static_cast<size_t>(lanes), {});
         audio_channels = channels;
         latency = engine.latency();
         audio_block.assign(audio_channels, {});
@@ -132,30 +165,55 @@ HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engi
     decisions.finish(
         [&](const DecidedOnset& onset) { onsets.emplace_back(onset, onset_carrier_hz); });
 
-    HapticTrack track;
-    const std::vector<double> felt = envelope->felt();
-    track.felt_full_scale = felt.empty() ? 0.0 : *std::max_element(felt.begin(), felt.end());
-    track.intensity.resize(felt.size());
-    track.sharpness.resize(felt.size());
-    for (size_t i = 0; i < felt.size(); ++i) {
-        track.intensity[i] = track.felt_full_scale > 0 ? felt[i] / track.felt_full_scale : 0.0;
-        track.sharpness[i] = sharpness_of(envelope->carrier_hz()[i]);
+    std::vector<HapticTrack> tracks(outputs);
+    for (size_t k = 0; k < outputs; ++k) {
+        HapticTrack& track = tracks[k];
+        const std::vector<double> felt = envelopes[k].felt();
+        track.felt_full_scale = felt.empty() ? 0.0 : *std::max_element(felt.begin(), felt.end());
+        track.intensity.resize(felt.size());
+        track.sharpness.resize(felt.size());
+        for (size_t i = 0; i < felt.size(); ++i) {
+            track.intensity[i] = track.felt_full_scale > 0 ? felt[i] / track.felt_full_scale : 0.0;
+            track.sharpness[i] = sharpness_of(envelopes[k].carrier_hz()[i]);
+        }
+        // Its onsets: the mix's that its route plays (each with the carrier of the pulse its lane
+        // started for it, when there is one); a band's or a channel's own, its lane's pulses.
+        const Route& route = routes[k].route;
+        const auto& pulses = lane_pulses[static_cast<size_t>(lane_of[k])];
+        const auto add_onset = [&](int64_t sample, double frequency_hz, DrumPart part,
+                                   double strength_db) {
+            const double time_s = static_cast<double>(sample) / summary.sample_rate_hz;
+            const auto first = static_cast<size_t>(std::max(0.0, time_s / HapticTrack::kStepS));
+            const size_t last =
+                std::min(track.intensity.size(),
+                         first + static_cast<size_t>(kOnsetPeakWindowS / HapticTrack::kStepS));
+            double peak = 0;
+            for (size_t i = first; i < last; ++i) peak = std::max(peak, track.intensity[i]);
+            track.onsets.push_back({.time_s = time_s,
+                                    .intensity = peak,
+                                    .sharpness = sharpness_of(frequency_hz),
+                                    .part = part,
+                                    .strength_db = strength_db});
+        };
+        if (route.own_analysis()) {
+            for (const auto& [sample, frequency_hz] : pulses)
+                add_onset(sample, frequency_hz, DrumPart::other, HapticOnset{}.strength_db);
+            continue;
+        }
+        for (const auto& [onset, frequency_hz] : onsets) {
+            if (!route.plays(onset.part)) continue;
+            double pulse_hz = frequency_hz;
+            if (!plays_program[k]) {  // the lane's pulse for it, started at or after it
+                const auto pulse = std::lower_bound(pulses.begin(), pulses.end(),
+                                                    std::pair{onset.onset_sample, 0.0});
+                if (pulse != pulses.end() &&
+                    pulse->first - onset.onset_sample < kLanePulseMatchS * summary.sample_rate_hz)
+                    pulse_hz = pulse->second;
+            }
+            add_onset(onset.onset_sample, pulse_hz, onset.part, onset.strength_db);
+        }
     }
-    for (const auto& [onset, frequency_hz] : onsets) {
-        const double time_s = static_cast<double>(onset.onset_sample) / summary.sample_rate_hz;
-        const auto first = static_cast<size_t>(std::max(0.0, time_s / HapticTrack::kStepS));
-        const size_t last =
-            std::min(track.intensity.size(),
-                     first + static_cast<size_t>(kOnsetPeakWindowS / HapticTrack::kStepS));
-        double peak = 0;
-        for (size_t i = first; i < last; ++i) peak = std::max(peak, track.intensity[i]);
-        track.onsets.push_back({.time_s = time_s,
-                                .intensity = peak,
-                                .sharpness = sharpness_of(frequency_hz),
-                                .part = onset.part,
-                                .strength_db = onset.strength_db});
-    }
-    return track;
+    return tracks;
 }
 
 std::vector<Breakpoint> simplify(const std::vector<double>& values, double step_s,

@@ -55,14 +55,17 @@ using AlignedSink = std::function<void(const float* const* audio, int audio_chan
 // Every analysis frame (features and vibration program), as the engine's frame queue gives it.
 using FrameSink = std::function<void(const AnalysisFrame& frame)>;
 
-// Runs `engine` (actuators set) over `input` and its tail and returns the track; `sink`, if
-// given, receives the sound and the vibration lined up, block by block, `frames` every
-// analysis frame, and callbacks.on_output each block as the engine gives it (the latency
-// included), after that block's frames. `analysis`: as run_file's.
-HapticTrack render_haptic_track(const std::filesystem::path& input, Engine& engine,
-                                const AlignedSink& sink = {}, const RunCallbacks& callbacks = {},
-                                const FrameSink& frames = {},
-                                RunAnalysis analysis = RunAnalysis::engine);
+// Runs `engine` (actuators set) over `input` and its tail and returns one track per actuator
+// output (each its own felt envelope and full scale; its onsets those of the mix its route plays,
+// or for a band or channel route its lane's own pulses); `sink`, if given, receives the sound and
+// the vibration lined up, block by block, `frames` every analysis frame, and callbacks.on_output
+// each block as the engine gives it (the latency included), after that block's frames.
+// `analysis`: as run_file's.
+std::vector<HapticTrack> render_haptic_tracks(const std::filesystem::path& input, Engine& engine,
+                                              const AlignedSink& sink = {},
+                                              const RunCallbacks& callbacks = {},
+                                              const FrameSink& frames = {},
+                                              RunAnalysis analysis = RunAnalysis::engine);
 
 // A piecewise-linear approximation of values[i] at time i * step_s (Ramer-Douglas-Peucker):
 // the fewest breakpoints that stay within `tolerance` of every value; first and last kept.

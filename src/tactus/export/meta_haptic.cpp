@@ -74,7 +74,7 @@ std::string haptic_format_of(const std::string& path) {
                        [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
         return tail == end;
     };
-    for (const char* format : {".ahap", ".haptic", ".android.json", ".ogg"})
+    for (const char* format : {".ahap", ".haptic", ".android.json", ".envelope.json", ".ogg"})
         if (ends_with(format)) return format;
     return {};
 }
