@@ -28,15 +28,32 @@ music.truth's: its distinct hit times, each time's part the first of kick, snare
   given: its median own-part peak is then no pulse's but that decay's, and the others' dB below
   it mean nothing.
 - A low band under a voice: every bed has a voice (espeak-ng phrases on bar starts), but the bed
-  stem (NAME-bed+0dB.bed.wav) holds it with the bass, chords and melody and the corpus keeps no
-  voice stem, so the band route is measured on what it plays of the bed as a whole. One output,
-  route `band:20-120` (layouts/seat.toml's band), rendered on the mix, on the bed stem alone and
-  on the drum stem alone (NAME-bed+0dB.drums.wav; the stems as they went into the mix). Felt
-  energy: the sum of the felt signal squared. Per song: the share of the mix render's felt energy
-  inside [hit, hit + 150 ms] of its kick hits (with the share of the song's time those windows
-  cover, what an output playing everything evenly would give: its median), and the bed stem
-  render's felt energy re the drum stem render's (dB; a silent bed render: -inf). Median over
-  songs and the worst song.
+  stem (NAME-bed+0dB.bed.wav) holds it with the bass, chords and melody. One output, route
+  `band:20-120` (layouts/seat.toml's band), rendered on the mix, on the bed stem alone and on the
+  drum stem alone (NAME-bed+0dB.drums.wav; the stems as they went into the mix). Felt energy: the
+  sum of the felt signal squared. Per song: the share of the mix render's felt energy inside
+  [hit, hit + 150 ms] of its kick hits (with the share of the song's time those windows cover,
+  what an output playing everything evenly would give: its median), and the bed stem render's
+  felt energy re the drum stem render's (dB; a silent bed render: -inf). Median over songs and
+  the worst song.
+  The voice alone: the corpus keeps no voice stem, so each song's voice is rebuilt from its song
+  spec, music_corpus.songs_of(part, kits_of(part, gm_samples)) (the held-out part's GM kit
+  renders read from the cache beside the corpus, WORK/gm-samples or WORK/../gm-samples; none
+  rendered: without a complete cache the part is "not rebuilt"), by music_corpus.voice_part, and
+  checked against the bed stem: the song's bass, chords and melody are rebuilt too
+  (music_corpus.render_parts, in the corpus's fluidsynth slots) and the whole bed
+  (music_corpus.bed_mix) fitted to the bed stem by least squares (one gain: the bed's level re
+  the drums and the mix's normalisation); the largest difference left, dB re the stem's peak,
+  is reported (its worst song per part; about -124 dB is the stem's 24-bit rounding) and a part
+  whose worst song is above -90 dB is "not rebuilt". The voice as it went into the mix is its
+  bed_mix term (-2 dB re RMS 1) times that gain, written as a float WAV at the song's rate (dry:
+  a reverb or compand song's mix has the bus processing, its voice alone not), and rendered with
+  one output, route `band:20-120`, and with one output, route `all`. Per part: the band render's
+  felt energy on the voice alone re the band render's on the mix (dB; -inf when the voice's band
+  output is exactly silent, all zeros), median over songs and the worst (highest) song, with the
+  share of songs whose voice band output is exactly silent; and the `all` render's felt energy
+  on the voice alone re the `all` render's on the mix (dB), its median: the voice is felt where
+  it is routed.
 - Pan: each song's drums alone (NAME-alone.wav) made stereo, hard left (right channel all zeros)
   and panned 0.8/0.2 (left 0.8 x, right 0.2 x: 12.0 dB apart), rendered with two outputs, route
   `channel:1` and `channel:2` (layouts/wrists.toml's routes). Left re right felt energy (dB):
@@ -46,6 +63,7 @@ import argparse
 import concurrent.futures
 import json
 import pathlib
+import subprocess
 import tempfile
 
 import numpy as np
@@ -53,7 +71,9 @@ import scipy.signal
 import soundfile
 
 import felt
+import gm_kits
 import music
+import music_corpus
 from music_corpus import level_name
 from shared import read_hits, read_mono, run
 
@@ -63,7 +83,8 @@ BELOW_DB = 10.0
 KICK_WINDOW_S = 0.15  # the band route's felt energy after a kick hit, felt.PULSE_WINDOW_S
 BED_DB = 0  # the mixes measured: the bed at 0 dB re the drums
 PANS = {"hard left": (1.0, 0.0), "0.8/0.2": (0.8, 0.2)}  # (left, right) gains
-LAYOUTS = {"parts": ("kick", "snare"), "band": ("band:20-120",),
+VOICE_FIT_DB = -90.0  # the rebuilt bed, fitted to the bed stem, differs from it at most this much
+LAYOUTS = {"parts": ("kick", "snare"), "band": ("band:20-120",), "all": ("all",),
            "stereo": ("channel:1", "channel:2")}
 OTHER = {"kick": "snare", "snare": "kick"}
 
@@ -130,7 +151,8 @@ def part_outputs(tactus, directory, name, layouts, renders, preset):
 
 def low_band(tactus, directory, name, layouts, renders, preset):
     """(share of the band render's felt energy on the mix after kick hits, the share of time those
-    windows cover, bed stem re drum stem felt energy dB)."""
+    windows cover, bed stem re drum stem felt energy dB, the band render's felt energy on the
+    mix)."""
     (mix,), rate = felt_outputs(tactus, directory / f"{name}.wav", layouts["band"], renders, preset)
     bed, drums = (felt_outputs(tactus, directory / f"{name}.{stem}.wav", layouts["band"], renders,
                                preset)[0][0] for stem in ("bed", "drums"))
@@ -139,8 +161,61 @@ def low_band(tactus, directory, name, layouts, renders, preset):
         if instrument == "kick":
             start = int(round(t * rate))
             inside[start:start + int(KICK_WINDOW_S * rate)] = True
-    return energy(mix[inside]) / energy(mix), float(inside.mean()), ratio_db(energy(bed),
-                                                                              energy(drums))
+    return (energy(mix[inside]) / energy(mix), float(inside.mean()),
+            ratio_db(energy(bed), energy(drums)), energy(mix))
+
+
+def gm_samples_of(work):
+    """The folder beside the corpus holding every GM kit render (eval/gm_kits.py) the held-out
+    part's kits are, or None (none is rendered here)."""
+    names = [f"{kit}_{i}.flac" for kit in gm_kits.KITS for i in gm_kits.INSTRUMENTS]
+    for folder in (work / "gm-samples", work.parent / "gm-samples"):
+        if all((folder / n).exists() for n in names):
+            return folder
+    return None
+
+
+def rebuilt_voices(part, directory, gm_samples, tmp):
+    """{song: (its voice as it went into its mix with the bed at BED_DB, the rebuilt bed's largest
+    difference from the bed stem dB re the stem's peak)} of the part's songs, or why not rebuilt."""
+    if gm_samples is None and part not in ("tuning", "recorded-tuning", "recorded-held-out"):
+        return "not rebuilt (no cached GM kit renders)"
+    songs = [s for s in music_corpus.songs_of(part, music_corpus.kits_of(part, gm_samples))
+             if s["style"] != "gain"]  # the gain beds follow the songs in every fluidsynth file
+    work = tmp / f"voices-{part}"
+    work.mkdir()
+    groups, others = {}, {}
+    for song in songs:
+        groups.setdefault((song["font"], song["rate"]), []).append(song)
+    for (font, rate), group in groups.items():
+        others.update(music_corpus.render_parts(group, font, rate, work))
+    out = {}
+    for song in songs:
+        voice = music_corpus.voice_part(song, work)
+        bed = music_corpus.bed_mix(dict(others[song["name"]], voice=voice))
+        stem, rate = read_mono(directory / f"{song['name']}-{level_name(BED_DB)}.bed.wav")
+        if rate != song["rate"] or len(stem) != len(bed):
+            return f"not rebuilt ({song['name']}: {len(bed)} samples at {song['rate']} Hz)"
+        gain = np.dot(stem, bed) / np.dot(bed, bed)
+        out[song["name"]] = (gain * music_corpus.bed_mix({"voice": voice}),
+                             ratio_db(np.max(np.abs(stem - gain * bed)), np.max(np.abs(stem)),
+                                      power=False))
+    worst = max(d for _, d in out.values())
+    return out if worst <= VOICE_FIT_DB else f"not rebuilt (rebuilt bed {worst:.1f} dB off)"
+
+
+def voice_alone(tactus, entry, voice, mix_band, directory, layouts, renders, preset):
+    """The song's voice alone: {band: its band render's felt energy re the mix's dB, silent:
+    whether that render is all zeros, all: its `all` render's felt energy re the mix's dB,
+    fit: the rebuilt bed's difference from the bed stem dB}."""
+    wav = renders / f"{entry['song']}-voice.wav"
+    soundfile.write(wav, voice[0], entry["rate"], subtype="FLOAT")
+    (band,), _ = felt_outputs(tactus, wav, layouts["band"], renders, preset)
+    (every,), _ = felt_outputs(tactus, wav, layouts["all"], renders, preset)
+    (mix,), _ = felt_outputs(tactus, directory / f"{entry['name']}.wav", layouts["all"], renders,
+                             preset)
+    return {"band": ratio_db(energy(band), mix_band), "silent": energy(band) == 0,
+            "all": ratio_db(energy(every), energy(mix)), "fit": voice[1]}
 
 
 def pan(tactus, directory, song, layouts, renders, preset):
@@ -155,11 +230,15 @@ def pan(tactus, directory, song, layouts, renders, preset):
     return out
 
 
-def analyse_song(tactus, directory, entry, layouts, renders, preset):
+def analyse_song(tactus, directory, entry, voice, layouts, renders, preset):
+    """The song's figures; `voice`: (its rebuilt voice, the fit) or why it is not rebuilt."""
     name = entry["name"]
+    band = low_band(tactus, directory, name, layouts, renders, preset)
     return {"where": f"{entry['style']} {entry['kit']}",
             "parts": part_outputs(tactus, directory, name, layouts, renders, preset),
-            "band": low_band(tactus, directory, name, layouts, renders, preset),
+            "band": band,
+            "voice": voice if isinstance(voice, str) else voice_alone(
+                tactus, entry, voice, band[3], directory, layouts, renders, preset),
             "pan": pan(tactus, directory, entry["song"], layouts, renders, preset)}
 
 
@@ -169,14 +248,23 @@ def measure(build_dir, work, preset, jobs):
     with tempfile.TemporaryDirectory(prefix="tactus-routes-") as tmp:
         renders = pathlib.Path(tmp)
         layouts = write_layouts(renders)
+        gm_samples = gm_samples_of(pathlib.Path(work))
         with concurrent.futures.ThreadPoolExecutor(jobs) as pool:
+            voices = {part: pool.submit(rebuilt_voices, part, pathlib.Path(work) / part,
+                                        gm_samples, renders) for part in music.PARTS}
             futures = {}
             for part in music.PARTS:
                 directory = pathlib.Path(work) / part
                 manifest = json.loads((directory / "manifest.json").read_text())
-                futures[part] = [pool.submit(analyse_song, tactus, directory, e, layouts, renders,
-                                             preset)
-                                 for e in manifest["mixes"] if e["bed_db"] == BED_DB]
+                try:
+                    rebuilt = voices[part].result()
+                except (OSError, KeyError, subprocess.CalledProcessError) as error:
+                    rebuilt = f"not rebuilt ({type(error).__name__})"
+                futures[part] = [pool.submit(
+                    analyse_song, tactus, directory, e,
+                    rebuilt if isinstance(rebuilt, str) else rebuilt[e["song"]],
+                    layouts, renders, preset)
+                    for e in manifest["mixes"] if e["bed_db"] == BED_DB]
             return {part: [f.result() for f in songs] for part, songs in futures.items()}
 
 
@@ -205,6 +293,16 @@ def spread_cell(songs, value, highest_worst=False, digits=1):
     worst = max(values) if highest_worst else min(values)
     where = "every song" if len({v for v, _ in values}) == 1 else worst[1]
     return f"{np.median([v for v, _ in values]):.{digits}f} / {worst[0]:.{digits}f} ({where})"
+
+
+def voice_cell(songs, cell):
+    """cell(songs) when the part's voices were rebuilt, else why not."""
+    return songs[0]["voice"] if isinstance(songs[0]["voice"], str) else cell(songs)
+
+
+def silent_cell(songs):
+    silent = [s["voice"]["silent"] for s in songs]
+    return f"{np.mean(silent):.3f} ({sum(silent)} of {len(silent)})"
 
 
 def report(result):
@@ -244,17 +342,32 @@ def report(result):
          (f"snare output: share of those kick hits {BELOW_DB:.0f} dB or more below",
           lambda p: below_cells(p, "snare")[1])])
     lines += ["## A low band route under a voice", "",
-              "One output, route `band:20-120`. The corpus keeps no voice stem: its bed stem "
-              "holds the voice with bass, chords and melody, so this is the band route on the "
-              "bed as a whole. Felt energy: the felt signal squared, summed. Median over songs / "
-              "the worst song.", ""]
+              "One output, route `band:20-120`. The bed stem holds the voice with bass, chords "
+              "and melody. The corpus keeps no voice stem: each song's voice is rebuilt from its "
+              "song spec (`music_corpus.voice_part`) and checked by rebuilding the whole bed and "
+              "fitting it (one gain) to the bed stem; the voice alone at its level in the mix "
+              "(without the mix's reverb or compand) is rendered with one output, route "
+              "`band:20-120`, and with one output, route `all`, each against the same route on "
+              "the mix (-inf: the voice's band output exactly silent). Felt energy: the felt "
+              "signal squared, summed. Median over songs / the worst song.", ""]
     lines += table(
         [(f"the mix: felt energy within {1000 * KICK_WINDOW_S:.0f} ms after kick hits, share",
           lambda p: spread_cell(p, lambda s: s["band"][0], digits=3)),
          ("the mix: the share of the time those windows cover",
           lambda p: f"{np.median([s['band'][1] for s in p]):.3f} (median)"),
          ("the bed stem alone re the drum stem alone, felt energy dB",
-          lambda p: spread_cell(p, lambda s: s["band"][2], highest_worst=True))])
+          lambda p: spread_cell(p, lambda s: s["band"][2], highest_worst=True)),
+         ("the rebuilt bed fitted to the bed stem: largest difference, dB re the stem's peak "
+          "(worst song)",
+          lambda p: voice_cell(p, lambda p: f"{max(s['voice']['fit'] for s in p):.1f}")),
+         ("the voice alone re the mix, band route felt energy dB (worst: highest)",
+          lambda p: voice_cell(p, lambda p: spread_cell(p, lambda s: s["voice"]["band"],
+                                                        highest_worst=True))),
+         ("songs whose band output on the voice alone is exactly silent, share",
+          lambda p: voice_cell(p, silent_cell)),
+         ("the voice alone re the mix, `all` route felt energy dB",
+          lambda p: voice_cell(p, lambda p: f"{np.median([s['voice']['all'] for s in p]):.1f} "
+                                            "(median)"))])
     lines += ["## Pan", "",
               "The drums alone made stereo, two outputs, route `channel:1` and `channel:2`: "
               "left re right felt energy, dB (inf: the right output all zeros). Median over "
