@@ -1,6 +1,7 @@
 // The channels of a layout's file or device, block by block (io/layout_file.hpp): each output's
-// vibration on its channel, the sound on the sound channels (the input's i-th channel on the
-// i-th, a mono input on each), silence on the others.
+// vibration on its channel, the sound on the sound channels (the input's channels in turn, again
+// from the first when there are more sound channels, as tactus live plays them), silence on the
+// others.
 #pragma once
 
 #include <algorithm>
@@ -21,13 +22,8 @@ class LayoutFrames {
     // The sound of the next block (input_channels channels).
     void set_sound(const float* const* input, int input_channels, int frames) {
         const auto& sound = layout_.sound_channels;
-        for (size_t i = 0; i < sound.size(); ++i) {
-            const int from = input_channels == 1 ? 0 : static_cast<int>(i);
-            if (from < input_channels)
-                std::copy_n(input[from], frames, block_[sound[i]]);
-            else
-                std::fill_n(block_[sound[i]], frames, 0.0f);
-        }
+        for (size_t i = 0; i < sound.size(); ++i)
+            std::copy_n(input[static_cast<int>(i) % input_channels], frames, block_[sound[i]]);
     }
     // The block's channels, with each output's vibration in place.
     const float* const* compose(const float* const* vibration, int frames) {
