@@ -50,10 +50,10 @@ music.truth's: its distinct hit times, each time's part the first of kick, snare
   a reverb or compand song's mix has the bus processing, its voice alone not), and rendered with
   one output, route `band:20-120`, and with one output, route `all`. Per part: the band render's
   felt energy on the voice alone re the band render's on the mix (dB; -inf when the voice's band
-  output is exactly silent, all zeros), median over songs and the worst (highest) song, with the
-  share of songs whose voice band output is exactly silent; and the `all` render's felt energy
-  on the voice alone re the `all` render's on the mix (dB), its median: the voice is felt where
-  it is routed.
+  output is exactly silent, its felt signal all zeros), median over songs and the worst
+  (highest) song, with the share of songs whose voice band output is exactly silent; and the
+  `all` render's felt energy on the voice alone re the `all` render's on the mix (dB), its
+  median: the voice is felt where it is routed.
 - Pan: each song's drums alone (NAME-alone.wav) made stereo, hard left (right channel all zeros)
   and panned 0.8/0.2 (left 0.8 x, right 0.2 x: 12.0 dB apart), rendered with two outputs, route
   `channel:1` and `channel:2` (layouts/wrists.toml's routes). Left re right felt energy (dB):
@@ -206,7 +206,7 @@ def rebuilt_voices(part, directory, gm_samples, tmp):
 
 def voice_alone(tactus, entry, voice, mix_band, directory, layouts, renders, preset):
     """The song's voice alone: {band: its band render's felt energy re the mix's dB, silent:
-    whether that render is all zeros, all: its `all` render's felt energy re the mix's dB,
+    whether its felt signal is all zeros, all: its `all` render's felt energy re the mix's dB,
     fit: the rebuilt bed's difference from the bed stem dB}."""
     wav = renders / f"{entry['song']}-voice.wav"
     soundfile.write(wav, voice[0], entry["rate"], subtype="FLOAT")

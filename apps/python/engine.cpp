@@ -34,19 +34,16 @@ class PyEngine {
     // `channels`: the input's channel count, or None: the first block's (1 until then).
     PyEngine(double sample_rate_hz, const std::string& preset, const py::object& actuator_name,
              const py::object& channels, int actuators, bool keep_frames,
-             const py::object& settings_dict, const py::kwargs& params)
+             const py::object& settings_dict, const py::object& layout, const py::kwargs& params)
         : channels_(channels.is_none() ? 1 : channels.cast<int>()),
           channels_given_(!channels.is_none()),
-          actuators_(actuators),
           keep_frames_(keep_frames) {
         const Settings settings = resolve_settings(preset, settings_dict, params);
-        const auto actuator = resolve_actuator_for(actuator_name, settings);
-        if (actuators < 1 || actuators > Engine::kMaxActuators)
-            throw py::value_error(fmt::format("actuators = {} is out of range: allowed 1 to {}",
-                                              actuators, Engine::kMaxActuators));
+        const std::vector<ActuatorOutput> outputs =
+            resolve_outputs(layout, actuator_name, actuators, settings);
+        actuators_ = static_cast<int>(outputs.size());
         engine_ = std::make_unique<Engine>(settings);
-        engine_->set_actuators(std::vector<ActuatorOutput>(static_cast<size_t>(actuators),
-                                                           ActuatorOutput{.profile = actuator}));
+        engine_->set_actuators(outputs);
         if (keep_frames_) engine_->enable_frame_queue();
         prepare(sample_rate_hz, channels_);
     }
@@ -229,7 +226,11 @@ void add_engine(py::module_& m) {
                                 R"(The tactus engine, block by block, as a host runs it.
 
 Engine(sample_rate, preset="music", actuator=None, channels=None, actuators=1,
-       keep_frames=False, settings=None, **params)
+       keep_frames=False, settings=None, layout=None, **params)
+
+layout: a layout's name or .toml path (tactus.layouts folder; --layout): one output per layout
+output, each playing its route (all, kick, band:20-120, channel:1, ...) through its actuator, in
+the layout's order; then actuator and actuators are left out.
 
 channels: the input's channel count; None takes the first block's (a stereo file from
 tactus.read gives 2); every later block must have as many.
@@ -242,10 +243,10 @@ structural ones build a new pipeline and crossfade to it). Every parameter of th
 attribute named by its key with dots as underscores (engine.envelope_decay_ms).)");
     engine
         .def(py::init<double, const std::string&, const py::object&, const py::object&, int, bool,
-                      const py::object&, const py::kwargs&>(),
+                      const py::object&, const py::object&, const py::kwargs&>(),
              arg("sample_rate"), arg("preset") = kDefaultPreset, arg("actuator") = py::none(),
              arg("channels") = py::none(), arg("actuators") = 1, arg("keep_frames") = false,
-             arg("settings") = py::none())
+             arg("settings") = py::none(), arg("layout") = py::none())
         .def("process", &PyEngine::process, arg("block"),
              "The vibration for the next block: float32 (frames, actuators).")
         .def("set", &PyEngine::set, arg("key"), arg("value"),

@@ -80,17 +80,15 @@ py::dict columns(const Names& names, const std::vector<Row>& rows) {
 
 py::object render(const py::handle& x, double sample_rate_hz, const std::string& preset,
                   const py::object& actuator_name, int actuators, const py::object& settings_dict,
-                  const py::kwargs& params) {
+                  const py::object& layout, const py::kwargs& params) {
     const Settings settings = resolve_settings(preset, settings_dict, params);
-    const auto actuator = resolve_actuator_for(actuator_name, settings);
+    const std::vector<ActuatorOutput> outputs =
+        resolve_outputs(layout, actuator_name, actuators, settings);
+    actuators = static_cast<int>(outputs.size());
     const AudioView in = audio_view(x);
     const ProcessSpec spec = spec_for(sample_rate_hz, in);
-    if (actuators < 1 || actuators > Engine::kMaxActuators)
-        throw py::value_error(fmt::format("actuators = {} is out of range: allowed 1 to {}",
-                                          actuators, Engine::kMaxActuators));
     Engine engine(settings);
-    engine.set_actuators(std::vector<ActuatorOutput>(static_cast<size_t>(actuators),
-                                                     ActuatorOutput{.profile = actuator}));
+    engine.set_actuators(outputs);
     prepare(engine, spec);
     // As `tactus render`, the vibration rings out after the input: its tail (at most
     // kMaxTailS) follows it in the same array, returned as long as it came out; the analysis
@@ -291,6 +289,7 @@ void add_offline(py::module_& m) {
     using py::arg;
     m.def("render", &render, arg("x"), arg("sample_rate"), arg("preset") = kDefaultPreset,
           arg("actuator") = py::none(), arg("actuators") = 1, arg("settings") = py::none(),
+          arg("layout") = py::none(),
           R"(The vibration for audio x, as `tactus render` writes it (bit for bit).
 
 x: float array, (frames,) or (frames, channels), full scale 1 (any channel count: analysed as
@@ -300,6 +299,9 @@ preset: a preset name (tactus.presets()) or a .toml path (--preset).
 actuator: None, an actuator profile name or a .toml path (--actuator); what the settings ask that
    it cannot do is reported as warnings.
 actuators: identical actuator channels (--channels).
+layout: a layout's name or .toml path (--layout): one output per layout output, each its route
+   through its actuator, in the layout's order (the vibration only: no sound channels); then
+   actuator and actuators are left out.
 settings: {"envelope.decay_ms": 120, ...}, and/or keyword arguments by Python name
    (envelope_decay_ms=120): --set. Choices take their names ("log", "on").
 Returns float32 (frames, actuators). Raises ValueError with the command line's messages.)");

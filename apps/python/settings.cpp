@@ -5,7 +5,9 @@
 #include <stdexcept>
 
 #include "tactus/actuator/warnings.hpp"
+#include "tactus/engine/engine.hpp"
 #include "tactus/io/actuator_file.hpp"
+#include "tactus/io/layout_file.hpp"
 #include "tactus/io/preset.hpp"
 
 namespace py = pybind11;
@@ -73,6 +75,34 @@ std::optional<ActuatorProfile> resolve_actuator_for(const py::object& name_or_pa
     for (const auto& warning : actuator_warnings(actuator, settings))
         warn(warning, py::arg("stacklevel") = 2);
     return actuator;
+}
+
+std::vector<ActuatorOutput> resolve_outputs(const py::object& layout, const py::object& actuator,
+                                            int actuators, const Settings& settings) {
+    if (layout.is_none()) {
+        if (actuators < 1 || actuators > Engine::kMaxActuators)
+            throw py::value_error(fmt::format("actuators = {} is out of range: allowed 1 to {}",
+                                              actuators, Engine::kMaxActuators));
+        return std::vector<ActuatorOutput>(
+            static_cast<size_t>(actuators),
+            ActuatorOutput{.profile = resolve_actuator_for(actuator, settings)});
+    }
+    if (!actuator.is_none() || actuators != 1)
+        throw py::value_error(
+            "layout= gives the outputs and their actuators: leave out "
+            "actuator= and actuators=");
+    Layout loaded;
+    try {
+        loaded = load_layout(resolve_layout(py::str(layout).cast<std::string>()));
+    } catch (const std::exception& e) {
+        throw py::value_error(e.what());
+    }
+    std::vector<ActuatorOutput> outputs = loaded.actuator_outputs();
+    for (size_t k = 0; k < outputs.size(); ++k)
+        if (!loaded.outputs[k].actuator.empty())
+            outputs[k].profile =
+                resolve_actuator_for(py::str(loaded.outputs[k].actuator), settings);
+    return outputs;
 }
 
 }  // namespace tactus::python

@@ -8,8 +8,10 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "tactus/actuator/profile.hpp"
+#include "tactus/engine/output_trim.hpp"
 #include "tactus/params/params.hpp"
 
 namespace tactus::python {
@@ -27,5 +29,11 @@ Settings resolve_settings(const std::string& preset, const pybind11::object& set
 // warnings, one each, as the command line prints them.
 std::optional<ActuatorProfile> resolve_actuator_for(const pybind11::object& name_or_path,
                                                     const Settings& settings);
+// The engine's outputs: `layout`'s (a name or a .toml path: io/layout_file.hpp; each output with
+// its route, overlay, trim, delay and profile), else `actuators` outputs through `actuator`.
+// ValueError naming what is wrong (a layout given with an actuator or actuators too).
+std::vector<ActuatorOutput> resolve_outputs(const pybind11::object& layout,
+                                            const pybind11::object& actuator, int actuators,
+                                            const Settings& settings);
 
 }  // namespace tactus::python

@@ -53,6 +53,30 @@ def test_render_equals_the_command_line_on_a_stereo_48k_file(cli, stereo_48k, tm
     assert not np.array_equal(tactus.render(x[:, 0], rate), expected)
 
 
+def test_render_with_a_layout_equals_the_command_lines_outputs(cli, stereo_48k, tmp_path):
+    """layout=: each output its route, as `tactus render --layout` writes the outputs' channels
+    (the file has the sound too: its outputs' channels are compared)."""
+    x, rate = tactus.read(stereo_48k)
+    layout = tmp_path / "sides.toml"
+    layout.write_text('[[output]]\nroute = "channel:1"\n[[output]]\nroute = "channel:2"\n'
+                      '[[output]]\nroute = "kick+snare"\nactuator = "voice-coil"\n'
+                      '[[output]]\nroute = "band:20-120"\n[output.set]\n'
+                      'mapping.frequency.out_max = 80\n')
+    y = tactus.render(x, rate, layout=str(layout))
+    run(cli, "render", stereo_48k, "-o", tmp_path / "cli.wav", "--layout", layout)
+    expected, _ = read_wav(tmp_path / "cli.wav")
+    assert y.shape == expected.shape and y.shape[1] == 4
+    assert np.array_equal(y, expected)
+    assert not np.array_equal(y[:, 0], y[:, 1])  # the right channel is another sound
+    engine = tactus.Engine(rate, channels=2, layout=str(layout))
+    blocks = [engine.process(x[i:i + 300]) for i in range(0, len(x), 300)]
+    assert np.array_equal(np.concatenate(blocks), y[:len(x)])
+    with pytest.raises(ValueError, match="leave out actuator= and actuators="):
+        tactus.render(x, rate, layout="wrists", actuators=2)
+    with pytest.raises(ValueError, match="no layout named 'nope'"):
+        tactus.render(x, rate, layout="nope")
+
+
 def test_analyze_equals_the_command_lines_json(cli, amen, tmp_path):
     import json
     x, rate = tactus.read(amen)
