@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <map>
@@ -52,19 +53,22 @@ struct Outputs {
 
 using Job = BatchJob;
 
-// The pulses a render triggers (for the summary) and the sound it left unfelt (the warnings
-// that audible input gave no vibration, in whole or for a long stretch).
+// The pulses a render triggers (for the summary: each lane's, so each output's) and the sound
+// it left unfelt (the warnings that audible input gave no vibration, in whole or for a long
+// stretch).
 class RenderStats final : public FrameObserver {
   public:
     explicit RenderStats(const Settings& settings) : unfelt(settings) {}
-    void on_frame(const Features& features, const ControlFrame& control) noexcept override {
-        onsets += control.trigger;
+    void on_frame(const Features& features, const ControlFrame&) noexcept override {
         unfelt.on_loudness(features.loudness_db);
+    }
+    void on_lane_frame(int lane, const ControlFrame& control) noexcept override {
+        lane_pulses[static_cast<size_t>(lane)] += control.trigger;
     }
     FeatureSet reads() const noexcept override {
         return {.loudness = true, .spectrum = false, .pitch = false};
     }
-    int onsets = 0;
+    std::array<int, Engine::kMaxActuators> lane_pulses{};
     UnfeltSound unfelt;
 };
 
@@ -115,10 +119,18 @@ std::string render_one(const Job& job, const Settings& settings, const Outputs& 
             stats.unfelt.warning(job.input.string(), summary.sample_rate_hz);
         !warning.empty())
         note(warning);
+    // The pulses: the one count of outputs alike, else each layout output's.
+    std::string pulses = fmt::format("{} pulses", stats.lane_pulses[0]);
+    if (outputs.layout && engine.lanes() > 1) {
+        pulses = "pulses";
+        for (int k = 0; k < engine.actuators(); ++k)
+            pulses += fmt::format("{} {} {}", k ? "," : "", outputs.layout->outputs[k].name,
+                                  stats.lane_pulses[static_cast<size_t>(engine.lane_of(k))]);
+    }
     return fmt::format(
-        "{}: {:.2f} s at {:g} Hz, {} pulses, peak {:.1f} dBFS, {} channel(s)", job.output.string(),
+        "{}: {:.2f} s at {:g} Hz, {}, peak {:.1f} dBFS, {} channel(s)", job.output.string(),
         (summary.frames + summary.tail_frames) / summary.sample_rate_hz, summary.sample_rate_hz,
-        stats.onsets, stats.unfelt.peak() > 0 ? 20 * std::log10(stats.unfelt.peak()) : -INFINITY,
+        pulses, stats.unfelt.peak() > 0 ? 20 * std::log10(stats.unfelt.peak()) : -INFINITY,
         channels);
 }
 

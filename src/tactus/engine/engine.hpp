@@ -204,8 +204,10 @@ class Engine {
     int rate_divisor() const { return rate_divisor_; }
     int actuators() const { return static_cast<int>(outputs_.size()); }
     double sample_rate_hz() const { return prepared_ ? spec_.sample_rate_hz : 0.0; }
-    // Setup thread: the lane of the running pipeline an actuator plays (pop_lane_frame()).
+    // Setup thread: the lane of the running pipeline an actuator plays (pop_lane_frame()), and
+    // how many lanes it has (outputs on the same route and overlay share one).
     int lane_of(int actuator) const { return active_->lane_of(actuator); }
+    int lanes() const { return active_->lanes(); }
     // Setup thread: the running pipeline's post chain for an actuator.
     const PostChain& post(int actuator = 0) const { return active_->post(actuator); }
     // Output samples a final clip at the ceiling changed (it should not: the limiter leaves a
