@@ -50,15 +50,15 @@ void engine_block(benchmark::State& state, const std::vector<std::string>& route
     Engine engine;
     const int channels = routes.empty() ? 1 : 2;
     if (!routes.empty()) {
-        std::vector<ActuatorOutput> outputs;
-        for (const auto& r : routes) outputs.push_back({.profile = {}, .route = Route::parse(r)});
+        std::vector<ActuatorOutput> outputs(routes.size());
+        for (size_t k = 0; k < routes.size(); ++k) outputs[k].route = Route::parse(routes[k]);
         engine.set_actuators(outputs);
     }
     engine.prepare({.sample_rate_hz = kLiveRateHz, .max_block = kLiveBlock, .channels = channels});
     std::vector<std::vector<float>> out(static_cast<size_t>(engine.actuators()),
                                         std::vector<float>(kLiveBlock));
-    std::vector<float*> outs;
-    for (auto& o : out) outs.push_back(o.data());
+    std::vector<float*> outs(out.size());
+    for (size_t k = 0; k < out.size(); ++k) outs[k] = out[k].data();
     const auto process = [&](size_t i) {
         const float* ins[] = {in.data() + i, in.data() + i};
         engine.process(ins, outs.data(), kLiveBlock);

@@ -335,8 +335,8 @@ void Object::load_layout(const std::string& name) {
     }
     const bool live = running() && !setup_changed;
     if (live) {
-        std::vector<Engine::Routing> routes;
-        for (const ActuatorOutput& o : next) routes.push_back({o.route, o.overlay});
+        std::vector<Engine::Routing> routes(next.size());
+        for (size_t k = 0; k < next.size(); ++k) routes[k] = {next[k].route, next[k].overlay};
         engine_->set_routes(routes);
         for (size_t k = 0; k < next.size(); ++k)
             engine_->set_actuator_gain_db(static_cast<int>(k), next[k].gain_db);

@@ -130,8 +130,9 @@ void live_run(const LiveOptions& o) {
     std::optional<Layout> layout;
     if (!o.layout.empty()) {  // the layout's channels; its sound channels carry --play's
         layout = load_layout(resolve_layout(o.layout));
-        for (const LayoutOutput& output : layout->outputs)
-            routing.actuator_channels.push_back(output.channel);
+        routing.actuator_channels.resize(layout->outputs.size());
+        for (size_t k = 0; k < layout->outputs.size(); ++k)
+            routing.actuator_channels[k] = layout->outputs[k].channel;
         if (!o.play.empty()) routing.sound_channels = layout->sound_channels;
     } else {
         routing.actuator_channels =

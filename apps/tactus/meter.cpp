@@ -98,8 +98,8 @@ std::vector<Metered> metered_of(const MeterOptions& o) {
 void meter(const MeterOptions& o) {
     if (!is_stdout(o.output)) check_output(o.input, o.output, o.force);
     std::vector<Metered> metered = metered_of(o);
-    std::vector<MeteredChannel> channels;
-    for (const Metered& m : metered) channels.push_back(m.what);
+    std::vector<MeteredChannel> channels(metered.size());
+    for (size_t k = 0; k < metered.size(); ++k) channels[k] = metered[k].what;
     Progress progress("meter");
     FileSource vibration(o.input, kStreamBlockFrames);
     const RunSummary run = meter_source(

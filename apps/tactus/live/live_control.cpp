@@ -60,9 +60,9 @@ void LiveControl::load_layout(const std::string& name_or_path) {
         throw std::invalid_argument(fmt::format("layout {} has {} output(s); {} actuator(s) play",
                                                 layout.name, layout.outputs.size(),
                                                 engine_.actuators()));
-    std::vector<Engine::Routing> routes;
-    for (const LayoutOutput& o : layout.outputs)
-        routes.push_back({o.output.route, o.output.overlay});
+    std::vector<Engine::Routing> routes(layout.outputs.size());
+    for (size_t k = 0; k < routes.size(); ++k)
+        routes[k] = {layout.outputs[k].output.route, layout.outputs[k].output.overlay};
     retry_while_full([&] { engine_.set_routes(routes); });
     for (size_t k = 0; k < layout.outputs.size(); ++k)
         retry_while_full([&] {

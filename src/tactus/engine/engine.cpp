@@ -370,8 +370,8 @@ void Engine::apply_routes(const std::vector<Routing>& routes) {
 }
 
 std::vector<Engine::Routing> Engine::routes_of(const std::vector<ActuatorOutput>& outputs) {
-    std::vector<Routing> routes;
-    for (const ActuatorOutput& o : outputs) routes.push_back({o.route, o.overlay});
+    std::vector<Routing> routes(outputs.size());
+    for (size_t k = 0; k < outputs.size(); ++k) routes[k] = {outputs[k].route, outputs[k].overlay};
     return routes;
 }
 

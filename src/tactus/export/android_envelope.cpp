@@ -3,8 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "tactus/export/haptic_formats.hpp"
 #include "tactus/export/json_numbers.hpp"
@@ -38,7 +38,8 @@ std::vector<ControlPoint> control_points(const HapticTrack& track) {
         at_ms = ms;
         held.reset();
     };
-    for (const Breakpoint& b : simplify(track.intensity, HapticTrack::kStepS, kIntensityTolerance)) {
+    for (const Breakpoint& b :
+         simplify(track.intensity, HapticTrack::kStepS, kIntensityTolerance)) {
         const int64_t ms = std::lround(b.time_s * 1e3);
         if (held && ms >= at_ms + kAndroidMinStepMs) place(*held, at_ms + kAndroidMinStepMs);
         if (ms >= at_ms + kAndroidMinStepMs)

@@ -4,8 +4,6 @@
 #include <toml++/toml.h>
 
 #include <cmath>
-#include <fstream>
-#include <iterator>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -93,10 +91,7 @@ ActuatorProfile parse_actuator(std::string_view toml_text, std::string_view orig
 }
 
 ActuatorProfile load_actuator(const fs::path& path) {
-    std::ifstream in(path);
-    if (!in) throw std::runtime_error(fmt::format("actuator file '{}' not found", path.string()));
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    return parse_actuator(text, path.string());
+    return parse_actuator(toml_file_text(path, "actuator"), path.string());
 }
 
 std::string actuator_text(const ActuatorProfile& a, std::string_view comment) {

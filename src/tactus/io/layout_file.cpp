@@ -3,8 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <fstream>
-#include <iterator>
 #include <regex>
 
 #include "tactus/engine/engine.hpp"
@@ -62,8 +60,8 @@ LayoutOutput read_output(const toml::table& table, std::string_view origin, size
 }  // namespace
 
 std::vector<ActuatorOutput> Layout::actuator_outputs() const {
-    std::vector<ActuatorOutput> engine_outputs;
-    for (const LayoutOutput& o : outputs) engine_outputs.push_back(o.output);
+    std::vector<ActuatorOutput> engine_outputs(outputs.size());
+    for (size_t k = 0; k < outputs.size(); ++k) engine_outputs[k] = outputs[k].output;
     return engine_outputs;
 }
 
@@ -127,10 +125,7 @@ Layout parse_layout(std::string_view toml_text, std::string_view origin) {
 }
 
 Layout load_layout(const fs::path& path) {
-    std::ifstream in(path);
-    if (!in) throw std::runtime_error(fmt::format("layout file '{}' not found", path.string()));
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    return parse_layout(text, path.string());
+    return parse_layout(toml_file_text(path, "layout"), path.string());
 }
 
 }  // namespace tactus

@@ -112,8 +112,8 @@ std::vector<std::pair<P, double>> preset_values(const toml::table& table, std::s
     Settings settings;
     std::vector<P> set;
     apply_node(settings, "", table, kPresetFormat, origin, &set);
-    std::vector<std::pair<P, double>> values;
-    for (const P id : set) values.emplace_back(id, settings[id]);
+    std::vector<std::pair<P, double>> values(set.size());
+    for (size_t k = 0; k < set.size(); ++k) values[k] = {set[k], settings[set[k]]};
     return values;
 }
 

@@ -7,6 +7,9 @@
 #include <toml++/toml.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -15,6 +18,13 @@
 #include "tactus/core/printable.hpp"
 
 namespace tactus {
+
+// A data file's text (a profile, a layout); std::runtime_error "KIND file 'PATH' not found".
+inline std::string toml_file_text(const std::filesystem::path& path, std::string_view kind) {
+    std::ifstream in(path);
+    if (!in) throw std::runtime_error(fmt::format("{} file '{}' not found", kind, path.string()));
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
 
 // The text parsed, or std::runtime_error "ORIGIN:LINE:COL: TOML syntax error: ...".
 inline toml::table parse_toml(std::string_view text, std::string_view origin) {
