@@ -1,7 +1,8 @@
-// Where named data files (presets, actuator profiles) are looked up, in order: the directories
-// of a colon-separated environment variable ($TACTUS_PRESET_PATH, $TACTUS_ACTUATOR_PATH), the
-// user's data directory ($XDG_DATA_HOME/tactus/FOLDER, by default ~/.local/share/tactus/FOLDER),
-// and the data installed with the code: FOLDER in the first share/tactus above a program
+// Where named data files (presets, actuator profiles, layouts) are looked up, in order: the
+// directories of a colon-separated environment variable ($TACTUS_PRESET_PATH,
+// $TACTUS_ACTUATOR_PATH, $TACTUS_LAYOUT_PATH), the user's data directory
+// ($XDG_DATA_HOME/tactus/FOLDER, by default ~/.local/share/tactus/FOLDER), and the data
+// installed with the code: FOLDER in the first share/tactus above a program
 // (PROGRAM_DIR/../share/tactus for bin/tactus, ../../share/tactus for the command line's helpers
 // in libexec/tactus; the build tree has the same layout); for a module another program loads (the
 // Pd external, the Python module, the Vamp plugin), MODULE_DIR/FOLDER when the module's folder is a
@@ -18,7 +19,7 @@
 
 namespace tactus {
 
-// folder: "presets" or "actuators".
+// folder: "presets", "actuators" or "layouts".
 std::vector<std::filesystem::path> search_path(const char* environment_variable,
                                                std::string_view folder);
 // The first PROGRAM_DIR/../.../share/tactus that exists (else PROGRAM_DIR/../share/tactus), or for
