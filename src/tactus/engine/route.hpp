@@ -4,10 +4,11 @@
 // analysis/drum_part.hpp), a band of the input analysed on its own, so its loudness, onsets and
 // brightness are the band's (`band:LOW-HIGH`, Hz), or one input channel, so stereo or surround
 // direction reaches left and right actuators (`channel:N`, counted from 1; a mono input is every
-// channel, as a mono sound plays on both sides). On top of the
-// running settings an output may also take its own values of the mapping's parameters (its
-// overlay: a pitch range, an envelope, a part's gain), as a preset would set them.
-// Control threads: parse(), check(); the engine turns routes into its pipeline's lanes.
+// channel, as a mono sound plays on both sides). On top of the running settings an output may
+// also take its own values of the mapping's parameters (its overlay: a pitch range, an
+// envelope, a part's gain), as a preset would set them; over an actuator's fit too.
+// Any thread: parse(), text(), check_overlay(); the engine turns routes into its pipeline's
+// lanes (engine/pipeline.hpp).
 #pragma once
 
 #include <cstdint>

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
-#include <optional>
 
 #include "tactus/export/haptic_formats.hpp"
 #include "tactus/export/json_numbers.hpp"
@@ -31,23 +30,26 @@ std::vector<ControlPoint> control_points(const HapticTrack& track) {
         const auto step = static_cast<size_t>(std::lround(time_s / HapticTrack::kStepS));
         return track.sharpness[std::min(step, track.sharpness.size() - 1)];
     };
-    int64_t at_ms = 0;  // the last point's time; the builder starts at zero intensity at 0
-    std::optional<Breakpoint> held;  // the highest breakpoint too close to the last point
-    const auto place = [&](const Breakpoint& b, int64_t ms) {
+    int64_t at_ms = 0;     // the last point's time; the builder starts at zero intensity at 0
+    Breakpoint held{};     // the highest breakpoint too close to the last point,
+    bool holding = false;  // when there is one
+    const auto place = [&](Breakpoint b, int64_t ms) {
         points.push_back({b.value, sharpness_at(b.time_s), ms - at_ms});
         at_ms = ms;
-        held.reset();
+        holding = false;
     };
     for (const Breakpoint& b :
          simplify(track.intensity, HapticTrack::kStepS, kIntensityTolerance)) {
         const int64_t ms = std::lround(b.time_s * 1e3);
-        if (held && ms >= at_ms + kAndroidMinStepMs) place(*held, at_ms + kAndroidMinStepMs);
-        if (ms >= at_ms + kAndroidMinStepMs)
+        if (holding && ms >= at_ms + kAndroidMinStepMs) place(held, at_ms + kAndroidMinStepMs);
+        if (ms >= at_ms + kAndroidMinStepMs) {
             place(b, ms);
-        else if (!held || b.value > held->value)
+        } else if (!holding || b.value > held.value) {
             held = b;
+            holding = true;
+        }
     }
-    if (held) place(*held, at_ms + kAndroidMinStepMs);
+    if (holding) place(held, at_ms + kAndroidMinStepMs);
     if (points.empty() || points.back().intensity > 0)
         points.push_back({0.0, points.empty() ? 0.0 : points.back().sharpness, kAndroidMinStepMs});
     return points;

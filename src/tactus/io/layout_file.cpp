@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <regex>
+#include <cctype>
 
 #include "tactus/engine/engine.hpp"
 #include "tactus/io/preset_table.hpp"
@@ -28,8 +28,12 @@ LayoutOutput read_output(const toml::table& table, std::string_view origin, size
     TomlReader reader(table, origin, fmt::format("output[{}].", index + 1));
     LayoutOutput o;
     o.name = reader.text("name", fmt::format("output{}", index + 1));
-    static const std::regex kName("[A-Za-z0-9_-]{1,64}");
-    if (!std::regex_match(o.name, kName))
+    const bool plain =
+        !o.name.empty() && o.name.size() <= 64 &&
+        std::all_of(o.name.begin(), o.name.end(), [](char c) {
+            return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_';
+        });
+    if (!plain)
         reader.fail(reader.get("name"), "name",
                     "1-64 letters, digits, '-' or '_' (it names files)");
     o.channel = -1;
