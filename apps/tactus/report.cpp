@@ -14,6 +14,7 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "global_options.hpp"
+#include "layout_option.hpp"
 #include "pipeline_options.hpp"
 #include "report_render.hpp"
 #include "tactus/export/html_report.hpp"
@@ -30,7 +31,7 @@ constexpr double kMaxEmbeddedSeconds = 120;  // of sound and of vibration in the
 constexpr float kPlayerQuality = 0.1f;
 
 struct ReportOptions {
-    std::string input, output, actuator;
+    std::string input, output, actuator, layout;
     bool force = false;
     PipelineOptions pipeline;
     BatchOptions batch;
@@ -40,6 +41,15 @@ std::vector<float> first_seconds(const std::vector<float>& samples, double rate,
     return {samples.begin(),
             samples.begin() + static_cast<ptrdiff_t>(
                                   std::min(samples.size(), static_cast<size_t>(seconds * rate)))};
+}
+
+// A layout in the summary: its name, then each output's name, route and actuator.
+std::string layout_text(const Layout& layout) {
+    std::string text = layout.name + ":";
+    for (const LayoutOutput& o : layout.outputs)
+        text += fmt::format(" {} ({}{}{})", o.name, o.output.route.text(),
+                            o.actuator.empty() ? "" : ", ", o.actuator);
+    return text + "; the drive, the players and the meter: the first output's";
 }
 
 std::string channel_text(const perception::ChannelSummary& c) {
@@ -57,8 +67,11 @@ void report(const ReportOptions& o) {
     const Dygraphs dygraphs = load_dygraphs();  // before any audio: a missing package says so
     std::optional<ActuatorProfile> actuator;
     if (!o.actuator.empty()) actuator = load_actuator_for(o.actuator, settings);
+    std::optional<Layout> layout;
+    if (!o.layout.empty()) layout = load_layout(resolve_layout(o.layout));
     Progress progress("report");
-    const ReportRender r = render_report(o.input, settings, actuator, with_progress(progress));
+    const ReportRender r = render_report(o.input, settings, actuator, with_progress(progress),
+                                         nullptr, layout ? &*layout : nullptr);
     const double rate = r.sample_rate_hz;
 
     ReportData data;
@@ -72,6 +85,7 @@ void report(const ReportOptions& o) {
                     {"actuator", actuator ? actuator->name + " (compensated, metered through it)"
                                           : "none (metered through " + r.metered_name + ")"},
                     {"onsets", fmt::format("{}", r.onsets.size())},
+                    {"layout", layout ? layout_text(*layout) : std::string("none: one output")},
                     {"tactus", TACTUS_VERSION}};
     for (const auto& c : perception::kChannels)
         data.summary.emplace_back(fmt::format("{} ({})", c.name, c.sensation),
@@ -106,6 +120,7 @@ void add_report(CLI::App& app) {
     add_actuator_option(*command, options->actuator,
                         "actuator profile (name or FILE.toml): render for it and meter through it "
                         "(default: none, metered through voice-coil)");
+    add_layout_option(*command, options->layout)->excludes(command->get_option("--actuator"));
     options->pipeline.add_to(*command);
     command->callback([options] { for_each_input(*options, ".report.html", report); });
 }

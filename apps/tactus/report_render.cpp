@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "layout_option.hpp"
 #include "meter_worker.hpp"
 #include "tactus/dsp/downmix.hpp"
 #include "tactus/export/haptic_track.hpp"
@@ -64,13 +65,17 @@ ReportRender render_once(const std::string& input, const Settings& settings,
                          const std::optional<ActuatorProfile>& actuator,
                          const RunCallbacks& callbacks,
                          std::shared_ptr<const RecordedAnalysis> replayed,
-                         RecordedAnalysis* recording) {
-    const ActuatorProfile metered =
-        actuator ? *actuator : load_actuator(resolve_actuator(kDefaultActuator));
+                         RecordedAnalysis* recording, const Layout* layout) {
+    const std::vector<ActuatorOutput> outputs =
+        layout ? layout_outputs(*layout, settings)
+               : std::vector<ActuatorOutput>{ActuatorOutput{.profile = actuator}};
+    const ActuatorProfile metered = outputs.front().profile
+                                        ? *outputs.front().profile
+                                        : load_actuator(resolve_actuator(kDefaultActuator));
     ReportRender out;
     out.metered_name = metered.name;
     Engine engine(settings);
-    engine.set_actuator(actuator);
+    engine.set_actuators(outputs);
     out.analysis_replayed = replayed != nullptr;
     engine.replay_analysis(std::move(replayed));
     perception::MeterSummariser summariser;
@@ -112,7 +117,8 @@ ReportRender render_once(const std::string& input, const Settings& settings,
                             f.features.noisiness, pitched ? f.features.pitch_hz : NAN});
         program.push_back({t, f.control.frequency_hz, f.control.amplitude});
     };
-    const HapticTrack track = render_haptic_tracks(input, engine, sink, run, on_frame).front();
+    const std::vector<HapticTrack> tracks =
+        render_haptic_tracks(input, engine, sink, run, on_frame);
     if (out.analysis_replayed && engine.replay_ran_out()) {  // the caller renders again
         out.analysis_replayed = false;
         return out;
@@ -127,11 +133,39 @@ ReportRender render_once(const std::string& input, const Settings& settings,
     // The meter's last readings cover its windows past the end: the plots stop at the end.
     const double end_s = static_cast<double>(out.sound.size()) / rate;
     std::erase_if(levels, [&](const std::vector<double>& r) { return r[0] > end_s; });
-    for (const auto& onset : track.onsets) out.onsets.push_back({onset.time_s, onset.part});
+    // The onsets the outputs play: those of an output on `all` (every onset), else every
+    // output's, each time once.
+    const auto all = std::find_if(outputs.begin(), outputs.end(), [](const ActuatorOutput& o) {
+        return o.route.kind == Route::Kind::all;
+    });
+    for (size_t k = 0; k < tracks.size(); ++k)
+        if (all == outputs.end() || k == static_cast<size_t>(all - outputs.begin()))
+            for (const auto& onset : tracks[k].onsets)
+                out.onsets.push_back({onset.time_s, onset.part});
+    std::sort(out.onsets.begin(), out.onsets.end(),
+              [](const ReportOnset& a, const ReportOnset& b) { return a.time_s < b.time_s; });
+    out.onsets.erase(std::unique(out.onsets.begin(), out.onsets.end(),
+                                 [](const ReportOnset& a, const ReportOnset& b) {
+                                     return b.time_s - a.time_s < HapticTrack::kStepS;
+                                 }),
+                     out.onsets.end());
 
-    std::vector<std::vector<double>> felt;
-    for (size_t i = 0; i < track.intensity.size(); ++i)
-        felt.push_back({static_cast<double>(i) * HapticTrack::kStepS, track.intensity[i]});
+    // Each output's felt envelope on one scale: 1 is the loudest output's peak.
+    double full_scale = 0;
+    for (const HapticTrack& t : tracks) full_scale = std::max(full_scale, t.felt_full_scale);
+    std::vector<std::string> felt_labels{"felt"};
+    if (layout) {
+        felt_labels.clear();
+        for (const LayoutOutput& o : layout->outputs) felt_labels.push_back(o.name);
+    }
+    std::vector<std::vector<double>> felt(tracks.front().intensity.size());
+    for (size_t i = 0; i < felt.size(); ++i) {
+        felt[i].push_back(static_cast<double>(i) * HapticTrack::kStepS);
+        for (const HapticTrack& t : tracks)
+            felt[i].push_back(i < t.intensity.size() && full_scale > 0
+                                  ? t.intensity[i] * t.felt_full_scale / full_scale
+                                  : 0.0);
+    }
     const auto column = [&](size_t c) {
         std::vector<std::vector<double>> rows;
         rows.reserve(features.size());
@@ -154,8 +188,11 @@ ReportRender render_once(const std::string& input, const Settings& settings,
     ReportPlot drive = plot("vibration", "Vibration (the actuator's drive)", "full scale",
                             {"vibration"}, waveform_rows(out.vibration, rate));
     drive.onsets = drive.band = true;
-    ReportPlot felt_plot =
-        plot("felt", "Felt envelope (P-weighted; 1: its peak)", "0 ... 1", {"felt"}, thinned(felt));
+    ReportPlot felt_plot = plot("felt",
+                                layout ? "Felt envelope of each output (P-weighted; 1: the loudest "
+                                         "output's peak)"
+                                       : "Felt envelope (P-weighted; 1: its peak)",
+                                "0 ... 1", felt_labels, thinned(felt));
     felt_plot.onsets = true;
     out.plots = {
         waveform,
@@ -176,15 +213,18 @@ ReportRender render_once(const std::string& input, const Settings& settings,
 
 ReportRender render_report(const std::string& input, const Settings& settings,
                            const std::optional<ActuatorProfile>& actuator,
-                           const RunCallbacks& callbacks, AnalysisCache* analyses) {
-    if (!analyses) return render_once(input, settings, actuator, callbacks, nullptr, nullptr);
+                           const RunCallbacks& callbacks, AnalysisCache* analyses,
+                           const Layout* layout) {
+    if (!analyses)
+        return render_once(input, settings, actuator, callbacks, nullptr, nullptr, layout);
     const std::string key = AnalysisCache::key_of(input, settings);
     if (auto kept = analyses->find(key)) {
-        ReportRender out = render_once(input, settings, actuator, callbacks, kept, nullptr);
+        ReportRender out = render_once(input, settings, actuator, callbacks, kept, nullptr, layout);
         if (out.analysis_replayed) return out;
     }
     auto recording = std::make_shared<RecordedAnalysis>();
-    ReportRender out = render_once(input, settings, actuator, callbacks, nullptr, recording.get());
+    ReportRender out =
+        render_once(input, settings, actuator, callbacks, nullptr, recording.get(), layout);
     analyses->keep(key, std::move(recording));
     return out;
 }

@@ -13,6 +13,7 @@
 #include "analysis_cache.hpp"
 #include "tactus/actuator/profile.hpp"
 #include "tactus/export/html_report.hpp"
+#include "tactus/io/layout_file.hpp"
 #include "tactus/io/run_file.hpp"
 #include "tactus/params/params.hpp"
 #include "tactus/perception/meter.hpp"
@@ -34,12 +35,16 @@ struct ReportRender {
 };
 
 // Renders `input` with `settings` for `actuator` (none: no compensation, metered through the
-// default actuator); throws std::runtime_error with a one-line message naming the file. With
+// default actuator), or with `layout` (its outputs, each its route and profile: the felt plot
+// has one series per output, named, the onsets are those the outputs play, the drive plot, the
+// players and the meter the first output's); throws std::runtime_error with a one-line message
+// naming the file. With
 // `analyses`, an analysis kept there for the file and the analysis's settings is played back
 // (the same vibration, bit for bit, without analysing again), else the file is analysed and
 // its analysis kept (a render ringing out past what was kept analyses again).
 ReportRender render_report(const std::string& input, const Settings& settings,
                            const std::optional<ActuatorProfile>& actuator,
-                           const RunCallbacks& callbacks = {}, AnalysisCache* analyses = nullptr);
+                           const RunCallbacks& callbacks = {}, AnalysisCache* analyses = nullptr,
+                           const Layout* layout = nullptr);
 
 }  // namespace tactus::cli

@@ -30,7 +30,9 @@ from PIL import Image
 
 TACTUS, CHROMIUM = sys.argv[1], sys.argv[2]
 SOUNDS = {"amen": "/usr/share/sonic-pi/samples/loop_amen_full.flac",
-          "tick": "/usr/share/sonic-pi/samples/elec_tick.flac"}
+          "tick": "/usr/share/sonic-pi/samples/elec_tick.flac",
+          "column": "/usr/share/sonic-pi/samples/loop_amen_full.flac"}
+OPTIONS = {"column": ["--layout", "column-4"]}  # a layout: the felt plot one series per output
 WINDOW = (1200, 2700)
 LONG_S, LONG_RATE = 300, 44100  # the long file: quiet noise with one loud hit in the middle
 MAX_PAGE_BYTES = 3_000_000      # its page (two 120 s WAV players alone took 28 MB)
@@ -103,7 +105,8 @@ with tempfile.TemporaryDirectory(prefix="tactus-report-") as work:
     write_long_file(SOUNDS["long"])
     for name, sound in SOUNDS.items():
         page = os.path.join(work, name + ".html")
-        run = subprocess.run([TACTUS, "report", sound, "-o", page], capture_output=True, text=True)
+        run = subprocess.run([TACTUS, "report", sound, "-o", page, *OPTIONS.get(name, [])],
+                             capture_output=True, text=True)
         check(run.returncode == 0, f"{name}: tactus report failed: {run.stderr}")
         text = open(page, encoding="utf-8").read()
         # Self-contained: nothing is fetched.
@@ -141,6 +144,14 @@ with tempfile.TemporaryDirectory(prefix="tactus-report-") as work:
                 if name != "long":  # steady noise: an envelope without a shape to follow
                     check(r >= 0.95, f"{name}: the sound player's envelope correlates {r:.3f} "
                                      "with the input's")
+        if name == "column":  # each output's felt envelope, named, on one scale
+            felt = [r for r in plot_rows(text, "felt")]
+            check(re.search(r'"labels":\["bottom","lower","upper","top"\]', text) is not None,
+                  f"{name}: the felt plot's series are not the layout's outputs")
+            peaks = [max(r[k] for r in felt if r[k] is not None) for k in range(1, 5)]
+            print(f"{name}: each output's felt peak re the loudest: "
+                  + " ".join(f"{p:.3f}" for p in peaks))
+            check(max(peaks) >= 0.999 and min(peaks) > 0, f"{name}: felt peaks {peaks}")
         if name == "long":
             size = os.path.getsize(page)
             print(f"{name}: page {size} bytes")
