@@ -74,6 +74,7 @@ class Object {
     void send_settings();
     void set_from_atom(P id, const t_atom& atom);
     void load_preset(const std::string& name);
+    ActuatorProfile load_profile(const std::string& name) const;
     void load_actuator(int outlet, const std::string& name);
     void set_gain(int outlet, double gain_db);
     void set_route(int outlet, const std::string& route);
@@ -273,15 +274,20 @@ void Object::load_preset(const std::string& name) {
     send_settings();
 }
 
+// A profile by name or by a file beside the patch, what the settings ask that it cannot do said
+// on Pd's console.
+ActuatorProfile Object::load_profile(const std::string& name) const {
+    ActuatorProfile profile = tactus::load_actuator(
+        resolve_actuator(name.ends_with(".toml") ? beside_patch(name).string() : name));
+    for (const auto& warning : actuator_warnings(profile, settings_))
+        post("tactus~: warning: %s", warning.c_str());
+    return profile;
+}
+
 // Actuators are the engine's setup: a change prepares it again (its analysis starts afresh).
 void Object::load_actuator(int outlet, const std::string& name) {
     std::optional<ActuatorProfile> profile;
-    if (name != "none") {
-        profile = tactus::load_actuator(
-            resolve_actuator(name.ends_with(".toml") ? beside_patch(name).string() : name));
-        for (const auto& warning : actuator_warnings(*profile, settings_))
-            post("tactus~: warning: %s", warning.c_str());
-    }
+    if (name != "none") profile = load_profile(name);
     for (int i = 0; i < static_cast<int>(outputs_.size()); ++i)
         if (outlet < 0 || i == outlet) outputs_[static_cast<size_t>(i)].profile = profile;
     stale_ = true;
@@ -307,13 +313,12 @@ void Object::set_route(int outlet, const std::string& route) {
     if (outlet < 0 || outlet >= static_cast<int>(outputs_.size()))
         throw std::invalid_argument(
             fmt::format("route: outlet {} out of range (0 to {})", outlet, outputs_.size() - 1));
-    ActuatorOutput& output = outputs_[static_cast<size_t>(outlet)];
-    const Engine::Routing routing{Route::parse(route), output.overlay};
+    const Route parsed = Route::parse(route);
     if (running())
-        engine_->set_route(outlet, routing);
+        engine_->set_route(outlet, parsed);
     else
         stale_ = true;
-    output.route = routing.route;
+    outputs_[static_cast<size_t>(outlet)].route = parsed;
 }
 
 // Routes, overlays and trims change live; profiles and delays are the engine's setup, and a
@@ -325,14 +330,12 @@ void Object::load_layout(const std::string& name) {
         throw std::invalid_argument(fmt::format("layout {} has {} output(s), tactus~ {} outlet(s)",
                                                 layout.name, layout.outputs.size(),
                                                 outputs_.size()));
-    std::vector<ActuatorOutput> next = layout.actuator_outputs();
+    std::vector<ActuatorOutput> next = layout.actuator_outputs(
+        [&](const std::string& actuator) { return load_profile(actuator); });
     bool setup_changed = false;
-    for (size_t k = 0; k < next.size(); ++k) {
-        if (!layout.outputs[k].actuator.empty())
-            next[k].profile = tactus::load_actuator(resolve_actuator(layout.outputs[k].actuator));
+    for (size_t k = 0; k < next.size(); ++k)
         setup_changed |=
             next[k].profile != outputs_[k].profile || next[k].delay_ms != outputs_[k].delay_ms;
-    }
     const bool live = running() && !setup_changed;
     if (live) {
         std::vector<Engine::Routing> routes(next.size());

@@ -91,18 +91,14 @@ std::vector<ActuatorOutput> resolve_outputs(const py::object& layout, const py::
         throw py::value_error(
             "layout= gives the outputs and their actuators: leave out "
             "actuator= and actuators=");
-    Layout loaded;
     try {
-        loaded = load_layout(resolve_layout(py::str(layout).cast<std::string>()));
+        return load_layout(resolve_layout(py::str(layout).cast<std::string>()))
+            .actuator_outputs([&](const std::string& name) {
+                return *resolve_actuator_for(py::str(name), settings);
+            });
     } catch (const std::exception& e) {
         throw py::value_error(e.what());
     }
-    std::vector<ActuatorOutput> outputs = loaded.actuator_outputs();
-    for (size_t k = 0; k < outputs.size(); ++k)
-        if (!loaded.outputs[k].actuator.empty())
-            outputs[k].profile =
-                resolve_actuator_for(py::str(loaded.outputs[k].actuator), settings);
-    return outputs;
 }
 
 }  // namespace tactus::python

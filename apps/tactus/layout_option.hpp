@@ -5,7 +5,6 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -21,24 +20,11 @@ inline CLI::Option* add_layout_option(CLI::App& command, std::string& layout) {
         "column-4) or FILE.toml");
 }
 
-// The engine's outputs for `layout`, each with its profile loaded (one-line error naming the
-// layout and the output).
+// The engine's outputs for `layout`, each profile loaded as --actuator loads one (its warnings on
+// stderr, once).
 inline std::vector<ActuatorOutput> layout_outputs(const Layout& layout, const Settings& settings) {
-    std::vector<ActuatorOutput> outputs = layout.actuator_outputs();
-    std::map<std::string, ActuatorProfile> loaded;  // each profile once (and its warnings)
-    for (size_t k = 0; k < outputs.size(); ++k) {
-        const LayoutOutput& o = layout.outputs[k];
-        if (o.actuator.empty()) continue;
-        try {
-            if (!loaded.contains(o.actuator))
-                loaded.emplace(o.actuator, load_actuator_for(o.actuator, settings));
-            outputs[k].profile = loaded.at(o.actuator);
-        } catch (const std::exception& e) {
-            throw std::runtime_error(
-                fmt::format("layout {}: output {}: {}", layout.name, o.name, e.what()));
-        }
-    }
-    return outputs;
+    return layout.actuator_outputs(
+        [&](const std::string& name) { return load_actuator_for(name, settings); });
 }
 
 }  // namespace tactus::cli

@@ -77,11 +77,7 @@ void LiveControl::run(const OscCommand& command) {
     if (const auto* c = std::get_if<ActuatorGain>(&command))
         return retry_while_full([&] { engine_.set_actuator_gain_db(c->actuator, c->gain_db); });
     if (const auto* c = std::get_if<ActuatorRoute>(&command))
-        return retry_while_full([&] {
-            engine_.set_route(
-                c->actuator,
-                {c->route, engine_.routes()[static_cast<size_t>(c->actuator)].overlay});
-        });
+        return retry_while_full([&] { engine_.set_route(c->actuator, c->route); });
     if (const auto* c = std::get_if<LoadLayout>(&command)) return load_layout(c->name);
     const auto& t = std::get<TriggerPulse>(command);
     double frequency_hz = t.frequency_hz, amplitude = t.amplitude;

@@ -336,11 +336,11 @@ void Engine::set_routes(const std::vector<Routing>& routes) {
     apply_routes(routes);
 }
 
-void Engine::set_route(int actuator, const Routing& routing) {
+void Engine::set_route(int actuator, const Route& route) {
     const std::lock_guard lock(control_);
     check_range("actuator", actuator, 0, actuators() - 1);
     std::vector<Routing> routes = routes_of(outputs_);
-    routes[static_cast<size_t>(actuator)] = routing;
+    routes[static_cast<size_t>(actuator)].route = route;
     apply_routes(routes);
 }
 

@@ -173,7 +173,8 @@ class Engine {
         bool operator==(const Routing&) const = default;
     };
     void set_routes(const std::vector<Routing>& routes);
-    void set_route(int actuator, const Routing& routing);  // one actuator's, the others kept
+    // One actuator's route, its overlay and the other actuators' routes kept.
+    void set_route(int actuator, const Route& route);
     std::vector<Routing> routes() const;
     // The vibration program from outside: applied at the audio thread's next block.
     void inject(const ControlFrame& frame);

@@ -109,9 +109,8 @@ void Pipeline::prepare(const ProcessSpec& spec, const Settings& settings,
             overlaid(settings, lane.overlay),
             {.frames_per_second = frames_per_second, .output_ceiling = lane_ceiling(lane)});
         lane.voice.prepare(internal_spec, settings[P::post_band_high_hz]);
-        for (size_t c = lane.first_chain; c < lane.first_chain + lane.chains; ++c)
-            chains_[c].set_pressure_reference(lane_ceiling(lane));
     }
+    refer_pressures();
     program_.prepare(settings, {.frames_per_second = frames_per_second,
                                 .output_ceiling = chains_.front().post().ceiling()});
     live_.prepare(settings, frames_per_second);
@@ -262,6 +261,13 @@ void Pipeline::play(int index, const Features& features, const ControlFrame& pro
     if (observer) observer->on_lane_frame(index, control);
 }
 
+// Each chain scales its lane's pressure (a fraction of the lane's first ceiling) to its own.
+void Pipeline::refer_pressures() noexcept {
+    for (const Lane& lane : lanes_)
+        for (size_t c = lane.first_chain; c < lane.first_chain + lane.chains; ++c)
+            chains_[c].set_pressure_reference(lane_ceiling(lane));
+}
+
 int Pipeline::latency() const {
     return chains_.front().latency();
 }
@@ -319,9 +325,7 @@ void Pipeline::process(const PipelineInput& in, float* const* out, int count,
     if (post_dirty_) {  // glides over an analysis frame: LiveSettings' steps join up
         const int glide = std::max(rendered, static_cast<int>(hop_samples() / divisor));
         for (auto& chain : chains_) chain.set_live(live_.now(), glide);
-        for (const Lane& lane : lanes_)
-            for (size_t c = lane.first_chain; c < lane.first_chain + lane.chains; ++c)
-                chains_[c].set_pressure_reference(lane_ceiling(lane));
+        refer_pressures();
         post_dirty_ = false;
     }
     for (Lane& lane : lanes_) {

@@ -126,6 +126,7 @@ class Pipeline {
     };
 
     void apply_live() noexcept;
+    void refer_pressures() noexcept;
     void update_features() noexcept;
     int take_input(const PipelineInput& in, int offset, int count) noexcept;
     const float* heard(const Listening& listening, const PipelineInput& in, int offset) const;

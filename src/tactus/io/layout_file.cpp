@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <map>
+#include <stdexcept>
 
 #include "tactus/engine/engine.hpp"
 #include "tactus/io/preset_table.hpp"
@@ -63,9 +65,21 @@ LayoutOutput read_output(const toml::table& table, std::string_view origin, size
 
 }  // namespace
 
-std::vector<ActuatorOutput> Layout::actuator_outputs() const {
+std::vector<ActuatorOutput> Layout::actuator_outputs(const ProfileLoader& load_profile) const {
     std::vector<ActuatorOutput> engine_outputs(outputs.size());
-    for (size_t k = 0; k < outputs.size(); ++k) engine_outputs[k] = outputs[k].output;
+    std::map<std::string, ActuatorProfile> loaded;
+    for (size_t k = 0; k < outputs.size(); ++k) {
+        const LayoutOutput& o = outputs[k];
+        engine_outputs[k] = o.output;
+        if (o.actuator.empty()) continue;
+        try {
+            if (!loaded.contains(o.actuator)) loaded.emplace(o.actuator, load_profile(o.actuator));
+        } catch (const std::exception& e) {
+            throw std::runtime_error(
+                fmt::format("layout {}: output {}: {}", name, o.name, e.what()));
+        }
+        engine_outputs[k].profile = loaded.at(o.actuator);
+    }
     return engine_outputs;
 }
 

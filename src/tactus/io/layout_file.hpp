@@ -16,6 +16,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -37,8 +38,12 @@ struct Layout {
     std::vector<int> sound_channels;  // counted from 0
     std::vector<LayoutOutput> outputs;
 
-    // The engine's outputs (without profiles), in the layout's order.
-    std::vector<ActuatorOutput> actuator_outputs() const;
+    // Loads the profile an output names (a name or a path), as the front end loads one (its
+    // warnings said its way); throws on a bad one.
+    using ProfileLoader = std::function<ActuatorProfile(const std::string& name_or_path)>;
+    // The engine's outputs, in the layout's order, each named profile loaded once however many
+    // outputs name it; throws std::runtime_error "layout NAME: output OUTPUT: problem".
+    std::vector<ActuatorOutput> actuator_outputs(const ProfileLoader& load_profile) const;
 };
 
 // Directories searched for layouts by name ($TACTUS_LAYOUT_PATH, then as io/search_path.hpp).
