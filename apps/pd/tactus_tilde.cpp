@@ -79,6 +79,7 @@ class Object {
     void set_gain(int outlet, double gain_db);
     void set_route(int outlet, const std::string& route);
     void load_layout(const std::string& name);
+    void set_outputs(std::vector<ActuatorOutput> next);
     void print() const;
     void save(const std::string& path) const;
     std::filesystem::path beside_patch(const std::string& name) const;
@@ -284,12 +285,28 @@ ActuatorProfile Object::load_profile(const std::string& name) const {
     return profile;
 }
 
-// Actuators are the engine's setup: a change prepares it again (its analysis starts afresh).
+// A profile changes live (Engine::set_outputs: swapped in without a gap).
 void Object::load_actuator(int outlet, const std::string& name) {
     std::optional<ActuatorProfile> profile;
     if (name != "none") profile = load_profile(name);
-    for (int i = 0; i < static_cast<int>(outputs_.size()); ++i)
-        if (outlet < 0 || i == outlet) outputs_[static_cast<size_t>(i)].profile = profile;
+    std::vector<ActuatorOutput> next = outputs_;
+    for (int i = 0; i < static_cast<int>(next.size()); ++i)
+        if (outlet < 0 || i == outlet) next[static_cast<size_t>(i)].profile = profile;
+    set_outputs(std::move(next));
+}
+
+// The engine's outputs: live while DSP runs, unless a delay changed (the engine's setup: it is
+// prepared again, its analysis afresh).
+void Object::set_outputs(std::vector<ActuatorOutput> next) {
+    bool delays_changed = false;
+    for (size_t k = 0; k < next.size(); ++k) {
+        next[k].check(static_cast<int>(k));  // before anything changes, DSP on or off
+        delays_changed |= next[k].delay_ms != outputs_[k].delay_ms;
+    }
+    const bool live = running() && !delays_changed;
+    if (live) engine_->set_outputs(next);
+    outputs_ = std::move(next);
+    if (live) return;
     stale_ = true;
     if (engine_ && canvas_dspstate) prepare(sample_rate_hz_, block_);
 }
@@ -298,31 +315,22 @@ void Object::set_gain(int outlet, double gain_db) {
     if (outlet < 0 || outlet >= static_cast<int>(outputs_.size()))
         throw std::invalid_argument(
             fmt::format("gain: outlet {} out of range (0 to {})", outlet, outputs_.size() - 1));
-    ActuatorOutput output = outputs_[static_cast<size_t>(outlet)];
-    output.gain_db = gain_db;
-    output.check(outlet);
-    outputs_[static_cast<size_t>(outlet)] = output;
-    if (running())
-        engine_->set_actuator_gain_db(outlet, gain_db);
-    else
-        stale_ = true;
+    std::vector<ActuatorOutput> next = outputs_;
+    next[static_cast<size_t>(outlet)].gain_db = gain_db;
+    set_outputs(std::move(next));
 }
 
-// A route changes live (Engine::set_route: a primed pipeline crossfaded in, no gap).
+// A route changes live (a primed pipeline crossfaded in, no gap).
 void Object::set_route(int outlet, const std::string& route) {
     if (outlet < 0 || outlet >= static_cast<int>(outputs_.size()))
         throw std::invalid_argument(
             fmt::format("route: outlet {} out of range (0 to {})", outlet, outputs_.size() - 1));
-    const Route parsed = Route::parse(route);
-    if (running())
-        engine_->set_route(outlet, parsed);
-    else
-        stale_ = true;
-    outputs_[static_cast<size_t>(outlet)].route = parsed;
+    std::vector<ActuatorOutput> next = outputs_;
+    next[static_cast<size_t>(outlet)].route = Route::parse(route);
+    set_outputs(std::move(next));
 }
 
-// Routes, overlays and trims change live; profiles and delays are the engine's setup, and a
-// change of them prepares it again (as `actuator` does).
+// Every outlet's route, overlay, profile, trim and delay, as set_outputs applies them.
 void Object::load_layout(const std::string& name) {
     const Layout layout = tactus::load_layout(
         resolve_layout(name.ends_with(".toml") ? beside_patch(name).string() : name));
@@ -332,22 +340,7 @@ void Object::load_layout(const std::string& name) {
                                                 outputs_.size()));
     std::vector<ActuatorOutput> next = layout.actuator_outputs(
         [&](const std::string& actuator) { return load_profile(actuator); });
-    bool setup_changed = false;
-    for (size_t k = 0; k < next.size(); ++k)
-        setup_changed |=
-            next[k].profile != outputs_[k].profile || next[k].delay_ms != outputs_[k].delay_ms;
-    const bool live = running() && !setup_changed;
-    if (live) {
-        std::vector<Engine::Routing> routes(next.size());
-        for (size_t k = 0; k < next.size(); ++k) routes[k] = {next[k].route, next[k].overlay};
-        engine_->set_routes(routes);
-        for (size_t k = 0; k < next.size(); ++k)
-            engine_->set_actuator_gain_db(static_cast<int>(k), next[k].gain_db);
-    }
-    outputs_ = std::move(next);
-    if (live) return;
-    stale_ = true;
-    if (engine_ && canvas_dspstate) prepare(sample_rate_hz_, block_);
+    set_outputs(std::move(next));
 }
 
 void Object::print() const {

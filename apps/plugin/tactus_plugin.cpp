@@ -12,12 +12,21 @@
 //
 // Parameters come from the one table (plugin_params.hpp: index = stable id, 0 = bypass), the
 // state is the engine's TOML (plugin_state.hpp), the programs are presets/*.toml.
+//
+// Layout. A second state, a file path the host may set (LV2: patch:writable, set through the
+// worker; every format: saved and restored with the session), names a layout (io/layout_file.hpp):
+// Vibration 1, 2 play its outputs in order, each its route, overlay, profile, trim and delay;
+// ports past its outputs are silent. Routes, overlays, profiles and trims change live
+// (Engine::set_outputs, no gap); a changed delay waits for the next activation.
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "DistrhoPlugin.hpp"
@@ -27,10 +36,13 @@
 #include "host_parameters.hpp"
 #include "plugin_params.hpp"
 #include "plugin_state.hpp"
+#include "tactus/actuator/warnings.hpp"
 #include "tactus/core/units.hpp"
 #include "tactus/dsp/delay_line.hpp"
 #include "tactus/engine/engine.hpp"
 #include "tactus/engine/max_latency.hpp"
+#include "tactus/io/actuator_file.hpp"
+#include "tactus/io/layout_file.hpp"
 #include "tactus/io/preset.hpp"
 
 START_NAMESPACE_DISTRHO
@@ -43,7 +55,8 @@ class TactusPlugin : public Plugin {
     static constexpr int kActuators = DISTRHO_PLUGIN_NUM_OUTPUTS - DISTRHO_PLUGIN_NUM_INPUTS;
 
     TactusPlugin()
-        : Plugin(tp::parameter_count(), static_cast<uint32_t>(std::size(tp::kFactoryPresets)), 1),
+        : Plugin(tp::parameter_count(), static_cast<uint32_t>(std::size(tp::kFactoryPresets)),
+                 kStates),
           rows_(tp::parameter_count()) {
         for (uint32_t index = 0; index < rows_.size(); ++index) rows_[index] = tp::param_at(index);
         // Presets read here, once: a host may select one from its audio thread. The one that
@@ -59,7 +72,7 @@ class TactusPlugin : public Plugin {
         }
         std::stable_partition(programs_.begin(), programs_.end(),
                               [](const Program& p) { return p.settings == tactus::Settings{}; });
-        engine_.set_actuators(std::vector<tactus::ActuatorOutput>(kActuators));
+        engine_.set_actuators(outputs_);
         if (!isDummyInstance())
             control_ = std::make_unique<tp::ControlThread>([this] { return take_changes(); });
     }
@@ -136,7 +149,17 @@ class TactusPlugin : public Plugin {
     void initProgramName(uint32_t index, String& name) override {
         name = String(std::string(programs_[index].name).c_str());
     }
-    void initState(uint32_t, State& state) override {
+    void initState(uint32_t index, State& state) override {
+        if (index == kLayoutState) {
+            state.key = kLayoutKey;
+            state.label = "Layout";
+            state.description =
+                "the actuator outputs (a layout .toml file): Vibration 1, 2 play its outputs in "
+                "order, each its route, actuator, trim and delay; none: both play everything";
+            state.defaultValue = "";
+            state.hints = kStateIsFilenamePath | kStateIsOnlyForDSP;
+            return;
+        }
         state.key = tp::kStateKey;
         state.label = "tactus settings (preset TOML)";
         state.defaultValue = String(tp::state_text(tactus::Settings{}).c_str());
@@ -163,10 +186,16 @@ class TactusPlugin : public Plugin {
 
     // ---- main thread ----
     String getState(const char* key) const override {
+        if (std::string_view(key) == kLayoutKey) {
+            const std::lock_guard lock(engine_mutex_);
+            return String(layout_path_.c_str());
+        }
         if (std::string_view(key) != tp::kStateKey) return String();
         return String(tp::state_text(host_.settings()).c_str());
     }
+    // Main thread, or LV2's worker thread for a layout the host sets while audio runs.
     void setState(const char* key, const char* value) override {
+        if (std::string_view(key) == kLayoutKey) return load_layout(value);
         if (std::string_view(key) != tp::kStateKey) return;
         const tp::RestoredState restored = tp::restore_state(value);
         if (!restored.error.empty())
@@ -177,6 +206,7 @@ class TactusPlugin : public Plugin {
 
     void activate() override {
         const std::lock_guard lock(engine_mutex_);
+        engine_.set_actuators(outputs_);  // a delay changed while active takes effect here
         apply_changes();
         const int block =
             std::clamp(static_cast<int>(getBufferSize()), 1, tactus::Engine::kMaxBlock);
@@ -221,6 +251,8 @@ class TactusPlugin : public Plugin {
             float* music[kInputs];
             for (int c = 0; c < kInputs; ++c) music[c] = outputs[kActuators + c] + done;
             engine_.process(in, vibration, count);
+            for (int k = playing_.load(std::memory_order_relaxed); k < kActuators; ++k)
+                std::fill_n(vibration[k], count, 0.0f);  // past the layout's outputs
             ramp_.process(vibration, kActuators, count, bypassed);
             delay_.set_delay_samples(engine_.latency());
             delay_.process(in, music, count);
@@ -234,6 +266,59 @@ class TactusPlugin : public Plugin {
 
   private:
     static constexpr uint32_t kVibrationGroup = 1;  // DPF's own groups are kPortGroupMono, Stereo
+    static constexpr uint32_t kLayoutState = 1, kStates = 2;  // after tp::kStateKey's
+    static constexpr const char* kLayoutKey = "layout";
+
+    // Main or worker thread: the layout at `path` (empty: every port plays everything) for the
+    // vibration ports; a bad one is said in one line on stderr and changes nothing.
+    void load_layout(const char* path) {
+        std::vector<tactus::ActuatorOutput> next(kActuators);
+        int playing = kActuators;
+        std::string resolved;
+        try {
+            if (*path != '\0') {
+                resolved = tactus::resolve_layout(path).string();
+                const tactus::Layout layout = tactus::load_layout(resolved);
+                if (layout.outputs.size() > kActuators)
+                    throw std::runtime_error(
+                        fmt::format("layout {} has {} outputs; the plugin plays {}", layout.name,
+                                    layout.outputs.size(), kActuators));
+                const std::vector<tactus::ActuatorOutput> outputs =
+                    layout.actuator_outputs([this](const std::string& name) {
+                        tactus::ActuatorProfile profile =
+                            tactus::load_actuator(tactus::resolve_actuator(name));
+                        for (const auto& warning :
+                             tactus::actuator_warnings(profile, host_.settings()))
+                            d_stderr2("tactus: warning: %s", warning.c_str());
+                        return profile;
+                    });
+                std::copy(outputs.begin(), outputs.end(), next.begin());
+                playing = static_cast<int>(outputs.size());
+            }
+            const std::lock_guard lock(engine_mutex_);
+            if (prepared_)
+                set_outputs_live(next);
+            else
+                engine_.set_actuators(next);
+            outputs_ = std::move(next);
+            layout_path_ = std::move(resolved);
+            playing_.store(playing);
+        } catch (const std::exception& e) {
+            d_stderr2("tactus: layout not loaded, the last one kept: %s", e.what());
+        }
+    }
+    // engine_mutex_ held, the engine prepared: everything but the delays now (one pipeline,
+    // no gap), the delays at the next activation.
+    void set_outputs_live(std::vector<tactus::ActuatorOutput> next) {
+        const std::vector<tactus::ActuatorOutput> running = engine_.outputs();
+        bool delays_wait = false;
+        for (size_t k = 0; k < next.size(); ++k) {
+            delays_wait |= next[k].delay_ms != running[k].delay_ms;
+            next[k].delay_ms = running[k].delay_ms;
+        }
+        engine_.set_outputs(std::move(next));
+        if (delays_wait) d_stderr2("tactus: the layout's delays apply at the next activation");
+    }
 
     // Control thread: the host's changes to the engine; whether there were any.
     bool take_changes() {
@@ -271,7 +356,12 @@ class TactusPlugin : public Plugin {
     tp::HostParameters host_;
     std::atomic<bool> bypassed_{false};
     tactus::Engine engine_;
-    std::mutex engine_mutex_;  // main and control threads, never the audio thread
+    mutable std::mutex engine_mutex_;  // main, worker and control threads, never audio's
+    // The layout: its file (empty: none), the engine's outputs as it gives them (delays
+    // included, which the engine takes at activation) and how many ports play (audio thread).
+    std::string layout_path_;
+    std::vector<tactus::ActuatorOutput> outputs_ = std::vector<tactus::ActuatorOutput>(kActuators);
+    std::atomic<int> playing_{kActuators};
     bool prepared_ = false;
     int block_ = 0;
     int latency_samples_ = 0;

@@ -191,7 +191,9 @@ void live_run(const LiveOptions& o) {
     live::LiveCallback callback(engine, player ? &*player : nullptr, routing,
                                 o.sync ? onset_to_pulse.samples() : live::kNoSync);
 
-    live::LiveControl control(engine, o.pipeline.assignments);
+    live::LiveControl control(engine, o.pipeline.assignments, [&engine](const std::string& name) {
+        return load_actuator_for(name, engine.settings());  // its warnings on the console
+    });
     const auto report = [&console](const std::string& line) { console.message(line); };
     std::optional<live::OscServer> server;
     if (osc_in) server.emplace(*osc_in, control, report);

@@ -3,9 +3,9 @@
 // route carries a hard-left pan to the left actuator only; a low band route stays quiet while a
 // voice above it plays alone; kick and snare routes each play their own part's hits and hardly
 // the other's; an overlay shapes only its output; every kind is block-size invariant; routes
-// changed while audio runs play as routes set from the start once the crossfade is over; a
-// channel the input lacks is refused at prepare, naming the actuator (a mono input is every
-// channel).
+// changed while audio runs play as routes set from the start once the crossfade is over, and
+// so do whole outputs (profiles, trims) changed at once; a channel the input lacks is refused at
+// prepare, naming the actuator (a mono input is every channel).
 #include "tactus/engine/route.hpp"
 
 #include <gmock/gmock.h>
@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdio>
 #include <span>
 #include <string>
 #include <vector>
@@ -22,6 +23,7 @@
 #include "support/sounds.hpp"
 #include "tactus/core/units.hpp"
 #include "tactus/engine/engine.hpp"
+#include "tactus/io/actuator_file.hpp"
 #include "tactus/io/audio_reader.hpp"
 
 namespace tactus {
@@ -256,6 +258,56 @@ TEST(Routes, ChangedWhileAudioRunsTheyPlayAsIfSetFromTheStart) {
         EXPECT_GT(test::peak(std::span(y[k]).first(settled)), 0.0) << after[k] << ": no gap";
     }
     EXPECT_GT(test::peak(before[0]), 0.0);
+}
+
+// A layout changed while audio runs (Engine::set_outputs): routes, an overlay, profiles and
+// trims at once, as if set from the start once the crossfade (and the trims' glide) is over; a
+// changed delay is refused, having changed nothing.
+TEST(Routes, OutputsChangedWhileAudioRunsPlayAsIfSetFromTheStart) {
+    const MonoAudio amen = read_mono(test::kAmen);
+    const double fs = amen.sample_rate_hz;
+    const Channels x{amen.samples};
+    constexpr int kBlock = 64;
+    std::vector<ActuatorOutput> after = outputs_for({"band:30-150", "snare"});
+    after[0].profile = load_actuator(resolve_actuator("lra-175"));
+    after[1].profile = load_actuator(resolve_actuator("voice-coil"));
+    after[1].gain_db = -6;
+    after[1].overlay = {{P::frequency_out_max, 200}};
+    Engine from_start;
+    from_start.set_actuators(after);
+    from_start.prepare({.sample_rate_hz = fs, .max_block = kBlock});
+    const Channels reference = run_routes(from_start, x, {kBlock});
+    Engine engine;
+    engine.set_actuators(outputs_for({"all", "all"}));
+    engine.prepare({.sample_rate_hz = fs, .max_block = kBlock});
+    const auto change_at = static_cast<size_t>(3.0 * fs) / kBlock * kBlock;
+    run_routes(engine, {std::vector<float>(x[0].begin(), x[0].begin() + long(change_at))},
+               {kBlock});
+    std::vector<ActuatorOutput> delayed = after;
+    delayed[1].delay_ms = 5;
+    EXPECT_THAT([&] { engine.set_outputs(delayed); },
+                testing::ThrowsMessage<std::invalid_argument>(
+                    testing::HasSubstr("actuator 1: delay 5 ms: a delay is set before prepare")));
+    EXPECT_FALSE(engine.outputs()[0].profile) << "nothing changed";
+    engine.set_outputs(after);
+    EXPECT_EQ(engine.outputs()[1].gain_db, -6);
+    const Channels y = run_routes(
+        engine, {std::vector<float>(x[0].begin() + long(change_at), x[0].end())}, {kBlock});
+    const auto settled = static_cast<size_t>(0.05 * fs);
+    for (size_t k = 0; k < after.size(); ++k) {
+        const auto ref = std::span(reference[k]).subspan(change_at + settled);
+        const double peak = test::peak(ref);
+        ASSERT_GT(peak, 0.01) << k;
+        double largest = 0;
+        for (size_t i = settled; i < y[k].size(); ++i)
+            largest = std::max(largest, std::abs(double(y[k][i]) - reference[k][change_at + i]));
+        std::printf(
+            "output %zu, changed live vs set from the start: largest difference %.3g "
+            "(peak %.3g)\n",
+            k, largest, peak);
+        EXPECT_LT(largest, 1e-3 * peak) << k;
+        EXPECT_GT(test::peak(std::span(y[k]).first(settled)), 0.0) << k << ": no gap";
+    }
 }
 
 TEST(Routes, AChannelTheInputLacksIsRefusedNamingTheActuator) {

@@ -26,6 +26,13 @@
 namespace tactus::test {
 
 // The .clap file, its entry initialised for as long as this lives.
+// A state in DPF's framing (fields ended by NUL, the whole by 0xfe) holding one of the plugin's
+// states, no parameter list beside it: "state" (the TOML) or "layout" (a file's path).
+inline std::string dpf_state(const std::string& value, const std::string& key = "state") {
+    using namespace std::string_literals;
+    return "__dpf_state_begin__\0"s + key + "\0"s + value + "\0__dpf_state_end__\0\xfe"s;
+}
+
 class ClapLibrary {
   public:
     explicit ClapLibrary(const std::filesystem::path& path) {

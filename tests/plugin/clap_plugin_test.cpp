@@ -1,11 +1,12 @@
 // The CLAP plugin in a real host (clap_host.hpp: dlopen, clap_entry, the factory, process() in
 // blocks): its parameters are the table's, its output at the defaults is `tactus render`'s, a
 // change mid-file goes through the engine's live path, state restores bit for bit, a corrupt
-// state gives the defaults, the bypass ramps.
+// state gives the defaults, a session's layout plays as `render --layout`, the bypass ramps.
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <thread>
 
 #include "clap_host.hpp"
@@ -167,13 +168,6 @@ TEST_F(ClapPlugin, StateRestoresBitForBitInAnotherInstance) {
     EXPECT_GT(max_difference(play(fresh, drums_)[0], first[0]), 1e-2);  // the state mattered
 }
 
-// A state in DPF's framing (fields ended by NUL, the whole by 0xfe) holding only the TOML, no
-// parameter list beside it.
-std::string dpf_state(const std::string& toml) {
-    using namespace std::string_literals;
-    return "__dpf_state_begin__\0state\0"s + toml + "\0__dpf_state_end__\0\xfe"s;
-}
-
 TEST_F(ClapPlugin, CorruptOrForeignStateGivesTheDefaults) {
     Settings changed;
     changed.set(P::frequency_out_max, 250);
@@ -207,6 +201,25 @@ TEST_F(ClapPlugin, CorruptOrForeignStateGivesTheDefaults) {
     double value = 0;
     ASSERT_TRUE(c.params().get_value(c.plugin(), spec(P::frequency_out_max).id, &value));
     EXPECT_EQ(value, 250.0);
+}
+
+TEST_F(ClapPlugin, ALayoutInASessionPlaysAsRenderWithIt) {
+    const auto layout = dir_ / "two.toml", reference = dir_ / "reference.wav";
+    std::ofstream(layout) << two_part_layout(30);
+    ASSERT_EQ(run("render " + kDrums.string() + " -o " + reference.string() + " --layout " +
+                  layout.string())
+                  .exit_code,
+              0);
+    const Sound cli = as_hosts_play(read_sound(reference), drums_.frames());
+    ClapInstance instance(library_);
+    ASSERT_TRUE(instance.load_state(dpf_state(layout.string(), "layout")));
+    const Outputs out = play(instance, drums_);
+    for (size_t k = 0; k < 2; ++k) {
+        const double d = max_difference(out[k], cli.channels[k]);
+        std::printf("CLAP vibration %zu with a layout vs tactus render --layout: %.3g\n", k + 1, d);
+        EXPECT_LE(d, 1e-5);
+    }
+    EXPECT_NE(instance.save_state().find(layout.string()), std::string::npos);  // saved again
 }
 
 TEST_F(ClapPlugin, BypassRampsInsteadOfClicking) {

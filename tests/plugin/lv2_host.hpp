@@ -1,17 +1,19 @@
 // A small LV2 host for the plugin tests, on lilv: it offers what DPF's plugins need and
 // lv2apply does not (urid:map, options with the block lengths and sample rate, bounded block
 // length, a worker run at once), connects every port (control inputs at their defaults),
-// runs blocks, sets control ports by symbol, and saves and restores state and presets
-// through lilv as LV2 hosts do.
+// runs blocks, sets control ports by symbol, sets a path property with patch:Set as a host's
+// file chooser does, and saves and restores state and presets through lilv as LV2 hosts do.
 #pragma once
 
 #include <lilv/lilv.h>
 #include <lv2/atom/atom.h>
+#include <lv2/atom/forge.h>
 #include <lv2/atom/util.h>
 #include <lv2/buf-size/buf-size.h>
 #include <lv2/core/lv2.h>
 #include <lv2/options/options.h>
 #include <lv2/parameters/parameters.h>
+#include <lv2/patch/patch.h>
 #include <lv2/presets/presets.h>
 #include <lv2/state/state.h>
 #include <lv2/urid/urid.h>
@@ -24,6 +26,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tactus::test {
@@ -169,12 +172,14 @@ class Lv2Instance {
         lilv_instance_deactivate(instance_);
         active_ = false;
     }
-    // One block (0 frames: the plugin only reads its control ports).
+    // One block (0 frames: the plugin only reads its control ports and events).
     void run(const float* const* in, float* const* out, uint32_t frames) {
         for (uint32_t port : atom_in_) {
-            auto* seq =
-                reinterpret_cast<LV2_Atom_Sequence*>(atoms_.emplace_back(kAtomBytes / 8).data());
-            seq->atom = {sizeof(LV2_Atom_Sequence_Body), world_.map(LV2_ATOM__Sequence)};
+            std::vector<uint64_t>& buffer = atoms_.emplace_back(kAtomBytes / 8);
+            if (!events_.empty()) buffer = std::exchange(events_, {});
+            auto* seq = reinterpret_cast<LV2_Atom_Sequence*>(buffer.data());
+            if (seq->atom.type == 0)
+                seq->atom = {sizeof(LV2_Atom_Sequence_Body), world_.map(LV2_ATOM__Sequence)};
             lilv_instance_connect_port(instance_, port, seq);
         }
         for (uint32_t port : atom_out_) {
@@ -190,6 +195,26 @@ class Lv2Instance {
             lilv_instance_connect_port(instance_, audio_out_[c], out ? out[c] : nullptr);
         lilv_instance_run(instance_, frames);
         atoms_.clear();
+    }
+
+    // Sets the plugin's path `property` (a URI) to `path` with a patch:Set event in a run of 0
+    // frames, as a host's file chooser does; the plugin's worker (run here at once) takes it.
+    void set_path(const std::string& property, const std::string& path) {
+        events_.assign(kAtomBytes / 8, 0);
+        LV2_Atom_Forge forge;
+        lv2_atom_forge_init(&forge, world_.map_feature());
+        lv2_atom_forge_set_buffer(&forge, reinterpret_cast<uint8_t*>(events_.data()), kAtomBytes);
+        LV2_Atom_Forge_Frame sequence, object;
+        lv2_atom_forge_sequence_head(&forge, &sequence, 0);
+        lv2_atom_forge_frame_time(&forge, 0);
+        lv2_atom_forge_object(&forge, &object, 0, world_.map(LV2_PATCH__Set));
+        lv2_atom_forge_key(&forge, world_.map(LV2_PATCH__property));
+        lv2_atom_forge_urid(&forge, world_.map(property.c_str()));
+        lv2_atom_forge_key(&forge, world_.map(LV2_PATCH__value));
+        lv2_atom_forge_path(&forge, path.c_str(), static_cast<uint32_t>(path.size() + 1));
+        lv2_atom_forge_pop(&forge, &object);
+        lv2_atom_forge_pop(&forge, &sequence);
+        run(nullptr, nullptr, 0);
     }
 
     // The plugin's state (its state:interface and its control ports) as an LV2 host saves it.
@@ -251,6 +276,7 @@ class Lv2Instance {
     std::vector<uint32_t> audio_in_, audio_out_, atom_in_, atom_out_;
     static constexpr uint32_t kAtomBytes = 8192;
     std::vector<std::vector<uint64_t>> atoms_;  // this run's atom buffers (8-byte aligned)
+    std::vector<uint64_t> events_;              // the next run's input events, if any
     bool active_ = false;
 };
 

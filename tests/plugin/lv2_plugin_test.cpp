@@ -1,12 +1,15 @@
 // The LV2 plugin in a real host (lv2_host.hpp, on lilv): at its defaults and at each of its
 // presets it renders what `tactus render` renders, its latency port says the engine's latency,
 // a control port changed between blocks goes through the engine's live path, and a state saved
-// by lilv in one instance restores bit for bit in another. (No program selection a host may
-// make from its audio thread allocates or locks: lv2_realtime_test.cpp.)
+// by lilv in one instance restores bit for bit in another; a layout the host sets (patch:Set of
+// its path) plays as `tactus render --layout`, live, and comes back with the session, its delays
+// included. (No program selection a host may make from its audio thread allocates or locks:
+// lv2_realtime_test.cpp.)
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <thread>
 
 #include "lv2_host.hpp"
@@ -143,6 +146,68 @@ TEST_F(Lv2Plugin, StateSavedByTheHostRestoresBitForBit) {
     Lv2Instance fresh(world_, rate, kBlock);
     fresh.activate();
     EXPECT_GT(max_difference(play(fresh, drums_)[0], first[0]), 1e-2);  // the state mattered
+}
+
+// The plugin's layout, a path property (DPF's state "layout", DISTRHO_PLUGIN_URI "#layout").
+constexpr const char* kLayout = "urn:tactus:vibrotactile#layout";
+
+TEST_F(Lv2Plugin, ALayoutTheHostSetsPlaysAsRenderWithItLive) {
+    const auto layout = dir_ / "two.toml", seat = dir_ / "seat.toml";
+    std::ofstream(layout) << two_part_layout();
+    std::ofstream(seat) << "[[output]]\nroute = \"band:20-120\"\n";
+    const Sound cli = render_cli("--layout " + layout.string());
+    ASSERT_EQ(cli.channels.size(), 2u);
+    Lv2Instance instance(world_, drums_.sample_rate_hz, kBlock);
+    instance.activate();
+    instance.set_path(kLayout, layout.string());  // swapped in while the engine runs
+    const Outputs out = play(instance, drums_);
+    // After the engine's 10 ms crossfade from the outputs it had, as if set from the start.
+    const auto faded = static_cast<size_t>(0.02 * drums_.sample_rate_hz);
+    for (size_t k = 0; k < 2; ++k) {
+        const double d = max_difference(out[k], cli.channels[k], faded);
+        std::printf("LV2 vibration %zu with a layout vs tactus render --layout: %.3g\n", k + 1, d);
+        EXPECT_LE(d, 1e-5);
+    }
+    EXPECT_GT(max_difference(out[0], out[1]), 1e-2);  // each output its own part
+    const auto again = [&] {                          // from the start, the layout kept
+        instance.deactivate();
+        instance.activate();
+        return play(instance, drums_);
+    };
+    // A layout of more outputs than the plugin's ports is refused: the last one plays on.
+    instance.set_path(kLayout, (std::filesystem::path(TACTUS_LAYOUTS) / "column-4.toml").string());
+    const Outputs kept = again();
+    for (size_t k = 0; k < 2; ++k) EXPECT_LE(max_difference(kept[k], cli.channels[k]), 1e-5);
+    // One output: the second port is silent.
+    instance.set_path(kLayout, seat.string());
+    const Outputs one = again();
+    EXPECT_GT(max_difference(one[0], std::vector<float>(drums_.frames())), 1e-2);
+    EXPECT_EQ(one[1], std::vector<float>(drums_.frames()));
+}
+
+TEST_F(Lv2Plugin, ASessionsLayoutComesBackWithItsDelays) {
+    const auto layout = dir_ / "late.toml";
+    std::ofstream(layout) << two_part_layout(30);
+    const Sound cli = render_cli("--layout " + layout.string());
+    LilvState* state = nullptr;
+    {
+        Lv2Instance a(world_, drums_.sample_rate_hz, kBlock);
+        a.activate();
+        a.set_path(kLayout, layout.string());  // the delay waits for the next activation
+        state = a.save_state();
+    }
+    ASSERT_NE(state, nullptr);
+    Lv2Instance b(world_, drums_.sample_rate_hz, kBlock);
+    b.restore_state(state);
+    lilv_state_free(state);
+    b.activate();
+    const Outputs out = play(b, drums_);
+    for (size_t k = 0; k < 2; ++k) {
+        const double d = max_difference(out[k], cli.channels[k]);
+        std::printf("LV2 vibration %zu, layout restored, vs tactus render --layout: %.3g\n", k + 1,
+                    d);
+        EXPECT_LE(d, 1e-5);
+    }
 }
 
 }  // namespace

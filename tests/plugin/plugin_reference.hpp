@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "plugin_audio.hpp"
@@ -44,6 +45,14 @@ inline Outputs engine_reference(const Sound& sound, const std::vector<Automation
         engine.process(in, o, n);
     }
     return out;
+}
+
+// A layout of the plugin's two outputs using every part of one: the low band through an LRA's
+// profile; the snare, trimmed, with its own pitch ceiling; the second one `delay_ms` late.
+inline std::string two_part_layout(double delay_ms = 0) {
+    return "[[output]]\nname = \"low\"\nroute = \"band:20-200\"\nactuator = \"lra-175\"\n"
+           "[[output]]\nname = \"snare\"\nroute = \"snare\"\ngain_db = -6\ndelay_ms = " +
+           std::to_string(delay_ms) + "\n[output.set]\nmapping.frequency.out_max = 200\n";
 }
 
 // The block just before the loudest vibration in [from_s, to_s): a change there lands on a hit.

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "tactus/io/actuator_file.hpp"
 #include "tactus/io/layout_file.hpp"
 #include "tactus/io/preset.hpp"
 
@@ -18,8 +19,13 @@ constexpr auto kQueuePoll = std::chrono::milliseconds(1);
 
 }  // namespace
 
-LiveControl::LiveControl(Engine& engine, std::vector<std::string> assignments)
-    : engine_(engine), assignments_(std::move(assignments)) {}
+LiveControl::LiveControl(Engine& engine, std::vector<std::string> assignments,
+                         Layout::ProfileLoader load_profile)
+    : engine_(engine),
+      assignments_(std::move(assignments)),
+      load_profile_(load_profile ? std::move(load_profile) : [](const std::string& name) {
+          return load_actuator(resolve_actuator(name));
+      }) {}
 
 // Engine::set and friends throw std::runtime_error only when the queue to the audio thread is
 // full (validation errors are std::invalid_argument): wait for the audio thread to take some.
@@ -60,14 +66,8 @@ void LiveControl::load_layout(const std::string& name_or_path) {
         throw std::invalid_argument(fmt::format("layout {} has {} output(s); {} actuator(s) play",
                                                 layout.name, layout.outputs.size(),
                                                 engine_.actuators()));
-    std::vector<Engine::Routing> routes(layout.outputs.size());
-    for (size_t k = 0; k < routes.size(); ++k)
-        routes[k] = {layout.outputs[k].output.route, layout.outputs[k].output.overlay};
-    retry_while_full([&] { engine_.set_routes(routes); });
-    for (size_t k = 0; k < layout.outputs.size(); ++k)
-        retry_while_full([&] {
-            engine_.set_actuator_gain_db(static_cast<int>(k), layout.outputs[k].output.gain_db);
-        });
+    const std::vector<ActuatorOutput> outputs = layout.actuator_outputs(load_profile_);
+    retry_while_full([&] { engine_.set_outputs(outputs); });
 }
 
 void LiveControl::run(const OscCommand& command) {

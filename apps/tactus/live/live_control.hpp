@@ -13,13 +13,17 @@
 
 #include "osc_address_space.hpp"
 #include "tactus/engine/engine.hpp"
+#include "tactus/io/layout_file.hpp"
 
 namespace tactus::live {
 
 class LiveControl {
   public:
-    // `assignments`: the command line's --set, kept on top of any preset loaded later.
-    LiveControl(Engine& engine, std::vector<std::string> assignments);
+    // `assignments`: the command line's --set, kept on top of any preset loaded later;
+    // `load_profile`: how a layout's actuator profiles are loaded (the command line's says
+    // their warnings); by default, loaded and checked only.
+    LiveControl(Engine& engine, std::vector<std::string> assignments,
+                Layout::ProfileLoader load_profile = {});
 
     // Control threads. Each throws (std::invalid_argument, std::runtime_error) with one line
     // and then has changed nothing (a preset: nothing from the parameter that failed on).
@@ -28,8 +32,9 @@ class LiveControl {
     // parameters that differ from the running ones.
     void load_preset(const std::string& name_or_path);
     void load_preset_file(const std::filesystem::path& path);
-    // A layout's routes, overlays and trims (its channels, profiles and delays are the
-    // device's, set when it opened); it must have as many outputs as there are actuators.
+    // A layout's routes, overlays, profiles and trims (Engine::set_outputs; its channels and
+    // delays are the device's, set when it opened: a layout with other delays is refused); it
+    // must have as many outputs as there are actuators.
     void load_layout(const std::string& name_or_path);
     void run(const OscCommand& command);
     // Any control thread: the engine's settings, whole.
@@ -42,6 +47,7 @@ class LiveControl {
 
     Engine& engine_;
     const std::vector<std::string> assignments_;
+    const Layout::ProfileLoader load_profile_;
 };
 
 }  // namespace tactus::live

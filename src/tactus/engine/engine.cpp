@@ -46,14 +46,17 @@ void Engine::set_actuator(std::optional<ActuatorProfile> actuator) {
 void Engine::set_actuators(std::vector<ActuatorOutput> outputs) {
     check_range("actuator count", static_cast<int>(outputs.size()), 1, kMaxActuators);
     for (size_t k = 0; k < outputs.size(); ++k) outputs[k].check(static_cast<int>(k));
-    // The first actuator's capability decides whether the pressure is synthesised at all.
-    if (outputs.front().profile) {
-        Settings next = settings_;
-        next.set(P::actuator_dc, outputs.front().profile->dc);
-        if (next != settings_) ++version_;
-        settings_ = next;
-    }
+    const Settings next = with_first_dc(settings_, outputs);
+    if (next != settings_) ++version_;
+    settings_ = next;
     outputs_ = std::move(outputs);
+}
+
+// The first actuator's capability decides whether the pressure is synthesised at all: its dc
+// replaces actuator.dc (an output without a profile keeps the setting).
+Settings Engine::with_first_dc(Settings settings, const std::vector<ActuatorOutput>& outputs) {
+    if (outputs.front().profile) settings.set(P::actuator_dc, outputs.front().profile->dc);
+    return settings;
 }
 
 void Engine::check_sample_rate(double sample_rate_hz) {
@@ -344,29 +347,64 @@ void Engine::set_route(int actuator, const Route& route) {
     apply_routes(routes);
 }
 
-// control_ held: checks every route, then swaps a pipeline playing them in (or, before prepare,
-// keeps them); throws having changed nothing.
+// control_ held.
 void Engine::apply_routes(const std::vector<Routing>& routes) {
     check_range("route count", static_cast<int>(routes.size()), actuators(), actuators());
     std::vector<ActuatorOutput> next = outputs_;
     for (size_t k = 0; k < routes.size(); ++k) {
         next[k].route = routes[k].route;
         next[k].overlay = routes[k].overlay;
-        next[k].check(static_cast<int>(k));
-        if (prepared_) next[k].check_input(static_cast<int>(k), spec_);
     }
-    if (routes == routes_of(outputs_)) return;
-    if (prepared_) {
-        free_retired();
-        if (static_cast<int>(changes_.size_approx()) + 1 > kChangeCapacity)
-            throw std::runtime_error("engine: too many changes waiting for the audio thread");
+    apply_outputs(std::move(next));
+}
+
+void Engine::set_outputs(std::vector<ActuatorOutput> outputs) {
+    const std::lock_guard lock(control_);
+    apply_outputs(std::move(outputs));
+}
+
+std::vector<ActuatorOutput> Engine::outputs() const {
+    const std::lock_guard lock(control_);
+    return outputs_;
+}
+
+// control_ held: checks every output, then sends the trims that changed and swaps in one
+// pipeline playing the routes, overlays and profiles (or, before prepare, keeps them); throws
+// having changed nothing.
+void Engine::apply_outputs(std::vector<ActuatorOutput> next) {
+    check_range("output count", static_cast<int>(next.size()), actuators(), actuators());
+    for (size_t k = 0; k < next.size(); ++k) {
+        const auto index = static_cast<int>(k);
+        next[k].check(index);
+        if (!prepared_) continue;
+        next[k].check_input(index, spec_);
+        if (next[k].delay_ms != outputs_[k].delay_ms)
+            throw std::invalid_argument(fmt::format(
+                "actuator {}: delay {} ms: a delay is set before prepare (it plays {} ms)", index,
+                next[k].delay_ms, outputs_[k].delay_ms));
     }
+    if (!prepared_) return set_actuators(std::move(next));
+    const Settings settings = with_first_dc(settings_, next);
+    bool rebuild = settings != settings_;
+    int gains = 0;
+    for (size_t k = 0; k < next.size(); ++k) {
+        rebuild |= next[k].profile != outputs_[k].profile || next[k].route != outputs_[k].route ||
+                   next[k].overlay != outputs_[k].overlay;
+        gains += next[k].gain_db != outputs_[k].gain_db ? 1 : 0;
+    }
+    free_retired();
+    if (static_cast<int>(changes_.size_approx()) + gains + (rebuild ? 1 : 0) > kChangeCapacity)
+        throw std::runtime_error("engine: too many changes waiting for the audio thread");
+    for (size_t k = 0; k < next.size(); ++k)
+        if (next[k].gain_db != outputs_[k].gain_db)
+            send({.kind = Change::Kind::actuator_gain,
+                  .actuator = static_cast<int>(k),
+                  .gain_db = next[k].gain_db});  // cannot fail: room was checked
     // Element by element: the audio thread never reads outputs_, but actuators() may.
-    for (size_t k = 0; k < routes.size(); ++k) {
-        outputs_[k].route = routes[k].route;
-        outputs_[k].overlay = routes[k].overlay;
-    }
-    if (prepared_) swap_in(settings_);
+    for (size_t k = 0; k < next.size(); ++k) outputs_[k] = std::move(next[k]);
+    if (rebuild) swap_in(settings);
+    if (settings != settings_) ++version_;
+    settings_ = settings;
 }
 
 std::vector<Engine::Routing> Engine::routes_of(const std::vector<ActuatorOutput>& outputs) {

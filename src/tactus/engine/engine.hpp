@@ -176,6 +176,12 @@ class Engine {
     // One actuator's route, its overlay and the other actuators' routes kept.
     void set_route(int actuator, const Route& route);
     std::vector<Routing> routes() const;
+    // Every actuator output at once (a layout): routes, overlays and profiles swapped in without
+    // a gap (one pipeline), trims gliding. As many as there are actuators; a delay is the
+    // engine's setup, so after prepare a changed one throws std::invalid_argument, as does a bad
+    // output (naming the actuator), having changed nothing. Before prepare, set_actuators().
+    void set_outputs(std::vector<ActuatorOutput> outputs);
+    std::vector<ActuatorOutput> outputs() const;
     // The vibration program from outside: applied at the audio thread's next block.
     void inject(const ControlFrame& frame);
     // A pulse at `frequency_hz` and `amplitude` with the envelope of the current settings.
@@ -262,7 +268,9 @@ class Engine {
     PipelineInput input_from(const float* const* lanes, int offset,
                              const float** channels) const noexcept;
     static std::vector<Routing> routes_of(const std::vector<ActuatorOutput>& outputs);
+    static Settings with_first_dc(Settings settings, const std::vector<ActuatorOutput>& outputs);
     void apply_routes(const std::vector<Routing>& routes);  // control_ held
+    void apply_outputs(std::vector<ActuatorOutput> next);   // control_ held
     void retire(Pipeline* pipeline) noexcept;
 
     Settings settings_;     // control side, control_ held
