@@ -49,7 +49,7 @@ std::string layout_text(const Layout& layout) {
     for (const LayoutOutput& o : layout.outputs)
         text += fmt::format(" {} ({}{}{})", o.name, o.output.route.text(),
                             o.actuator.empty() ? "" : ", ", o.actuator);
-    return text + "; the drive, the players and the meter: the first output's";
+    return text + "; the players: the first output's";
 }
 
 std::string channel_text(const perception::ChannelSummary& c) {
@@ -79,18 +79,24 @@ void report(const ReportOptions& o) {
     data.title = "tactus report: " + name;
     std::string changes;
     for (const auto& a : o.pipeline.assignments) changes += " " + a;
-    data.summary = {{"input", fmt::format("{} ({:.2f} s at {:g} Hz)", o.input,
-                                          static_cast<double>(r.sound.size()) / rate, rate)},
-                    {"preset", o.pipeline.preset + (changes.empty() ? "" : ", --set" + changes)},
-                    {"actuator", actuator ? actuator->name + " (compensated, metered through it)"
-                                          : "none (metered through " + r.metered_name + ")"},
-                    {"onsets", fmt::format("{}", r.onsets.size())},
-                    {"layout", layout ? layout_text(*layout) : std::string("none: one output")},
-                    {"tactus", TACTUS_VERSION}};
-    for (const auto& c : perception::kChannels)
-        data.summary.emplace_back(fmt::format("{} ({})", c.name, c.sensation),
-                                  channel_text(r.summary.channels[static_cast<int>(c.channel)]));
-    data.summary.emplace_back("combined", channel_text(r.summary.combined));
+    data.summary = {
+        {"input", fmt::format("{} ({:.2f} s at {:g} Hz)", o.input,
+                              static_cast<double>(r.sound.size()) / rate, rate)},
+        {"preset", o.pipeline.preset + (changes.empty() ? "" : ", --set" + changes)},
+        {"actuator", layout     ? std::string("each output's own (metered through it)")
+                     : actuator ? actuator->name + " (compensated, metered through it)"
+                                : "none (metered through " + r.metered.front().metered_name + ")"},
+        {"onsets", fmt::format("{}", r.onsets.size())},
+        {"layout", layout ? layout_text(*layout) : std::string("none: one output")},
+        {"tactus", TACTUS_VERSION}};
+    for (const MeteredOutput& m : r.metered) {  // each output's, named with a layout
+        const std::string of = m.name.empty() ? "" : m.name + ": ";
+        for (const auto& c : perception::kChannels)
+            data.summary.emplace_back(
+                fmt::format("{}{} ({})", of, c.name, c.sensation),
+                channel_text(m.summary.channels[static_cast<int>(c.channel)]));
+        data.summary.emplace_back(of + "combined", channel_text(m.summary.combined));
+    }
     data.onsets = r.onsets;
     data.plots = r.plots;
     data.sound_ogg =

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 
 #include "layout_option.hpp"
 #include "meter_worker.hpp"
@@ -69,34 +70,44 @@ ReportRender render_once(const std::string& input, const Settings& settings,
     const std::vector<ActuatorOutput> outputs =
         layout ? layout_outputs(*layout, settings)
                : std::vector<ActuatorOutput>{ActuatorOutput{.profile = actuator}};
-    const ActuatorProfile metered = outputs.front().profile
-                                        ? *outputs.front().profile
-                                        : load_actuator(resolve_actuator(kDefaultActuator));
+    // Each output metered through its own profile, else the default actuator.
+    const size_t n = outputs.size();
+    std::optional<ActuatorProfile> default_actuator;
+    std::vector<ActuatorProfile> metered(n);
+    for (size_t k = 0; k < n; ++k) {
+        if (!outputs[k].profile && !default_actuator)
+            default_actuator = load_actuator(resolve_actuator(kDefaultActuator));
+        metered[k] = outputs[k].profile ? *outputs[k].profile : *default_actuator;
+    }
     ReportRender out;
-    out.metered_name = metered.name;
+    out.metered.resize(n);
     Engine engine(settings);
     engine.set_actuators(outputs);
     out.analysis_replayed = replayed != nullptr;
     engine.replay_analysis(std::move(replayed));
-    perception::MeterSummariser summariser;
-    std::vector<std::vector<double>> features, program, levels;
-    const auto on_reading = [&](const perception::MeterReading& r) {
-        summariser.add(r);
-        levels.push_back(
-            {r.time_s, r.level_db[0], r.level_db[1], r.level_db[2], r.level_db[3], r.combined_db});
-    };
-    // From the first block, when the rate is known; gone before what its readings go to.
-    std::optional<MeterWorker> meter;
+    std::vector<perception::MeterSummariser> summarisers(n);
+    std::vector<std::vector<std::vector<double>>> levels(n);
+    std::vector<std::vector<double>> features, program;
+    std::vector<std::vector<float>> drives(n - 1);  // the outputs after the first
+    // From the first block, when the rate is known; gone before what their readings go to.
+    std::deque<MeterWorker> meters;  // each holds a thread: never moved
     const AlignedSink sink = [&](const float* const* audio, int audio_channels,
                                  const float* const* vib, int, int frames) {
-        if (!meter)
-            meter.emplace(engine.sample_rate_hz(), metered,
-                          settings[P::perception_contact_area_cm2], on_reading);
+        for (size_t k = meters.size(); k < n; ++k)
+            meters.emplace_back(
+                engine.sample_rate_hz(), metered[k], settings[P::perception_contact_area_cm2],
+                [&, k](const perception::MeterReading& r) {
+                    summarisers[k].add(r);
+                    levels[k].push_back({r.time_s, r.level_db[0], r.level_db[1], r.level_db[2],
+                                         r.level_db[3], r.combined_db});
+                });
         const size_t at = out.sound.size();
         out.sound.resize(at + static_cast<size_t>(frames));
         downmix_mean(audio, audio_channels, 0, out.sound.data() + at, frames);  // as heard
         out.vibration.insert(out.vibration.end(), vib[0], vib[0] + frames);
-        meter->write(vib[0], frames);
+        for (size_t k = 1; k < n; ++k)
+            drives[k - 1].insert(drives[k - 1].end(), vib[k], vib[k] + frames);
+        for (size_t k = 0; k < n; ++k) meters[k].write(vib[k], frames);
     };
     UnfeltSound unfelt(settings);
     int channels = 0;
@@ -125,14 +136,19 @@ ReportRender render_once(const std::string& input, const Settings& settings,
     }
     if (recording) record_past_end(engine, channels, *recording);
     out.unfelt_warning = unfelt.warning(input, engine.sample_rate_hz());
-    if (meter) meter->finish();  // the worker's readings are all in, and it is gone
-    out.summary = summariser.summary();
+    for (MeterWorker& meter : meters) meter.finish();  // each worker's readings are all in
+    meters.clear();
     out.sample_rate_hz = engine.sample_rate_hz();
     out.latency_frames = engine.latency();
     const double rate = out.sample_rate_hz;
-    // The meter's last readings cover its windows past the end: the plots stop at the end.
+    // The meters' last readings cover their windows past the end: the plots stop at the end.
     const double end_s = static_cast<double>(out.sound.size()) / rate;
-    std::erase_if(levels, [&](const std::vector<double>& r) { return r[0] > end_s; });
+    for (size_t k = 0; k < n; ++k) {
+        out.metered[k] = {.name = layout ? layout->outputs[k].name : std::string(),
+                          .metered_name = metered[k].name,
+                          .summary = summarisers[k].summary()};
+        std::erase_if(levels[k], [&](const std::vector<double>& r) { return r[0] > end_s; });
+    }
     // The onsets the outputs play: those of an output on `all` (every onset), else every
     // output's, each time once.
     const auto all = std::find_if(outputs.begin(), outputs.end(), [](const ActuatorOutput& o) {
@@ -185,27 +201,39 @@ ReportRender render_once(const std::string& input, const Settings& settings,
     ReportPlot vibration_program = plot("program", "Vibration program: frequency and amplitude",
                                         "Hz", {"frequency_hz", "amplitude"}, thinned(program));
     vibration_program.right_axis = {"amplitude"};
-    ReportPlot drive = plot("vibration", "Vibration (the actuator's drive)", "full scale",
-                            {"vibration"}, waveform_rows(out.vibration, rate));
-    drive.onsets = drive.band = true;
     ReportPlot felt_plot = plot("felt",
                                 layout ? "Felt envelope of each output (P-weighted; 1: the loudest "
                                          "output's peak)"
                                        : "Felt envelope (P-weighted; 1: its peak)",
                                 "0 ... 1", felt_labels, thinned(felt));
     felt_plot.onsets = true;
-    out.plots = {
-        waveform,
-        loudness,
-        brightness,
-        plot("noisiness", "Noisiness (spectral flatness: 0 tonal, 1 noise)", "flatness",
-             {"noisiness"}, column(3)),
-        pitch,
-        vibration_program,
-        drive,
-        felt_plot,
-        plot("sensation", "Sensation level per channel of touch (through " + metered.name + ")",
-             "dB SL", {"P", "NPI", "NPII", "NPIII", "combined"}, thinned(levels))};
+    out.plots = {waveform,
+                 loudness,
+                 brightness,
+                 plot("noisiness", "Noisiness (spectral flatness: 0 tonal, 1 noise)", "flatness",
+                      {"noisiness"}, column(3)),
+                 pitch,
+                 vibration_program};
+    // Each output's drive; then the felt envelopes together; then each output's sensation.
+    const auto suffix = [&](size_t k) { return layout ? "-" + out.metered[k].name : ""; };
+    for (size_t k = 0; k < n; ++k) {
+        ReportPlot drive =
+            plot("vibration" + suffix(k),
+                 layout ? "Vibration of " + out.metered[k].name + " (its actuator's drive)"
+                        : "Vibration (the actuator's drive)",
+                 "full scale", {"vibration"},
+                 waveform_rows(k == 0 ? out.vibration : drives[k - 1], rate));
+        drive.onsets = drive.band = true;
+        out.plots.push_back(std::move(drive));
+    }
+    out.plots.push_back(felt_plot);
+    for (size_t k = 0; k < n; ++k)
+        out.plots.push_back(plot("sensation" + suffix(k),
+                                 "Sensation level per channel of touch" +
+                                     (layout ? ": " + out.metered[k].name : std::string()) +
+                                     " (through " + out.metered[k].metered_name + ")",
+                                 "dB SL", {"P", "NPI", "NPII", "NPIII", "combined"},
+                                 thinned(levels[k])));
     return out;
 }
 

@@ -20,6 +20,13 @@
 
 namespace tactus::cli {
 
+// One actuator output's drive, metered through its profile.
+struct MeteredOutput {
+    std::string name;          // the layout's name of it; "" for the one output of no layout
+    std::string metered_name;  // the profile metered through (its own, else the default)
+    perception::MeterSummary summary;
+};
+
 struct ReportRender {
     std::vector<ReportPlot> plots;    // at most about kMaxPlotRows rows each
     std::vector<ReportOnset> onsets;  // with their drum parts
@@ -28,17 +35,16 @@ struct ReportRender {
     std::vector<float> sound, vibration;
     double sample_rate_hz = 0;
     int64_t latency_frames = 0;
-    perception::MeterSummary summary;  // metered through `metered_name`
-    std::string metered_name;
-    std::string unfelt_warning;      // render's warning of sound left unfelt, or ""
-    bool analysis_replayed = false;  // the analysis kept in `analyses` played back
+    std::vector<MeteredOutput> metered;  // every output, in order
+    std::string unfelt_warning;          // render's warning of sound left unfelt, or ""
+    bool analysis_replayed = false;      // the analysis kept in `analyses` played back
 };
 
 // Renders `input` with `settings` for `actuator` (none: no compensation, metered through the
 // default actuator), or with `layout` (its outputs, each its route and profile: the felt plot
-// has one series per output, named, the onsets are those the outputs play, the drive plot, the
-// players and the meter the first output's); throws std::runtime_error with a one-line message
-// naming the file. With
+// has one series per output, named, the onsets are those the outputs play, each output has its
+// drive and sensation plots, metered through its own profile; the players hold the first
+// output's); throws std::runtime_error with a one-line message naming the file. With
 // `analyses`, an analysis kept there for the file and the analysis's settings is played back
 // (the same vibration, bit for bit, without analysing again), else the file is analysed and
 // its analysis kept (a render ringing out past what was kept analyses again).

@@ -9,7 +9,9 @@ parts at least). The page is one file with nothing fetched: no external script, 
 image; the sound and the vibration are Ogg Vorbis data URIs that decode to the sound (as long as
 the page says, its envelope the input's) and that the browser loads. Plots are thinned keeping
 each bucket's extremes: the long file's one hit keeps the felt envelope's peak (1.0) and the
-loudness plot's maximum is the one `tactus analyze` prints; its page stays under 3 MB.
+loudness plot's maximum is the one `tactus analyze` prints; its page stays under 3 MB. A
+layout's page (column-4) names each output's felt envelope on one scale, and plots each one's
+drive and sensation, its summary giving each one's meter.
 
 usage: report_test.py TACTUS CHROMIUM
 (TACTUS_REPORT_SCREENSHOTS=DIR keeps the screenshots there, to look at.)"""
@@ -32,8 +34,9 @@ TACTUS, CHROMIUM = sys.argv[1], sys.argv[2]
 SOUNDS = {"amen": "/usr/share/sonic-pi/samples/loop_amen_full.flac",
           "tick": "/usr/share/sonic-pi/samples/elec_tick.flac",
           "column": "/usr/share/sonic-pi/samples/loop_amen_full.flac"}
-OPTIONS = {"column": ["--layout", "column-4"]}  # a layout: the felt plot one series per output
-WINDOW = (1200, 2700)
+OPTIONS = {"column": ["--layout", "column-4"]}  # a layout: each output plotted and metered
+PLOTS = {"column": 7 + 2 * 4}  # each of column-4's outputs adds its drive and sensation
+WINDOW_WIDTH, WINDOW_HEIGHT_PER_PLOT = 1200, 300
 LONG_S, LONG_RATE = 300, 44100  # the long file: quiet noise with one loud hit in the middle
 MAX_PAGE_BYTES = 3_000_000      # its page (two 120 s WAV players alone took 28 MB)
 MAX_PLAYER_S = 120              # what the players hold at most
@@ -46,11 +49,11 @@ def check(condition, message):
         print("FAIL:", message)
 
 
-def chromium(profile, *arguments):
+def chromium(profile, plots, *arguments):
     command = [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
                "--no-first-run", "--disable-background-networking", "--disable-component-update",
                "--disable-sync", "--hide-scrollbars", "--force-device-scale-factor=1",
-               f"--window-size={WINDOW[0]},{WINDOW[1]}", f"--user-data-dir={profile}", *arguments]
+               f"--window-size={WINDOW_WIDTH},{WINDOW_HEIGHT_PER_PLOT * plots}", f"--user-data-dir={profile}", *arguments]
     return subprocess.run(command, capture_output=True, text=True, timeout=120)
 
 
@@ -152,6 +155,16 @@ with tempfile.TemporaryDirectory(prefix="tactus-report-") as work:
             print(f"{name}: each output's felt peak re the loudest: "
                   + " ".join(f"{p:.3f}" for p in peaks))
             check(max(peaks) >= 0.999 and min(peaks) > 0, f"{name}: felt peaks {peaks}")
+            # Each output's drive and sensation plotted, and metered in the summary.
+            for output in ("bottom", "lower", "upper", "top"):
+                drive = plot_rows(text, f"vibration-{output}")
+                sensation = [r[5] for r in plot_rows(text, f"sensation-{output}") if r[5] is not None]
+                combined = re.search(rf"<tr><th>{output}: combined</th><td>max (-?[0-9.]+) dB SL", text)
+                print(f"{name}: {output}: drive peak {max(r[2] for r in drive):.3f}, "
+                      f"combined sensation max {max(sensation):.1f} dB SL")
+                check(max(r[2] for r in drive) > 0.01, f"{name}: {output}'s drive plot is empty")
+                check(combined is not None and abs(float(combined.group(1)) - max(sensation)) < 0.05,
+                      f"{name}: {output}'s summary does not give its sensation plot's maximum")
         if name == "long":
             size = os.path.getsize(page)
             print(f"{name}: page {size} bytes")
@@ -177,7 +190,8 @@ with tempfile.TemporaryDirectory(prefix="tactus-report-") as work:
         check(onsets is not None, f"{name}: no onset count in the summary")
 
         profile = os.path.join(work, "profile-" + name)
-        dom = chromium(profile, "--virtual-time-budget=5000", "--dump-dom", "file://" + page)
+        plots = PLOTS.get(name, 9)
+        dom = chromium(profile, plots, "--virtual-time-budget=5000", "--dump-dom", "file://" + page)
         check(dom.returncode == 0, f"{name}: chromium --dump-dom failed: {dom.stderr[-500:]}")
         title = f"<title>tactus report: {os.path.basename(sound)}</title>"
         now = re.search('<title>.*?</title>', dom.stdout)
@@ -196,8 +210,8 @@ with tempfile.TemporaryDirectory(prefix="tactus-report-") as work:
             check(False, f"{name}: the page did not draw")
             continue
         areas = json.loads(attribute(status.group(0), "data-plots"))
-        check(len(areas) == 9 == int(attribute(status.group(0), "data-drawn")),
-              f"{name}: {len(areas)} plots drawn, 9 expected")
+        check(len(areas) == plots == int(attribute(status.group(0), "data-drawn")),
+              f"{name}: {len(areas)} plots drawn, {plots} expected")
         for area in areas:
             check(area["overlaps"] == 0,
                   f"{name}: plot {area['id']}: an axis title runs into {area['overlaps']} tick labels")
@@ -220,7 +234,7 @@ with tempfile.TemporaryDirectory(prefix="tactus-report-") as work:
 
         shutil.rmtree(profile, ignore_errors=True)
         shot = os.path.join(work, name + ".png")
-        taken = chromium(profile, f"--screenshot={shot}", "file://" + page)
+        taken = chromium(profile, plots, f"--screenshot={shot}", "file://" + page)
         check(taken.returncode == 0 and os.path.exists(shot), f"{name}: no screenshot: {taken.stderr[-500:]}")
         if not os.path.exists(shot):
             continue

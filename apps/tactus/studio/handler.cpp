@@ -126,7 +126,7 @@ StudioResponse render(StudioSession& session, const StudioRequest& request) {
              {"latency_frames", r.latency_frames},
              {"frames", r.vibration.size()},
              {"render_ms", render_ms},
-             {"metered", r.metered_name},
+             {"metered", r.metered.front().metered_name},
              {"analysis", r.analysis_replayed ? "replayed" : "analysed"},
              {"set", pipeline.assignments}};
     for (const ReportOnset& o : r.onsets)
@@ -152,11 +152,12 @@ StudioResponse render(StudioSession& session, const StudioRequest& request) {
                                 {"points", p.points},
                                 {"right_axis", p.right_axis}});
     }
+    const perception::MeterSummary& summary = r.metered.front().summary;  // its one output
     for (const auto& c : perception::kChannels)
         out["channels"].push_back(
             {{"name", c.name},
-             {"max_db", r.summary.channels[static_cast<int>(c.channel)].max_db},
-             {"engaged", r.summary.channels[static_cast<int>(c.channel)].engaged_fraction}});
+             {"max_db", summary.channels[static_cast<int>(c.channel)].max_db},
+             {"engaged", summary.channels[static_cast<int>(c.channel)].engaged_fraction}});
     auto samples = std::make_shared<StudioSession::Samples>();
     samples->sound = std::move(r.sound);
     samples->vibration = std::move(r.vibration);
