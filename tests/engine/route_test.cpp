@@ -21,6 +21,7 @@
 
 #include "support/signals.hpp"
 #include "support/sounds.hpp"
+#include "tactus/actuator/profile.hpp"
 #include "tactus/core/units.hpp"
 #include "tactus/engine/engine.hpp"
 #include "tactus/io/actuator_file.hpp"
@@ -204,6 +205,37 @@ TEST(Routes, AnOverlayShapesOnlyItsOwnOutput) {
         return n;
     };
     EXPECT_GT(crossings(out[1]), 2 * crossings(out[0])) << "a higher pitch range";
+}
+
+// Each output plays its own actuator's fit, its overlay fitted too: an LRA's output asking for
+// 500-1000 Hz plays within the LRA's band, and an output without a profile beside it plays the
+// overlay as asked, not the LRA's band.
+TEST(Routes, EachOutputPlaysItsOwnProfilesFitOfItsOverlay) {
+    const double fs = 48000;
+    const Channels x{test::drum_pattern(fs, 3.0, 5).audio};
+    const ActuatorProfile lra = load_actuator(resolve_actuator("lra-175"));
+    std::vector<ActuatorOutput> outputs = outputs_for({"all", "all"});
+    for (ActuatorOutput& o : outputs)
+        o.overlay = {{P::frequency_out_min, 500}, {P::frequency_out_max, 1000}};
+    outputs[0].profile = lra;
+    Engine engine;
+    engine.set_actuators(outputs);
+    engine.enable_frame_queue();
+    engine.prepare({.sample_rate_hz = fs, .max_block = 512, .channels = 1});
+    run_routes(engine, x, {512});
+    std::vector<double> lowest(2, INFINITY), highest(2, 0);
+    for (LaneFrame f; engine.pop_lane_frame(f);) {
+        if (f.control.amplitude <= 0) continue;
+        const auto k = static_cast<size_t>(f.lane);
+        lowest[k] = std::min(lowest[k], f.control.frequency_hz);
+        highest[k] = std::max(highest[k], f.control.frequency_hz);
+    }
+    std::printf("LRA output: %.0f-%.0f Hz; no profile: %.0f-%.0f Hz\n", lowest[0], highest[0],
+                lowest[1], highest[1]);
+    EXPECT_GE(lowest[0], lra.band_low_hz);
+    EXPECT_LE(highest[0], lra.band_high_hz);
+    EXPECT_GE(lowest[1], 500);
+    EXPECT_GT(highest[1], 700);
 }
 
 TEST(Routes, EveryKindIsBlockSizeInvariant) {

@@ -73,11 +73,32 @@ Settings Engine::fitted(const Settings& settings) const {
     return profile ? fit_to_actuator(*profile, settings).settings : settings;
 }
 
+// The outputs as the pipeline plays them: each one's overlay becomes what its own settings (the
+// settings with its overlay, fitted to its own profile) differ in from the pipeline's (fitted to
+// the first output's profile), so each actuator plays its own fit, and an overlay is fitted too
+// (an LRA's output asking for 400 Hz gets the top of its band). Empty for an output playing the
+// pipeline's settings, as the first one does without an overlay.
+std::vector<ActuatorOutput> Engine::as_played(const Settings& settings) const {
+    const Settings base = fitted(settings);
+    std::vector<ActuatorOutput> played = outputs_;
+    for (ActuatorOutput& o : played) {
+        Settings own = overlaid(settings, o.overlay);
+        if (o.profile) {
+            own.set(P::actuator_dc, o.profile->dc);
+            own = fit_to_actuator(*o.profile, own).settings;
+        }
+        o.overlay.clear();
+        for (const ParamSpec& s : param_table())
+            if (own[s.param] != base[s.param]) o.overlay.emplace_back(s.param, own[s.param]);
+    }
+    return played;
+}
+
 std::unique_ptr<Pipeline> Engine::make_pipeline(const Settings& settings, int64_t origin,
                                                 int max_block) const {
     auto pipeline = std::make_unique<Pipeline>();
     pipeline->prepare({.sample_rate_hz = spec_.sample_rate_hz, .max_block = max_block},
-                      fitted(settings), outputs_, origin);
+                      fitted(settings), as_played(settings), origin);
     pipeline->set_extra_features(extra_features());
     pipeline->set_source(source_);
     pipeline->replay(recording_.get());
@@ -217,7 +238,10 @@ void Engine::apply(const Settings& next) {
     }
     free_retired();
     const Settings was = fitted(settings_), now = fitted(next);
-    const int needed = changes_needed(was, now);  // -1: a new pipeline, one change
+    // -1: a new pipeline, one change (also when an output's own values change with it)
+    const int needed = routes_of(as_played(settings_)) == routes_of(as_played(next))
+                           ? changes_needed(was, now)
+                           : -1;
     if (static_cast<int>(changes_.size_approx()) + std::max(needed, 1) > kChangeCapacity)
         throw std::runtime_error("engine: too many changes waiting for the audio thread");
     if (needed < 0) {

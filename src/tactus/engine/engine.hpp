@@ -102,7 +102,8 @@ class Engine {
     // One actuator output (the CLI's default): none means no compensation. Its `dc` replaces
     // the actuator.dc setting, which gates the NPIII pressure, and the pipeline runs the
     // settings fitted to its profile (actuator/fit.hpp: band, flutter, pressure; settings()
-    // stays as set). With several outputs the first one's profile decides both.
+    // stays as set). With several outputs the first one's profile decides the pressure, and
+    // each output plays the settings fitted to its own profile (as_played()).
     void set_actuator(std::optional<ActuatorProfile> actuator);
     // N actuator outputs; throws std::invalid_argument for a bad trim or delay, or none.
     void set_actuators(std::vector<ActuatorOutput> outputs);
@@ -269,6 +270,7 @@ class Engine {
                              const float** channels) const noexcept;
     static std::vector<Routing> routes_of(const std::vector<ActuatorOutput>& outputs);
     static Settings with_first_dc(Settings settings, const std::vector<ActuatorOutput>& outputs);
+    std::vector<ActuatorOutput> as_played(const Settings& settings) const;
     void apply_routes(const std::vector<Routing>& routes);  // control_ held
     void apply_outputs(std::vector<ActuatorOutput> next);   // control_ held
     void retire(Pipeline* pipeline) noexcept;

@@ -87,9 +87,12 @@ void Pipeline::prepare(const ProcessSpec& spec, const Settings& settings,
     }
     lane_of_.assign(lane_of.begin(), lane_of.end());
     chains_ = std::vector<ActuatorChain>(first_of_chain_.size());
-    for (size_t c = 0; c < chains_.size(); ++c) {
-        const auto& profile = outputs[static_cast<size_t>(first_of_chain_[c])].profile;
-        chains_[c].prepare(spec, rate_divisor_, settings, profile ? &*profile : nullptr);
+    for (size_t j = 0; j < lanes_.size(); ++j) {
+        const Settings own = overlaid(settings, played[j]->overlay);
+        for (size_t c = lanes_[j].first_chain; c < lanes_[j].first_chain + lanes_[j].chains; ++c) {
+            const auto& profile = outputs[static_cast<size_t>(first_of_chain_[c])].profile;
+            chains_[c].prepare(spec, rate_divisor_, own, profile ? &*profile : nullptr);
+        }
     }
 
     const double frames_per_second = listenings_.front().analyzer.frame_rate_hz();
@@ -102,13 +105,13 @@ void Pipeline::prepare(const ProcessSpec& spec, const Settings& settings,
                                           [&](const Route& r) { return r.hears_as(lane.route); }) -
                              heard.begin());
         lane.program = lane.route.kind == Route::Kind::all && lane.overlay.empty();
+        const Settings own = overlaid(settings, lane.overlay);
         lane.carrier.assign(internal, 0.0f);
-        lane.flutter.assign(flutter_enabled(settings) ? internal : 0, 0.0f);
-        lane.pressure.assign(pressure_enabled(settings) ? internal : 0, 0.0f);
+        lane.flutter.assign(flutter_enabled(own) ? internal : 0, 0.0f);
+        lane.pressure.assign(pressure_enabled(own) ? internal : 0, 0.0f);
         lane.mapper.prepare(
-            overlaid(settings, lane.overlay),
-            {.frames_per_second = frames_per_second, .output_ceiling = lane_ceiling(lane)});
-        lane.voice.prepare(internal_spec, settings[P::post_band_high_hz]);
+            own, {.frames_per_second = frames_per_second, .output_ceiling = lane_ceiling(lane)});
+        lane.voice.prepare(internal_spec, own[P::post_band_high_hz]);
     }
     refer_pressures();
     program_.prepare(settings, {.frames_per_second = frames_per_second,
@@ -236,9 +239,10 @@ void Pipeline::apply_live() noexcept {
     const Settings& s = live_.now();
     for (Listening& l : listenings_) l.analyzer.set_live(s);
     program_.set_live(s, chains_.front().post().ceiling_for(s));
-    for (Lane& lane : lanes_)
-        lane.mapper.set_live(overlaid(s, lane.overlay),
-                             chains_[lane.first_chain].post().ceiling_for(s));
+    for (Lane& lane : lanes_) {
+        const Settings own = overlaid(s, lane.overlay);
+        lane.mapper.set_live(own, chains_[lane.first_chain].post().ceiling_for(own));
+    }
     update_features();
     post_dirty_ = true;
 }
@@ -324,7 +328,11 @@ void Pipeline::process(const PipelineInput& in, float* const* out, int count,
     }
     if (post_dirty_) {  // glides over an analysis frame: LiveSettings' steps join up
         const int glide = std::max(rendered, static_cast<int>(hop_samples() / divisor));
-        for (auto& chain : chains_) chain.set_live(live_.now(), glide);
+        for (const Lane& lane : lanes_) {
+            const Settings own = overlaid(live_.now(), lane.overlay);
+            for (size_t c = lane.first_chain; c < lane.first_chain + lane.chains; ++c)
+                chains_[c].set_live(own, glide);
+        }
         refer_pressures();
         post_dirty_ = false;
     }

@@ -2,8 +2,9 @@
 // routes): audio -> analysis -> mapping -> synthesis -> post chains -> actuator outputs. Each
 // distinct input a route hears (engine/route.hpp: the engine's mix, a band of it, an input
 // channel) has one analysis; each distinct way of playing one (a route's parts, an output's
-// overlay) one lane: its mapping and synthesis, and one post chain per distinct actuator profile
-// among its outputs. With every output on `all`, as by default, that is one of each: the
+// overlay: the values its mapping, synthesis and post chains take in place of the settings')
+// one lane: its mapping and synthesis, and one post chain per distinct actuator profile among
+// its outputs. With every output on `all`, as by default, that is one of each: the
 // paper's one signal for every tonehole. The Engine owns one, and while a structural change is
 // swapped in, two (engine.hpp). Live settings reach it through ask(); everything in it after
 // prepare() runs on the audio thread (or, before it is handed over, on the control thread that
