@@ -202,12 +202,18 @@ TEST(RealTime, WithActuatorCompensation) {
 // `routes`, the two outputs play routes of every kind (engine/route.hpp), swapped now and then.
 void expect_live_changes_are_real_time_safe(const Settings& start, double fs, int channels,
                                             std::optional<ActuatorProfile> actuator = {},
-                                            bool routes = false) {
+                                            bool routes = false, bool own_profiles = false) {
     const std::vector<float> x = varied_input(fs);
     std::vector<float> y(x.size());
     Engine engine(start);
-    engine.set_actuators(
-        {ActuatorOutput{.profile = actuator}, ActuatorOutput{.profile = actuator, .gain_db = -3}});
+    // With own_profiles the second output has none: each plays its own fit, so a change the
+    // fit moves is structural, and every 140 blocks the two swap profiles (set_outputs).
+    const std::vector<ActuatorOutput> outputs = {
+        ActuatorOutput{.profile = actuator},
+        ActuatorOutput{.profile = own_profiles ? std::nullopt : actuator, .gain_db = -3}};
+    std::vector<ActuatorOutput> swapped = outputs;
+    std::swap(swapped[0].profile, swapped[1].profile);
+    engine.set_actuators(outputs);
     const std::vector<Engine::Routing> each_kind[] = {
         {{Route::parse("kick+snare"), {}}, {Route::parse("channel:2"), {}}},
         {{Route::parse("band:40-200"), {{P::frequency_out_max, 90}}}, {Route::parse("all"), {}}}};
@@ -231,6 +237,12 @@ void expect_live_changes_are_real_time_safe(const Settings& start, double fs, in
                 if (b % 140 == 0)  // structural: a pipeline primed here, crossfaded in there
                     engine.set(P::analysis_hop_ms, b % 280 == 0 ? 2.0 : start[P::analysis_hop_ms]);
                 if (routes && b % 140 == 70) engine.set_routes(each_kind[b % 280 == 70 ? 1 : 0]);
+                if (own_profiles && b % 140 == 105) {
+                    std::vector<ActuatorOutput> next = b % 280 == 105 ? swapped : outputs;
+                    for (size_t k = 0; k < next.size(); ++k)
+                        next[k].gain_db = engine.outputs()[k].gain_db;
+                    engine.set_outputs(next);
+                }
             });
             control.join();
         }
@@ -267,6 +279,11 @@ TEST(RealTime, LiveParameterChangesFittedToAnActuator) {
     for (const char* name : {"lra-175", "erm"})
         expect_live_changes_are_real_time_safe(Settings{}, 48000, 1,
                                                load_actuator(resolve_actuator(name)));
+}
+
+TEST(RealTime, LiveChangesToOutputsOfTheirOwnProfiles) {
+    expect_live_changes_are_real_time_safe(Settings{}, 48000, 1,
+                                           load_actuator(resolve_actuator("lra-175")), false, true);
 }
 
 // The delay line of the pass-throughs (immediate moves) and of --sync (crossfaded moves): its
