@@ -6,6 +6,8 @@
 //   EngineBlock/routes:<r,r,...>  the same with the Amen break on two input channels and one
 //                      actuator output per route (engine/route.hpp): four on `all` (one
 //                      analysis, one synthesis) against four routes of every kind.
+//   engine_block_layout/<name>  the same with a bundled layout's outputs (layouts/<name>.toml:
+//                      routes, overlays, profiles, each output its own fit).
 //   LiveChange/<key>   Engine::set() of a live parameter on the control thread (ns), with the
 //                      audio thread taking the change at its next block.
 //   StructuralSwap     Engine::set() of a structural parameter (the hop): a new pipeline built
@@ -19,6 +21,8 @@
 
 #include "bench_input.hpp"
 #include "tactus/engine/engine.hpp"
+#include "tactus/io/actuator_file.hpp"
+#include "tactus/io/layout_file.hpp"
 
 namespace tactus::bench {
 namespace {
@@ -45,15 +49,12 @@ size_t run_blocks(Engine& engine, size_t at, size_t blocks) {
 
 // `routes`: none, one output on mono input (today's default); else one output per route, the
 // input on two channels.
-void engine_block(benchmark::State& state, const std::vector<std::string>& routes) {
+// `outputs` empty: the one default output, mono in; else those outputs, stereo in.
+void engine_block_of(benchmark::State& state, const std::vector<ActuatorOutput>& outputs) {
     const std::vector<float>& in = amen();
     Engine engine;
-    const int channels = routes.empty() ? 1 : 2;
-    if (!routes.empty()) {
-        std::vector<ActuatorOutput> outputs(routes.size());
-        for (size_t k = 0; k < routes.size(); ++k) outputs[k].route = Route::parse(routes[k]);
-        engine.set_actuators(outputs);
-    }
+    const int channels = outputs.empty() ? 1 : 2;
+    if (!outputs.empty()) engine.set_actuators(outputs);
     engine.prepare({.sample_rate_hz = kLiveRateHz, .max_block = kLiveBlock, .channels = channels});
     std::vector<std::vector<float>> out(static_cast<size_t>(engine.actuators()),
                                         std::vector<float>(kLiveBlock));
@@ -83,6 +84,19 @@ void engine_block(benchmark::State& state, const std::vector<std::string>& route
     state.counters["period_us"] = kLiveBlock / kLiveRateHz * 1e6;
 }
 
+void engine_block(benchmark::State& state, const std::vector<std::string>& routes) {
+    std::vector<ActuatorOutput> outputs(routes.size());
+    for (size_t k = 0; k < routes.size(); ++k) outputs[k].route = Route::parse(routes[k]);
+    engine_block_of(state, outputs);
+}
+
+// A bundled layout's outputs (layouts/NAME.toml): routes, overlays, profiles, trims, delays.
+void engine_block_layout(benchmark::State& state, const std::string& name) {
+    engine_block_of(state, load_layout(resolve_layout(name)).actuator_outputs([](const auto& a) {
+        return load_actuator(resolve_actuator(a));
+    }));
+}
+
 void EngineBlock(benchmark::State& state) {
     engine_block(state, {});
 }
@@ -94,6 +108,8 @@ BENCHMARK_CAPTURE(engine_block, routes
                   : all kick + snare band : 40 - 200 channel : 2,
                     {"all", "kick+snare", "band:40-200", "channel:2"})
     ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(engine_block_layout, controller, "controller")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(engine_block_layout, column - 4, "column-4")->Unit(benchmark::kMillisecond);
 
 // Turns `id` between two values, one turn per block; times set() alone.
 void live_change(benchmark::State& state, P id, double a, double b) {
