@@ -295,6 +295,9 @@ class TactusPlugin : public Plugin {
                 std::copy(outputs.begin(), outputs.end(), next.begin());
                 playing = static_cast<int>(outputs.size());
             }
+            for (int k = 0; k < playing; ++k)  // a channel the ports lack, a band over Nyquist
+                next[static_cast<size_t>(k)].check_input(
+                    k, {.sample_rate_hz = getSampleRate(), .max_block = 1, .channels = kInputs});
             const std::lock_guard lock(engine_mutex_);
             if (prepared_)
                 set_outputs_live(next);

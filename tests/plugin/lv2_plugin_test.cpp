@@ -174,8 +174,11 @@ TEST_F(Lv2Plugin, ALayoutTheHostSetsPlaysAsRenderWithItLive) {
         instance.activate();
         return play(instance, drums_);
     };
-    // A layout of more outputs than the plugin's ports is refused: the last one plays on.
+    // A layout of more outputs than the plugin's ports, or of a channel its input lacks, is
+    // refused: the last one plays on.
     instance.set_path(kLayout, (std::filesystem::path(TACTUS_LAYOUTS) / "column-4.toml").string());
+    std::ofstream(dir_ / "third.toml") << "[[output]]\nroute = \"channel:3\"\n";
+    instance.set_path(kLayout, (dir_ / "third.toml").string());
     const Outputs kept = again();
     for (size_t k = 0; k < 2; ++k) EXPECT_LE(max_difference(kept[k], cli.channels[k]), 1e-5);
     // One output: the second port is silent.

@@ -76,7 +76,7 @@ Settings Engine::fitted(const Settings& settings) const {
 // The outputs as the pipeline plays them: each one's overlay becomes what its own settings (the
 // settings with its overlay, fitted to its own profile) differ in from the pipeline's (fitted to
 // the first output's profile), so each actuator plays its own fit, and an overlay is fitted too
-// (an LRA's output asking for 400 Hz gets the top of its band). Empty for an output playing the
+// (an LRA's output asking for 500-1000 Hz plays inside its band). Empty for an output playing the
 // pipeline's settings, as the first one does without an overlay.
 std::vector<ActuatorOutput> Engine::as_played(const Settings& settings) const {
     const Settings base = fitted(settings);
