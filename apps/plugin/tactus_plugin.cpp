@@ -16,11 +16,12 @@
 // Layout. A second state, a file path the host may set (LV2: patch:writable, set through the
 // worker; every format: saved and restored with the session), names a layout (io/layout_file.hpp):
 // Vibration 1, 2 play its outputs in order, each its route, overlay, profile, trim and delay;
-// ports past its outputs are silent. Routes, overlays, profiles and trims change live
+// ports past its outputs fade to silence. Routes, overlays, profiles and trims change live
 // (Engine::set_outputs, no gap); a changed delay waits for the next activation.
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <memory>
 #include <mutex>
@@ -223,6 +224,10 @@ class TactusPlugin : public Plugin {
         delay_.prepare(kInputs, tactus::max_latency_samples(getSampleRate()), engine_.latency());
         ramp_.prepare(getSampleRate());
         ramp_.reset(bypassed_.load());
+        for (size_t k = 0; k < unused_.size(); ++k) {
+            unused_[k].prepare(getSampleRate());
+            unused_[k].reset(static_cast<int>(k) >= playing_.load());
+        }
         latency_samples_ = engine_.latency();
         setLatency(static_cast<uint32_t>(latency_samples_));
         prepared_ = true;
@@ -251,8 +256,9 @@ class TactusPlugin : public Plugin {
             float* music[kInputs];
             for (int c = 0; c < kInputs; ++c) music[c] = outputs[kActuators + c] + done;
             engine_.process(in, vibration, count);
-            for (int k = playing_.load(std::memory_order_relaxed); k < kActuators; ++k)
-                std::fill_n(vibration[k], count, 0.0f);  // past the layout's outputs
+            const int playing = playing_.load(std::memory_order_relaxed);
+            for (int k = 0; k < kActuators; ++k)  // past the layout's outputs: faded to silence
+                unused_[static_cast<size_t>(k)].process(&vibration[k], 1, count, k >= playing);
             ramp_.process(vibration, kActuators, count, bypassed);
             delay_.set_delay_samples(engine_.latency());
             delay_.process(in, music, count);
@@ -371,6 +377,7 @@ class TactusPlugin : public Plugin {
     std::vector<std::vector<float>> input_;
     tactus::DelayLine delay_;  // the music, by the engine's latency
     tp::BypassRamp ramp_;
+    std::array<tp::BypassRamp, kActuators> unused_;  // each port's fade when a layout leaves it
     std::unique_ptr<tp::ControlThread> control_;
 
     DISTRHO_DECLARE_NON_COPYABLE_WITH_LEAK_DETECTOR(TactusPlugin)
