@@ -26,7 +26,7 @@ music.truth's: its distinct hit times, each time's part the first of kick, snare
   song's snares all fall on its kicks, so are kicks) or without such other-part hits gives none;
   one where fewer than half its own-part hits give a pulse on their output is left out, its count
   given: its median own-part peak is then no pulse's but that decay's, and the others' dB below
-  it mean nothing.
+  it mean nothing. Then the same at each parts.route_min of ROUTE_MINS (--set): its trade.
 - A low band under a voice: every bed has a voice (espeak-ng phrases on bar starts), but the bed
   stem (NAME-bed+0dB.bed.wav) holds it with the bass, chords and melody. One output, route
   `band:20-120` (layouts/seat.toml's band), rendered on the mix, on the bed stem alone and on the
@@ -87,6 +87,9 @@ VOICE_FIT_DB = -90.0  # the rebuilt bed, fitted to the bed stem, differs from it
 LAYOUTS = {"parts": ("kick", "snare"), "band": ("band:20-120",), "all": ("all",),
            "stereo": ("channel:1", "channel:2")}
 OTHER = {"kick": "snare", "snare": "kick"}
+# parts.route_min swept for its trade (1: only the hits named the route's part; the default 0.35
+# is the least of these keeping the tuning parts' share of other-part hits 10 dB under at 0.85).
+ROUTE_MINS = (1.0, 0.5, 0.4, 0.35, 0.3, 0.25, 0.2)
 
 
 def write_layouts(directory):
@@ -100,10 +103,13 @@ def write_layouts(directory):
     return paths
 
 
-def felt_outputs(tactus, wav, layout, renders, preset):
-    """The felt signal of each output of `wav` rendered with `layout`, and the rate."""
-    out = renders / f"{wav.stem}.{layout.stem}.vibration.wav"
-    run([tactus, "render", wav, "-o", out, "--force", "--preset", preset, "--layout", layout])
+def felt_outputs(tactus, wav, layout, renders, preset, route_min=None):
+    """The felt signal of each output of `wav` rendered with `layout` (and parts.route_min), and
+    the rate."""
+    tail = "" if route_min is None else f".route-min-{route_min}"
+    out = renders / f"{wav.stem}.{layout.stem}{tail}.vibration.wav"
+    run([tactus, "render", wav, "-o", out, "--force", "--preset", preset, "--layout", layout]
+        + ([] if route_min is None else ["--set", f"parts.route_min={route_min}"]))
     y, rate = soundfile.read(out, dtype="float64", always_2d=True)
     return [felt.weighted(y[:, k], rate) for k in range(y.shape[1])], rate
 
@@ -123,14 +129,14 @@ def felt_peak(signal, rate, t):
     return felt.peak(felt.pulse(signal, rate, t, PART_PULSE_S))
 
 
-def part_outputs(tactus, directory, name, layouts, renders, preset):
+def part_outputs(tactus, directory, name, layouts, renders, preset, route_min=None):
     """{part: (pulses on its output per own hit, dB below its own median peak per other hit, or
     None when fewer than half its own hits give a pulse)}."""
     hits = read_hits(directory / f"{name}.hits.csv")
     times, parts = music.truth(hits)
     parts = np.array(parts)
     signals, rate = felt_outputs(tactus, directory / f"{name}.wav", layouts["parts"], renders,
-                                 preset)
+                                 preset, route_min)
     out = {}
     for part, signal in zip(LAYOUTS["parts"], signals):
         envelope = np.abs(scipy.signal.hilbert(signal))
@@ -260,12 +266,18 @@ def measure(build_dir, work, preset, jobs):
                     rebuilt = voices[part].result()
                 except (OSError, KeyError, subprocess.CalledProcessError) as error:
                     rebuilt = f"not rebuilt ({type(error).__name__})"
+                songs = [e for e in manifest["mixes"] if e["bed_db"] == BED_DB]
                 futures[part] = [pool.submit(
                     analyse_song, tactus, directory, e,
                     rebuilt if isinstance(rebuilt, str) else rebuilt[e["song"]],
-                    layouts, renders, preset)
-                    for e in manifest["mixes"] if e["bed_db"] == BED_DB]
-            return {part: [f.result() for f in songs] for part, songs in futures.items()}
+                    layouts, renders, preset) for e in songs]
+                for value in ROUTE_MINS:
+                    futures[part, value] = [pool.submit(
+                        part_outputs, tactus, directory, e["name"], layouts, renders, preset,
+                        value) for e in songs]
+            songs = {key: [f.result() for f in fs] for key, fs in futures.items()}
+            return {part: [dict(song, trade={v: songs[part, v][k] for v in ROUTE_MINS})
+                           for k, song in enumerate(songs[part])] for part in music.PARTS}
 
 
 # Cells of one part's songs.
@@ -285,6 +297,17 @@ def below_cells(songs, part):
     return (f"{np.median(below):.1f} ({len(below)} hits; songs with none "
             f"{sum(ds == [] for ds, _ in lists)}, left out {sum(ds is None for ds, _ in lists)})",
             f"{share(below):.3f}, worst {worst[0]:.2f} ({where})")
+
+
+def trade_cell(songs, route_min):
+    """Kick / snare hits with a pulse on their output; the share of the other part's hits 10 dB
+    or more below on the kick / snare output; at parts.route_min = route_min."""
+    def pooled(part):
+        pulses = [p for s in songs for p in s["trade"][route_min][part][0]]
+        below = [d for s in songs for d in (s["trade"][route_min][part][1] or [])]
+        return np.mean(pulses), np.mean(np.array(below) >= BELOW_DB)
+    (kick, kick_under), (snare, snare_under) = pooled("kick"), pooled("snare")
+    return f"{kick:.3f} / {snare:.3f}; {kick_under:.3f} / {snare_under:.3f}"
 
 
 def spread_cell(songs, value, highest_worst=False, digits=1):
@@ -341,6 +364,15 @@ def report(result):
           "felt peak, median dB", lambda p: below_cells(p, "snare")[0]),
          (f"snare output: share of those kick hits {BELOW_DB:.0f} dB or more below",
           lambda p: below_cells(p, "snare")[1])])
+    lines += ["### The trade of `parts.route_min`", "",
+              "A part route also plays a hit the part model finds at least `parts.route_min` "
+              "likely to be one of its parts (1: only the hits named its part). Each cell: kick / "
+              "snare hits with a pulse on their own output; then the share of the other part's "
+              f"hits {BELOW_DB:.0f} dB or more below on the kick / snare output, as above. The "
+              "default, 0.35, is the least value here keeping both shares at 0.85 or more on the "
+              "two tuning parts.", ""]
+    lines += table([(f"`parts.route_min` {value:g}", lambda p, value=value: trade_cell(p, value))
+                    for value in ROUTE_MINS])
     lines += ["## A low band route under a voice", "",
               "One output, route `band:20-120`. The bed stem holds the voice with bass, chords "
               "and melody. The corpus keeps no voice stem: each song's voice is rebuilt from its "

@@ -210,6 +210,7 @@ const Features& Analyzer::analyse() noexcept {
         f.hit_brightness_hz = hits_.brightness_hz();
         f.part = hits_.part();
         f.part_decided = hits_.part_decided();
+        f.part_probability = hits_.part_probability();
         f.hit_strength_db = hits_.peak_db();
     }
     if (onset.onset) {  // analysis sample -> input sample, less the resampler's delay

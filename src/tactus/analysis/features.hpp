@@ -1,6 +1,7 @@
 // What the analysis stage reports once per analysis frame (paper Figure 4, left column).
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include "tactus/analysis/drum_part.hpp"
@@ -23,7 +24,8 @@ struct Features {
     double hit_brightness_hz = 0;     // its brightness
     DrumPart part = DrumPart::other;  // the latest hit's part (decided settle_ms after its onset)
     bool part_decided = false;        // ... on this frame
-    double hit_strength_db = -120;    // the latest hit's strongest level so far
+    std::array<float, 3> part_probability{};  // ... and how likely kick, snare, hat each were
+    double hit_strength_db = -120;            // the latest hit's strongest level so far
 
     bool operator==(const Features&) const = default;  // every field (a replayed frame's)
 };

@@ -31,8 +31,9 @@ constexpr double kKickLowPerMid = 1.0, kKickLowShare = 0.2;
 
 // The part model (analysis/part_model.hpp): the hit's own numbers and their pairwise products,
 // then its numbers relative to the recent hits, standardised; the class of the largest linear
-// score.
-TACTUS_VECTOR_CLONES DrumPart modelled_part(std::span<const float> x) noexcept {
+// score, and each class's probability (the scores' softmax: a multinomial logistic regression).
+TACTUS_VECTOR_CLONES DrumPart modelled_part(std::span<const float> x,
+                                            std::array<float, 3>& probability) noexcept {
     using namespace part_model;
     constexpr size_t kOwn = PartFeatures::kOwn;
     std::array<float, kTerms> z{};
@@ -40,11 +41,16 @@ TACTUS_VECTOR_CLONES DrumPart modelled_part(std::span<const float> x) noexcept {
     standardise(z, kMean.data(), kScale.data());
     int best = 0;
     double best_score = 0;
+    std::array<double, kClasses> scores{};
     for (int c = 0; c < kClasses; ++c) {
         const auto k = static_cast<size_t>(c);
         const double score = linear_score(z, kWeights[k].data(), kBias[k]);
+        scores[k] = score;
         if (c == 0 || score > best_score) best = c, best_score = score;
     }
+    double sum = 0;
+    for (double& score : scores) sum += (score = std::exp(score - best_score));
+    for (size_t k = 0; k < scores.size(); ++k) probability[k] = static_cast<float>(scores[k] / sum);
     return static_cast<DrumPart>(best);
 }
 
@@ -151,8 +157,12 @@ void HitAnalysis::analyse(const Frame& frame, int64_t now, int64_t onset_start) 
                                               .decay_db = peak_db_ - level_db_});
         features_read_ = added;
         part_ = !added           ? DrumPart::other
-                : has_high_band_ ? modelled_part(features_.values())
+                : has_high_band_ ? modelled_part(features_.values(), probability_)
                                  : rule_part();
+        if (!added || !has_high_band_) {
+            probability_ = {};
+            if (part_ != DrumPart::other) probability_[static_cast<size_t>(part_)] = 1;
+        }
         part_decided_ = true;
         deciding_ = false;
     }

@@ -19,6 +19,7 @@
 // Audio thread: analyse(); prepare() allocates.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 
@@ -64,6 +65,9 @@ class HitAnalysis {
     // The latest hit's strongest level so far (its strength), and its part.
     double peak_db() const { return peak_db_; }
     DrumPart part() const { return part_; }
+    // Each of kick, snare and hat's probability by the part model when it decided part() (one
+    // for the part a rule decided; none for `other`).
+    const std::array<float, 3>& part_probability() const { return probability_; }
     // The latest hit's part was decided this frame.
     bool part_decided() const { return part_decided_; }
     // What the latest hit's part was read from (analysis/part_features.hpp), when the part model
@@ -93,6 +97,7 @@ class HitAnalysis {
     int64_t settle_samples_ = 0, hit_start_ = -1;
     double level_db_ = -120, brightness_hz_ = 0, peak_db_ = -120;
     DrumPart part_ = DrumPart::other;
+    std::array<float, 3> probability_{};
     bool part_decided_ = false, deciding_ = false, features_read_ = false;
 };
 

@@ -249,15 +249,19 @@ void Pipeline::apply_live() noexcept {
 
 // A lane plays a frame of its listening: the observer's program as it is, or its own mapping.
 // A part route plays only its parts' pulses: one starts on the frame that decides its hit is one
-// of them (parts.settle_ms after the onset; at once for a hit that is no drum's) and follows the
-// frames until the next onset; other hits leave the pulse sounding as it was.
+// of them, or at least parts.route_min likely to be (parts.settle_ms after the onset; at once for
+// a hit that is no drum's), and follows the frames until the next onset; other hits leave the
+// pulse sounding as it was.
 void Pipeline::play(int index, const Features& features, const ControlFrame& program,
                     FrameObserver* observer) noexcept {
     Lane& lane = lanes_[static_cast<size_t>(index)];
     ControlFrame control = lane.program ? program : lane.mapper.map(features);
     if (lane.route.kind == Route::Kind::parts) {
         if (features.onset) lane.own_pulse = false;
-        control.trigger = features.part_decided && lane.route.plays(features.part);
+        control.trigger =
+            features.part_decided &&
+            (lane.route.plays(features.part) ||
+             lane.route.share_of(features.part_probability) >= live_.now()[P::parts_route_min]);
         if (control.trigger) lane.own_pulse = true;
         if (!lane.own_pulse) return;
     }

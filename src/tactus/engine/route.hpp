@@ -1,16 +1,19 @@
 // What one actuator output plays. The paper drives every tonehole with one signal (§6); a device
 // with several actuators says more when each says something of its own: the whole input (`all`,
 // the paper's), only some drum parts' pulses (`kick`, `snare+hat`: the parts of
-// analysis/drum_part.hpp), a band of the input analysed on its own, so its loudness, onsets and
+// analysis/drum_part.hpp; with a hit named another part, when its parts are at least
+// parts.route_min likely), a band of the input analysed on its own, so its loudness, onsets and
 // brightness are the band's (`band:LOW-HIGH`, Hz), or one input channel, so stereo or surround
 // direction reaches left and right actuators (`channel:N`, counted from 1; a mono input is every
 // channel, as a mono sound plays on both sides). On top of the running settings an output may
 // also take its own values of the mapping's parameters (its overlay: a pitch range, an
-// envelope, a part's gain), as a preset would set them; over an actuator's fit too.
+// envelope, a part's gain), as a preset would set them, fitted to its actuator as the settings
+// are (Engine::as_played).
 // Any thread: parse(), text(), check_overlay(); the engine turns routes into its pipeline's
 // lanes (engine/pipeline.hpp).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -41,6 +44,13 @@ struct Route {
     bool own_analysis() const { return kind == Kind::band || kind == Kind::channel; }
     bool plays(DrumPart part) const {
         return kind != Kind::parts || (parts >> static_cast<int>(part) & 1) != 0;
+    }
+    // How likely a hit is one of the parts it plays, given each drum part's probability.
+    double share_of(const std::array<float, 3>& part_probability) const {
+        double share = 0;
+        for (size_t p = 0; p < part_probability.size(); ++p)
+            if (plays(static_cast<DrumPart>(p))) share += part_probability[p];
+        return share;
     }
     // The same input heard the same way (one analysis serves both).
     bool hears_as(const Route& other) const;

@@ -190,6 +190,12 @@ constexpr auto kTable = joined_rows(
      "least probability, by how its bands rose, that an onset is a drum's for it to wait for "
      "its drum part; below it the onset is `other` at once, before its pulse starts (0 = off; "
      "with parts.other.gain_db = -60: drums only)"},
+    // Routing by drum part (engine/route.hpp): the hits a part route plays. Tuned on the music
+    // corpus's tuning parts, the least value keeping 85 % of the other part's hits 10 dB under
+    // each output (eval/routes.py); the held-out parts' trade is in eval/routes.md.
+    {P::parts_route_min, 95, "parts.route_min", "", real, 0, 1, 0.35, lin, live, 0,
+     "least probability, by the part model, that a hit is one of a part route's parts for the "
+     "route to play it too when it is named another part (1 = only the hits named its parts)"},
     }));
 // clang-format on
 

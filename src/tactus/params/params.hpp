@@ -123,6 +123,7 @@ enum class P : int {
     TACTUS_PART_IDS(other),
 #undef TACTUS_PART_IDS
     parts_drum_min,
+    parts_route_min,
     count
 };
 
