@@ -9,7 +9,9 @@
 #include <sndfile.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <utility>
 #include <vector>
@@ -253,6 +255,48 @@ TEST(HitAnalysis, DrumMinTellsNotesFromDrumsBeforeTheirPulse) {
     EXPECT_LE(on.drums_other, 2);
     EXPECT_GE(on.notes_other, 4);
     EXPECT_TRUE(on.every_other_at_once);
+}
+
+// The part model's probabilities come with each decided part: they sum to 1 and the named part
+// is the likeliest; an onset named `other` (drum_min, at once) has none, not the last hit's.
+TEST(HitAnalysis, EachDecidedPartComesWithTheModelsProbabilities) {
+    constexpr double kRate = 44100;
+    std::vector<float> x(static_cast<size_t>(4.0 * kRate), 0.0f);
+    const char* sounds[] = {"drum_heavy_kick", "bass_hit_c",         "drum_snare_hard",
+                            "ambi_piano",      "drum_cymbal_closed", "guit_em9"};
+    for (size_t k = 0; k < std::size(sounds); ++k) {
+        std::vector<float> sound = sample(sounds[k]);
+        sound.resize(std::min(sound.size(), static_cast<size_t>(0.5 * kRate)));
+        const auto start = static_cast<size_t>((0.3 + 0.6 * static_cast<double>(k)) * kRate);
+        for (size_t i = 0; i < sound.size(); ++i) x[start + i] += 0.5f * sound[i];
+    }
+    Settings settings;
+    settings.set(P::parts_drum_min, 0.8);
+    Analyzer analyzer;
+    analyzer.prepare({.sample_rate_hz = kRate, .max_block = 256}, settings);
+    int modelled = 0, other = 0;
+    for (size_t done = 0; done < x.size();) {
+        const int chunk =
+            std::min(static_cast<int>(x.size() - done), analyzer.samples_to_next_frame());
+        if (analyzer.process(x.data() + done, chunk)) {
+            const Features& f = analyzer.analyse();
+            if (f.part_decided && f.part == DrumPart::other) {
+                ++other;
+                EXPECT_EQ(f.part_probability, (std::array<float, 3>{})) << f.frame_end_sample;
+            } else if (f.part_decided) {
+                ++modelled;
+                const auto& p = f.part_probability;
+                EXPECT_NEAR(p[0] + p[1] + p[2], 1.0, 1e-5) << f.frame_end_sample;
+                EXPECT_EQ(std::max_element(p.begin(), p.end()) - p.begin(),
+                          static_cast<int>(f.part))
+                    << f.frame_end_sample;
+            }
+        }
+        done += static_cast<size_t>(chunk);
+    }
+    std::printf("%d parts modelled, %d named other at once\n", modelled, other);
+    EXPECT_GE(modelled, 3);
+    EXPECT_GE(other, 1);
 }
 
 double band_power_of(BandPower::Band band, double hz, double rate_hz) {

@@ -2,10 +2,11 @@
 // form reads back; with every output on `all` the engine is today's, bit for bit; a channel
 // route carries a hard-left pan to the left actuator only; a low band route stays quiet while a
 // voice above it plays alone; kick and snare routes each play their own part's hits and hardly
-// the other's; an overlay shapes only its output; every kind is block-size invariant; routes
-// changed while audio runs play as routes set from the start once the crossfade is over, and
-// so do whole outputs (profiles, trims) changed at once; a channel the input lacks is refused at
-// prepare, naming the actuator (a mono input is every channel).
+// the other's (at parts.route_min 0, every drum hit); an overlay shapes only its output; every
+// kind is block-size invariant; routes changed while audio runs play as routes set from the
+// start once the crossfade is over, and so do whole outputs (profiles, trims) changed at once;
+// a channel the input lacks is refused at prepare, naming the actuator (a mono input is every
+// channel).
 #include "tactus/engine/route.hpp"
 
 #include <gmock/gmock.h>
@@ -186,6 +187,17 @@ TEST(Routes, KickAndSnareRoutesEachPlayTheirOwnPartsHits) {
             test::peak(h % 2 == 0 ? std::span(out[1]).subspan((h + 1) * spacing, spacing) : window);
         EXPECT_GT(own, 0.1) << "hit " << h;
         EXPECT_LT(other, own * std::pow(10.0, -10.0 / 20)) << "hit " << h;
+    }
+    // parts.route_min: at 1 only the hits named a route's part; at 0 a part route plays every
+    // drum hit, whatever it is named, and the kick output plays the snares too.
+    for (const double route_min : {1.0, 0.0}) {
+        Settings settings;
+        settings.set(P::parts_route_min, route_min);
+        const auto y = render_routes({x}, fs, {"kick", "snare"}, {480}, settings);
+        int snares_on_kick = 0;
+        for (size_t h = 1; h < 16; h += 2)
+            snares_on_kick += test::peak(std::span(y[0]).subspan((h + 1) * spacing, spacing)) > 0.1;
+        EXPECT_EQ(snares_on_kick, route_min == 1 ? 0 : 8) << "parts.route_min " << route_min;
     }
 }
 

@@ -94,6 +94,7 @@ void HitAnalysis::reset() noexcept {
     level_db_ = peak_db_ = kSilentDb;
     brightness_hz_ = 0;
     part_ = DrumPart::other;
+    probability_ = {};
     part_decided_ = deciding_ = features_read_ = rises_read_ = false;
 }
 
@@ -144,6 +145,7 @@ void HitAnalysis::analyse(const Frame& frame, int64_t now, int64_t onset_start) 
                         .high_over_recent = high_recent_.rise(now, onset_start)});
         if (drum_min_ > 0 && rises_.drum_probability() < drum_min_) {
             part_ = DrumPart::other;
+            probability_ = {};
             part_decided_ = true;
             deciding_ = false;
         }
