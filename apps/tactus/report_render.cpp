@@ -88,7 +88,7 @@ ReportRender render_once(const std::string& input, const Settings& settings,
     std::vector<perception::MeterSummariser> summarisers(n);
     std::vector<std::vector<std::vector<double>>> levels(n);
     std::vector<std::vector<double>> features, program;
-    std::vector<std::vector<float>> drives(n - 1);  // the outputs after the first
+    std::vector<std::vector<float>> drives(n);  // each output's; the first becomes `vibration`
     // From the first block, when the rate is known; gone before what their readings go to.
     std::deque<MeterWorker> meters;  // each holds a thread: never moved
     const AlignedSink sink = [&](const float* const* audio, int audio_channels,
@@ -104,10 +104,10 @@ ReportRender render_once(const std::string& input, const Settings& settings,
         const size_t at = out.sound.size();
         out.sound.resize(at + static_cast<size_t>(frames));
         downmix_mean(audio, audio_channels, 0, out.sound.data() + at, frames);  // as heard
-        out.vibration.insert(out.vibration.end(), vib[0], vib[0] + frames);
-        for (size_t k = 1; k < n; ++k)
-            drives[k - 1].insert(drives[k - 1].end(), vib[k], vib[k] + frames);
-        for (size_t k = 0; k < n; ++k) meters[k].write(vib[k], frames);
+        for (size_t k = 0; k < n; ++k) {
+            drives[k].insert(drives[k].end(), vib[k], vib[k] + frames);
+            meters[k].write(vib[k], frames);
+        }
     };
     UnfeltSound unfelt(settings);
     int channels = 0;
@@ -221,8 +221,7 @@ ReportRender render_once(const std::string& input, const Settings& settings,
             plot("vibration" + suffix(k),
                  layout ? "Vibration of " + out.metered[k].name + " (its actuator's drive)"
                         : "Vibration (the actuator's drive)",
-                 "full scale", {"vibration"},
-                 waveform_rows(k == 0 ? out.vibration : drives[k - 1], rate));
+                 "full scale", {"vibration"}, waveform_rows(drives[k], rate));
         drive.onsets = drive.band = true;
         out.plots.push_back(std::move(drive));
     }
@@ -234,6 +233,7 @@ ReportRender render_once(const std::string& input, const Settings& settings,
                                      " (through " + out.metered[k].metered_name + ")",
                                  "dB SL", {"P", "NPI", "NPII", "NPIII", "combined"},
                                  thinned(levels[k])));
+    out.vibration = std::move(drives.front());
     return out;
 }
 

@@ -283,10 +283,8 @@ TEST(Routes, ChangedWhileAudioRunsTheyPlayAsIfSetFromTheStart) {
     Channels first{std::vector<float>(x[0].begin(), x[0].begin() + static_cast<long>(change_at)),
                    std::vector<float>(x[1].begin(), x[1].begin() + static_cast<long>(change_at))};
     const auto before = run_routes(engine, first, {kBlock});
-    std::vector<Engine::Routing> routes;
-    for (const auto& r : after) routes.push_back({Route::parse(r), {}});
-    engine.set_routes(routes);
-    EXPECT_EQ(engine.routes()[1].route.text(), "channel:2");
+    engine.set_outputs(outputs_for(after));
+    EXPECT_EQ(engine.outputs()[1].route.text(), "channel:2");
     Channels rest{std::vector<float>(x[0].begin() + static_cast<long>(change_at), x[0].end()),
                   std::vector<float>(x[1].begin() + static_cast<long>(change_at), x[1].end())};
     const auto y = run_routes(engine, rest, {kBlock});
@@ -367,9 +365,9 @@ TEST(Routes, AChannelTheInputLacksIsRefusedNamingTheActuator) {
     Engine prepared;
     prepared.set_actuators(outputs_for({"all"}));
     prepared.prepare({.sample_rate_hz = 48000, .max_block = 64, .channels = 2});
-    EXPECT_THROW(prepared.set_routes({{Route::parse("channel:4"), {}}}), std::invalid_argument);
-    EXPECT_THROW(prepared.set_routes({}), std::invalid_argument) << "one per actuator";
-    EXPECT_EQ(prepared.routes()[0].route.text(), "all") << "nothing changed";
+    EXPECT_THROW(prepared.set_outputs(outputs_for({"channel:4"})), std::invalid_argument);
+    EXPECT_THROW(prepared.set_outputs({}), std::invalid_argument) << "one per actuator";
+    EXPECT_EQ(prepared.outputs()[0].route.text(), "all") << "nothing changed";
 }
 
 }  // namespace

@@ -132,7 +132,7 @@ TEST_F(LiveCallbackRealTime, PlayerWithOscTrafficAndPresetReloads) {
     EXPECT_GT(monitor.onsets(), 10);
     EXPECT_GT(control.settings()[P::pitch_min_hz], 50.0) << "a reloaded preset applied";
     EXPECT_EQ(callback.sync_delay_samples(), 90) << "the sound's delay moved, back and forth";
-    EXPECT_EQ(engine.routes()[1].route.text(), "channel:2") << "the layout's right output";
+    EXPECT_EQ(engine.outputs()[1].route.text(), "channel:2") << "the layout's right output";
     lo_address_free(to);
     lo_server_free(listener);
 }

@@ -213,11 +213,22 @@ void expect_live_changes_are_real_time_safe(const Settings& start, double fs, in
         ActuatorOutput{.profile = own_profiles ? std::nullopt : actuator, .gain_db = -3}};
     std::vector<ActuatorOutput> swapped = outputs;
     std::swap(swapped[0].profile, swapped[1].profile);
-    engine.set_actuators(outputs);
-    const std::vector<Engine::Routing> each_kind[] = {
-        {{Route::parse("kick+snare"), {}}, {Route::parse("channel:2"), {}}},
-        {{Route::parse("band:40-200"), {{P::frequency_out_max, 90}}}, {Route::parse("all"), {}}}};
-    if (routes) engine.set_routes(each_kind[0]);
+    // With routes, every 140 blocks they swap between two sets of every kind (and an overlay).
+    const auto routed = [&](const std::vector<std::pair<const char*, Overlay>>& each) {
+        std::vector<ActuatorOutput> next = outputs;
+        for (size_t k = 0; k < next.size(); ++k)
+            next[k].route = Route::parse(each[k].first), next[k].overlay = each[k].second;
+        return next;
+    };
+    const std::vector<ActuatorOutput> each_kind[] = {
+        routed({{"kick+snare", {}}, {"channel:2", {}}}),
+        routed({{"band:40-200", {{P::frequency_out_max, 90}}}, {"all", {}}})};
+    engine.set_actuators(routes ? each_kind[0] : outputs);
+    // A control thread's change of the outputs, their trims as set_actuator_gain_db left them.
+    const auto set_outputs = [&](std::vector<ActuatorOutput> next) {
+        for (size_t k = 0; k < next.size(); ++k) next[k].gain_db = engine.outputs()[k].gain_db;
+        engine.set_outputs(next);
+    };
     engine.enable_frame_queue();
     engine.prepare({.sample_rate_hz = fs, .max_block = 256, .channels = channels});
     std::vector<float> second(x.size());
@@ -236,13 +247,8 @@ void expect_live_changes_are_real_time_safe(const Settings& start, double fs, in
                 if (b % 35 == 0) engine.trigger(120, 0.5);
                 if (b % 140 == 0)  // structural: a pipeline primed here, crossfaded in there
                     engine.set(P::analysis_hop_ms, b % 280 == 0 ? 2.0 : start[P::analysis_hop_ms]);
-                if (routes && b % 140 == 70) engine.set_routes(each_kind[b % 280 == 70 ? 1 : 0]);
-                if (own_profiles && b % 140 == 105) {
-                    std::vector<ActuatorOutput> next = b % 280 == 105 ? swapped : outputs;
-                    for (size_t k = 0; k < next.size(); ++k)
-                        next[k].gain_db = engine.outputs()[k].gain_db;
-                    engine.set_outputs(next);
-                }
+                if (routes && b % 140 == 70) set_outputs(each_kind[b % 280 == 70 ? 1 : 0]);
+                if (own_profiles && b % 140 == 105) set_outputs(b % 280 == 105 ? swapped : outputs);
             });
             control.join();
         }

@@ -239,9 +239,7 @@ void Engine::apply(const Settings& next) {
     free_retired();
     const Settings was = fitted(settings_), now = fitted(next);
     // -1: a new pipeline, one change (also when an output's own values change with it)
-    const int needed = routes_of(as_played(settings_)) == routes_of(as_played(next))
-                           ? changes_needed(was, now)
-                           : -1;
+    const int needed = as_played(settings_) == as_played(next) ? changes_needed(was, now) : -1;
     if (static_cast<int>(changes_.size_approx()) + std::max(needed, 1) > kChangeCapacity)
         throw std::runtime_error("engine: too many changes waiting for the audio thread");
     if (needed < 0) {
@@ -358,27 +356,11 @@ void Engine::set_actuator_gain_db(int actuator, double gain_db) {
     outputs_[static_cast<size_t>(actuator)] = output;
 }
 
-void Engine::set_routes(const std::vector<Routing>& routes) {
-    const std::lock_guard lock(control_);
-    apply_routes(routes);
-}
-
 void Engine::set_route(int actuator, const Route& route) {
     const std::lock_guard lock(control_);
     check_range("actuator", actuator, 0, actuators() - 1);
-    std::vector<Routing> routes = routes_of(outputs_);
-    routes[static_cast<size_t>(actuator)].route = route;
-    apply_routes(routes);
-}
-
-// control_ held.
-void Engine::apply_routes(const std::vector<Routing>& routes) {
-    check_range("route count", static_cast<int>(routes.size()), actuators(), actuators());
     std::vector<ActuatorOutput> next = outputs_;
-    for (size_t k = 0; k < routes.size(); ++k) {
-        next[k].route = routes[k].route;
-        next[k].overlay = routes[k].overlay;
-    }
+    next[static_cast<size_t>(actuator)].route = route;
     apply_outputs(std::move(next));
 }
 
@@ -429,17 +411,6 @@ void Engine::apply_outputs(std::vector<ActuatorOutput> next) {
     if (rebuild) swap_in(settings);
     if (settings != settings_) ++version_;
     settings_ = settings;
-}
-
-std::vector<Engine::Routing> Engine::routes_of(const std::vector<ActuatorOutput>& outputs) {
-    std::vector<Routing> routes(outputs.size());
-    for (size_t k = 0; k < outputs.size(); ++k) routes[k] = {outputs[k].route, outputs[k].overlay};
-    return routes;
-}
-
-std::vector<Engine::Routing> Engine::routes() const {
-    const std::lock_guard lock(control_);
-    return routes_of(outputs_);
 }
 
 void Engine::inject(const ControlFrame& frame) {

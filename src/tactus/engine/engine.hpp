@@ -22,7 +22,7 @@
 // way of playing it, one post chain per distinct profile among its outputs (Pipeline).
 //
 // Threads (docs/architecture.md, "Threads and queues"):
-//   control threads  set(), set_actuator_gain_db(), set_routes(), set_route(), inject(),
+//   control threads  set(), set_actuator_gain_db(), set_outputs(), set_route(), inject(),
 //                    trigger(), set_program_source(), settings_snapshot(), settings():
 //                    thread-safe among themselves (a mutex no audio thread takes); they validate,
 //                    then hand the change to the audio thread through a lock-free queue
@@ -165,22 +165,14 @@ class Engine {
     // build one new pipeline between them, not one each.
     void set(const Settings& settings);
     void set_actuator_gain_db(int actuator, double gain_db);
-    // What each actuator plays (its route and overlay, in actuator order: as many as there are
-    // actuators): structural, swapped in without a gap. Throws std::invalid_argument naming the
-    // actuator and the route (a channel the input lacks, a bad overlay) having changed nothing.
-    struct Routing {
-        Route route;
-        Overlay overlay;
-        bool operator==(const Routing&) const = default;
-    };
-    void set_routes(const std::vector<Routing>& routes);
-    // One actuator's route, its overlay and the other actuators' routes kept.
+    // One actuator's route (engine/route.hpp), the rest of its output and the others kept, as
+    // set_outputs() changes them.
     void set_route(int actuator, const Route& route);
-    std::vector<Routing> routes() const;
     // Every actuator output at once (a layout): routes, overlays and profiles swapped in without
     // a gap (one pipeline), trims gliding. As many as there are actuators; a delay is the
     // engine's setup, so after prepare a changed one throws std::invalid_argument, as does a bad
-    // output (naming the actuator), having changed nothing. Before prepare, set_actuators().
+    // output (a channel the input lacks, a bad overlay: naming the actuator), having changed
+    // nothing. Before prepare, set_actuators().
     void set_outputs(std::vector<ActuatorOutput> outputs);
     std::vector<ActuatorOutput> outputs() const;
     // The vibration program from outside: applied at the audio thread's next block.
@@ -268,11 +260,9 @@ class Engine {
     int first_channel_lane() const noexcept { return summed_loudness_ ? 2 : 1; }
     PipelineInput input_from(const float* const* lanes, int offset,
                              const float** channels) const noexcept;
-    static std::vector<Routing> routes_of(const std::vector<ActuatorOutput>& outputs);
     static Settings with_first_dc(Settings settings, const std::vector<ActuatorOutput>& outputs);
     std::vector<ActuatorOutput> as_played(const Settings& settings) const;
-    void apply_routes(const std::vector<Routing>& routes);  // control_ held
-    void apply_outputs(std::vector<ActuatorOutput> next);   // control_ held
+    void apply_outputs(std::vector<ActuatorOutput> next);  // control_ held
     void retire(Pipeline* pipeline) noexcept;
 
     Settings settings_;     // control side, control_ held

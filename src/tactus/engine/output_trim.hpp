@@ -21,6 +21,8 @@ struct ActuatorOutput {
     Route route{};                           // what it plays (structural)
     Overlay overlay{};                       // its own mapping values (structural)
 
+    bool operator==(const ActuatorOutput&) const = default;
+
     static constexpr double kMinGainDb = -60;
     static constexpr double kMaxDelayMs = 1000;
     // Throws std::invalid_argument naming the actuator index and the value.

@@ -87,25 +87,23 @@ void Pipeline::prepare(const ProcessSpec& spec, const Settings& settings,
     }
     lane_of_.assign(lane_of.begin(), lane_of.end());
     chains_ = std::vector<ActuatorChain>(first_of_chain_.size());
-    for (size_t j = 0; j < lanes_.size(); ++j) {
-        const Settings own = overlaid(settings, played[j]->overlay);
-        for (size_t c = lanes_[j].first_chain; c < lanes_[j].first_chain + lanes_[j].chains; ++c) {
-            const auto& profile = outputs[static_cast<size_t>(first_of_chain_[c])].profile;
-            chains_[c].prepare(spec, rate_divisor_, own, profile ? &*profile : nullptr);
-        }
-    }
 
+    // Each lane, and its chains, with the settings its overlay makes.
     const double frames_per_second = listenings_.front().analyzer.frame_rate_hz();
     for (size_t j = 0; j < lanes_.size(); ++j) {
         Lane& lane = lanes_[j];
         lane.route = played[j]->route;
         lane.overlay = played[j]->overlay;
+        const Settings own = overlaid(settings, lane.overlay);
+        for (size_t c = lane.first_chain; c < lane.first_chain + lane.chains; ++c) {
+            const auto& profile = outputs[static_cast<size_t>(first_of_chain_[c])].profile;
+            chains_[c].prepare(spec, rate_divisor_, own, profile ? &*profile : nullptr);
+        }
         lane.listening =
             static_cast<int>(std::find_if(heard.begin(), heard.end(),
                                           [&](const Route& r) { return r.hears_as(lane.route); }) -
                              heard.begin());
         lane.program = lane.route.kind == Route::Kind::all && lane.overlay.empty();
-        const Settings own = overlaid(settings, lane.overlay);
         lane.carrier.assign(internal, 0.0f);
         lane.flutter.assign(flutter_enabled(own) ? internal : 0, 0.0f);
         lane.pressure.assign(pressure_enabled(own) ? internal : 0, 0.0f);

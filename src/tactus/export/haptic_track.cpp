@@ -60,12 +60,12 @@ std::vector<HapticTrack> render_haptic_tracks(const std::filesystem::path& input
                                               const RunCallbacks& callbacks,
                                               const FrameSink& frames, RunAnalysis analysis) {
     engine.enable_frame_queue();
-    const std::vector<Engine::Routing> routes = engine.routes();
-    const size_t outputs = routes.size();
+    const std::vector<ActuatorOutput> routed = engine.outputs();
+    const size_t outputs = routed.size();
     // An output on `all` without an overlay plays the program as it is; the others their lane's.
     std::vector<bool> plays_program(outputs);
     for (size_t k = 0; k < outputs; ++k)
-        plays_program[k] = routes[k].route.kind == Route::Kind::all && routes[k].overlay.empty();
+        plays_program[k] = routed[k].route.kind == Route::Kind::all && routed[k].overlay.empty();
     std::vector<FeltEnvelope> envelopes;  // per output
     CarrierTrack carrier;                 // the program's
     std::vector<CarrierTrack> lane_carriers;
@@ -178,7 +178,7 @@ std::vector<HapticTrack> render_haptic_tracks(const std::filesystem::path& input
         }
         // Its onsets: the mix's that its route plays (each with the carrier of the pulse its lane
         // started for it, when there is one); a band's or a channel's own, its lane's pulses.
-        const Route& route = routes[k].route;
+        const Route& route = routed[k].route;
         const auto& pulses = lane_pulses[static_cast<size_t>(lane_of[k])];
         const auto add_onset = [&](int64_t sample, double frequency_hz, DrumPart part,
                                    double strength_db) {
